@@ -1,0 +1,45 @@
+"""The ``dggs`` command line: a thin click layer over the Python API.
+
+Every :class:`dggs.DggsError` becomes a clear message and exit code 1.
+"""
+
+from __future__ import annotations
+
+import click
+
+from dggs.errors import DggsError
+
+
+class _DggsGroup(click.Group):
+    """A click group that turns library errors into clean CLI errors."""
+
+    def invoke(self, ctx: click.Context):  # noqa: D102
+        try:
+            return super().invoke(ctx)
+        except DggsError as exc:
+            raise click.ClickException(str(exc)) from exc
+
+
+@click.group(cls=_DggsGroup)
+@click.version_option(package_name="dggs")
+def main() -> None:
+    """dggs: an equal-area triangular discrete global grid (Split 2:6 + Snyder ISEA)."""
+
+
+def _register() -> None:
+    from dggs.cell_cli import cell
+    from dggs.experiments.cli import experiments
+
+    main.add_command(cell)
+    main.add_command(experiments)
+    try:
+        from dggs.storage.cli import register as register_storage
+    except ImportError:  # storage commands arrive with the storage layer
+        return
+    register_storage(main)
+
+
+_register()
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

@@ -1,0 +1,55 @@
+"""Typed errors raised by dggs.
+
+Every error raised on bad input is a :class:`DggsValueError`, which is also a
+built-in :class:`ValueError`, so ``except ValueError`` keeps working.  Messages
+name the offending value and the allowed range.
+
+Examples
+--------
+>>> import dggs
+>>> try:
+...     dggs.latlng_to_cell(91.0, 0.0, 5)
+... except dggs.CoordinateError as exc:
+...     print(exc)
+latitude 91.0 at index 0 is out of range -90..90
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "DggsError",
+    "DggsValueError",
+    "CoordinateError",
+    "LevelError",
+    "LevelMismatchError",
+    "InvalidCellError",
+    "StorageError",
+]
+
+
+class DggsError(Exception):
+    """Base class of every error raised by dggs."""
+
+
+class DggsValueError(DggsError, ValueError):
+    """Bad input of any kind."""
+
+
+class CoordinateError(DggsValueError):
+    """A coordinate is NaN, infinite, out of range or off its face."""
+
+
+class LevelError(DggsValueError):
+    """A subdivision level is outside ``0..MAX_LEVEL``."""
+
+
+class LevelMismatchError(DggsValueError):
+    """Two levels do not fit together (e.g. a parent finer than its cell)."""
+
+
+class InvalidCellError(DggsValueError):
+    """A string is not a valid cell id."""
+
+
+class StorageError(DggsError):
+    """The SQLite store cannot do what was asked (broken file, bad schema, bad rows)."""

@@ -1,0 +1,1 @@
+"""Reproductions of the thesis's experiments (chapters 4-6)."""
