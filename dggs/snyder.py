@@ -1,0 +1,425 @@
+"""Snyder's equal-area projection of the icosahedron (ISEA), forward and inverse.
+
+Snyder, J. P. (1992), "An equal-area map projection for polyhedral globes",
+Cartographica 29(1): 10-21; thesis §3.1.3-3.1.4 and chapter 4.  Constants and
+conventions as in PROJ's ``+proj=isea`` (see ``shared/SNYDER.md``).
+
+Coordinates are on the unit sphere.  :func:`forward` maps a point to its face
+and to ``(x, y)`` in that face's frame: origin at the face centre, ``+y``
+towards the face's reference vertex, azimuths clockwise (``x = rho sin Az'``,
+``y = rho cos Az'``).  The face is a planar equilateral triangle with
+circumradius :data:`FACE_CIRCUMRADIUS` and area ``pi / 5``, exactly the area
+of its spherical face: the map is equal-area.
+
+For geodetic WGS84 coordinates use :class:`Projection`, which converts to
+authalic latitude and scales by the authalic radius.
+
+Examples
+--------
+>>> face, x, y = forward(0.0, 0.0)
+>>> int(face), round(float(x), 8), round(float(y), 8)
+(2, 0.0, -0.34773547)
+>>> lat, lng = inverse(face, x, y)
+>>> round(float(lat), 10) + 0.0, round(float(lng), 10) + 0.0
+(0.0, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import numpy as np
+
+from dggs._validate import as_latlng
+from dggs.authalic import WGS84, Ellipsoid
+from dggs.errors import CoordinateError, DggsValueError
+from dggs.icosahedron import ISEA, NUM_FACES, Orientation, face_of, latlng_to_xyz, xyz_to_latlng
+
+__all__ = [
+    "forward",
+    "inverse",
+    "forward_xyz",
+    "inverse_xyz",
+    "Projection",
+    "METHODS",
+    "TAN_G",
+    "G",
+    "THETA",
+    "R_PRIME",
+    "FACE_CIRCUMRADIUS",
+    "FACE_INRADIUS",
+    "FACE_EDGE",
+]
+
+# Snyder 1992, Table 1 (icosahedron); SNYDER.md §1.
+TAN_G = 3.0 - math.sqrt(5.0)  # g: arc from face centre to vertex, tan g = 3 - sqrt 5
+G_ARC = math.atan(TAN_G)  # g = 37.3773681406 degrees
+G = math.pi / 5  # G = 36 degrees (the thesis's "46" is a typo)
+THETA = math.pi / 6  # theta = 30 degrees
+COT_THETA = math.sqrt(3.0)
+#: Planar circumradius of a face: sqrt(4 pi / (15 sqrt 3)) so the face has area pi / 5.
+FACE_CIRCUMRADIUS = math.sqrt(4 * math.pi / (15 * math.sqrt(3.0)))
+#: R' / R = 0.9103832815 (Snyder 1992, eq. 3.1 = 3.2 solved for R').
+R_PRIME = FACE_CIRCUMRADIUS / TAN_G
+FACE_INRADIUS = FACE_CIRCUMRADIUS / 2
+FACE_EDGE = FACE_CIRCUMRADIUS * math.sqrt(3.0)
+
+_SECTOR = 2 * math.pi / 3  # Az runs over 120-degree sectors, vertex to vertex
+_SIN_G, _COS_G = math.sin(G), math.cos(G)
+_COS_SMALL_G = math.cos(G_ARC)
+_RT2 = (R_PRIME * TAN_G) ** 2  # R'^2 tan^2 g
+_ROT_COS = np.cos(_SECTOR * np.arange(3))
+_ROT_SIN = np.sin(_SECTOR * np.arange(3))
+
+#: Inverse methods: Snyder's Newton-Raphson, Newton from a polynomial start
+#: (thesis §4.1.2), the polynomial alone (thesis §4.1.3), and the exact closed form.
+METHODS = ("closed", "newton", "newton-poly", "poly")
+
+
+# ----------------------------------------------------------------------------
+# Forward
+# ----------------------------------------------------------------------------
+def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
+    """Project unit vectors ``xyz`` (N, 3) to ``(face, x, y)`` on the unit sphere.
+
+    The vector form of Snyder's forward (eqs. 6-12 and 14): azimuth and
+    distance from the face centre come from dot products with the face
+    frame's centre, north and east vectors.
+    """
+    geo = orientation.geometry
+    face = face_of(orientation, xyz)
+    c, n, e = geo.centres[face], geo.norths[face], geo.easts[face]
+    az = np.arctan2(np.einsum("ij,ij->i", xyz, e), np.einsum("ij,ij->i", xyz, n))  # eq. 14
+    az = np.where(az < 0, az + 2 * math.pi, az)
+    k = np.minimum((az // _SECTOR).astype(np.intp), 2)
+    az = az - k * _SECTOR
+    sin_az, cos_az = np.sin(az), np.cos(az)
+    # sin(z/2) is half the chord from the centre: stable near the centre.
+    sin_half_z = 0.5 * np.linalg.norm(xyz - c, axis=1)
+    # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
+    u = cos_az + sin_az * COT_THETA
+    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
+    h = np.arccos(np.clip(sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G, -1.0, 1.0))  # eq. 6
+    area = az + G + h - math.pi  # eq. 7, spherical excess of triangle ABD
+    # eq. 8: Az' = atan2(2 A_G, R'^2 tan^2 g - 2 A_G cot theta), kept as sin/cos.
+    big_x = _RT2 - 2.0 * area * COT_THETA
+    big_y = 2.0 * area
+    r = np.hypot(big_x, big_y)
+    d_prime = (R_PRIME * TAN_G) * r / (big_x + big_y * COT_THETA)  # eq. 10
+    rho = d_prime * sin_half_z / sin_half_q  # eqs. 11-12
+    sin_p, cos_p = big_y / r, big_x / r
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
+    x = rho * (sin_p * rc + cos_p * rs)
+    y = rho * (cos_p * rc - sin_p * rs)
+    return face, x, y
+
+
+def forward(lat, lng, orientation: Orientation = ISEA):
+    """Project spherical latitude/longitude (degrees) to a face and face-plane ``(x, y)``.
+
+    Parameters
+    ----------
+    lat, lng : float or array_like
+        Latitude and longitude on the sphere, degrees.  Longitudes wrap.
+    orientation : Orientation
+        Where the icosahedron sits (default: PROJ's ISEA orientation).
+
+    Returns
+    -------
+    face : int or ndarray of int
+        Face index 0..19 (PROJ's numbering).
+    x, y : float or ndarray
+        Planar coordinates in the face frame, unit sphere.
+
+    Raises
+    ------
+    CoordinateError
+        NaN, infinite or out-of-range latitude, or mismatched shapes.
+
+    Examples
+    --------
+    >>> face, x, y = forward([90.0, -90.0], [0.0, 0.0])
+    >>> face.tolist()
+    [0, 15]
+    """
+    lat_a, lng_a, scalar = as_latlng(lat, lng)
+    xyz = latlng_to_xyz(np.radians(lat_a), np.radians(lng_a))
+    face, x, y = forward_xyz(xyz, orientation)
+    if scalar:
+        return int(face[0]), float(x[0]), float(y[0])
+    shape = np.shape(np.broadcast(np.asarray(lat), np.asarray(lng)))
+    return face.reshape(shape), x.reshape(shape), y.reshape(shape)
+
+
+# ----------------------------------------------------------------------------
+# Inverse
+# ----------------------------------------------------------------------------
+def _area_from_planar(sin_a: np.ndarray, cos_a: np.ndarray) -> np.ndarray:
+    """A_G of planar azimuth Az' (eq. 8 inverted; the sin/cos form has no pole at Az' = 0)."""
+    return _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))
+
+
+def _az_closed(area: np.ndarray) -> np.ndarray:
+    """Exact spherical azimuth Az of the excess A_G (SNYDER.md §4 closed form).
+
+    With Y = A_G + pi - G = Az + H, the cosine rule for H gives
+    tan Az = (cos Y + cos G) / (sin G cos g - sin Y), rewritten without
+    cancellation.
+    """
+    return np.arctan2(
+        2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area),
+        np.sin(G - area) - _SIN_G * _COS_SMALL_G,
+    )
+
+
+def _newton(area: np.ndarray, az0: np.ndarray, tol: float, max_iter: int):
+    """Snyder's Newton-Raphson for Az (thesis eqs. 3.8-3.9), all points at once."""
+    az = az0.copy()
+    iterations = np.zeros(az.shape, dtype=np.int64)
+    active = np.arange(az.size)
+    for _ in range(max_iter):
+        if active.size == 0:
+            break
+        a = az[active]
+        sa, ca = np.sin(a), np.cos(a)
+        cos_h = sa * (_SIN_G * _COS_SMALL_G) - ca * _COS_G
+        h = np.arccos(np.clip(cos_h, -1.0, 1.0))
+        f = area[active] - (a + G + h - math.pi)
+        fprime = (ca * (_SIN_G * _COS_SMALL_G) + sa * _COS_G) / np.sqrt(1.0 - cos_h * cos_h) - 1.0
+        step = f / fprime
+        az[active] = a - step
+        iterations[active] += 1
+        active = active[np.abs(step) > tol]
+    return az, iterations
+
+
+@lru_cache(maxsize=8)
+def polynomial(degree: int = 3) -> np.ndarray:
+    """Least-squares polynomial Az ~ P(Az') over Az' in [0, 60] degrees (thesis §4.1.2).
+
+    Coefficients, highest power first (for :func:`numpy.polyval`), in radians.
+    The fit uses the exact closed form on 4,001 Chebyshev-spaced azimuths; the
+    other half of the 120-degree sector follows by symmetry about 60 degrees.
+    """
+    if not 1 <= degree <= 9:
+        raise DggsValueError(f"polynomial degree {degree!r} is out of range 1..9")
+    half = math.pi / 3
+    t = 0.5 * half * (1 - np.cos(np.linspace(0.0, math.pi, 4001)))
+    az = _az_closed(_area_from_planar(np.sin(t), np.cos(t)))
+    coeffs = np.polyfit(t, az, degree)
+    coeffs.setflags(write=False)
+    return coeffs
+
+
+def _az_poly(a: np.ndarray, degree: int) -> np.ndarray:
+    """Polynomial Az of planar Az' in [0, 120) degrees, symmetric about 60."""
+    coeffs = polynomial(degree)
+    upper = a > math.pi / 3
+    t = np.where(upper, _SECTOR - a, a)
+    az = np.polyval(coeffs, t)
+    return np.where(upper, _SECTOR - az, az)
+
+
+def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
+    """True where (x, y) lies outside the face triangle by more than ``slack``."""
+    # Edge normals point at the edge midpoints, azimuths 60, 180, 300 degrees.
+    s3 = math.sqrt(3.0) / 2
+    limit = FACE_INRADIUS * (1.0 + slack)
+    return (
+        (s3 * x + 0.5 * y > limit) | (-y > limit) | (-s3 * x + 0.5 * y > limit)
+    )
+
+
+def inverse_xyz(
+    face,
+    x,
+    y,
+    orientation: Orientation = ISEA,
+    method: str = "closed",
+    *,
+    degree: int = 3,
+    tol: float = 1e-13,
+    max_iter: int = 10,
+):
+    """Inverse of :func:`forward_xyz`: unit vectors (N, 3) and Newton iteration counts.
+
+    No checks; see :func:`inverse` for the checked public version.
+    """
+    geo = orientation.geometry
+    rho = np.hypot(x, y)
+    ap = np.arctan2(x, y)
+    ap = np.where(ap < 0, ap + 2 * math.pi, ap)
+    k = np.minimum((ap // _SECTOR).astype(np.intp), 2)
+    ap = ap - k * _SECTOR
+    sin_a, cos_a = np.sin(ap), np.cos(ap)
+    area = _area_from_planar(sin_a, cos_a)
+    iterations = np.zeros(ap.shape, dtype=np.int64)
+    if method == "closed":
+        az = _az_closed(area)
+    elif method == "newton":
+        az, iterations = _newton(area, ap, tol, max_iter)
+    elif method == "newton-poly":
+        az, iterations = _newton(area, _az_poly(ap, degree), tol, max_iter)
+    elif method == "poly":
+        az = _az_poly(ap, degree)
+    else:
+        raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
+    sin_az, cos_az = np.sin(az), np.cos(az)
+    u = cos_az + sin_az * COT_THETA  # eq. 9
+    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
+    d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
+    s = np.minimum(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
+    cos_z = 1.0 - 2.0 * s * s
+    sin_z = 2.0 * s * np.sqrt(1.0 - s * s)
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az + 120 k
+    ct = cos_az * rc - sin_az * rs
+    st = sin_az * rc + cos_az * rs
+    face = np.asarray(face)
+    c, n, e = geo.centres[face], geo.norths[face], geo.easts[face]
+    xyz = cos_z[:, None] * c + sin_z[:, None] * (ct[:, None] * n + st[:, None] * e)
+    return xyz, iterations
+
+
+def inverse(
+    face,
+    x,
+    y,
+    method: str = "closed",
+    orientation: Orientation = ISEA,
+    *,
+    degree: int = 3,
+    tol: float = 1e-13,
+    max_iter: int = 10,
+    return_iterations: bool = False,
+):
+    """Map face-plane ``(x, y)`` on face ``face`` back to latitude/longitude (degrees).
+
+    Parameters
+    ----------
+    face : int or array_like of int
+        Face index 0..19.
+    x, y : float or array_like
+        Planar coordinates in the face frame, unit sphere.
+    method : {"closed", "newton", "newton-poly", "poly"}
+        ``"closed"`` (default) is the exact non-iterative formula;
+        ``"newton"`` is Snyder's Newton-Raphson from ``Az0 = Az'``;
+        ``"newton-poly"`` starts Newton from a polynomial in ``Az'`` of
+        ``degree`` (thesis §4.1.2); ``"poly"`` uses the polynomial alone
+        (thesis §4.1.3, approximate: about 6 m on the Earth at degree 3).
+    orientation : Orientation
+        The icosahedron's orientation.
+    degree : int
+        Polynomial degree for the polynomial methods (1-9).
+    tol, max_iter : float, int
+        Newton stops when the step is below ``tol`` radians or after
+        ``max_iter`` iterations.
+    return_iterations : bool
+        Also return the number of Newton iterations of each point.
+
+    Returns
+    -------
+    lat, lng : float or ndarray
+        Spherical latitude and longitude, degrees; longitude in -180..180.
+    iterations : ndarray of int, optional
+        Only with ``return_iterations=True``.
+
+    Raises
+    ------
+    CoordinateError
+        A face outside 0..19, NaN or infinite coordinates, or a point off its face.
+
+    Examples
+    --------
+    >>> lat, lng = inverse(0, 0.0, 0.0)
+    >>> round(float(lat), 6), round(float(lng), 6)
+    (69.094843, -144.0)
+    """
+    if method not in METHODS:
+        raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
+    scalar = np.ndim(face) == 0 and np.ndim(x) == 0 and np.ndim(y) == 0
+    try:
+        face_b, x_b, y_b = np.broadcast_arrays(np.asarray(face), np.asarray(x, float), np.asarray(y, float))
+    except ValueError:
+        raise CoordinateError(
+            f"shapes of face {np.shape(face)}, x {np.shape(x)} and y {np.shape(y)} do not match"
+        ) from None
+    shape = face_b.shape
+    face_a = np.atleast_1d(face_b).ravel()
+    x_a, y_a = np.atleast_1d(x_b).ravel(), np.atleast_1d(y_b).ravel()
+    if face_a.dtype.kind not in "iu" and face_a.size:
+        if face_a.dtype.kind != "f" or not np.all(np.mod(face_a, 1) == 0):
+            raise CoordinateError(f"face {face_a[0]!r} must be an integer 0..19")
+        face_a = face_a.astype(np.int64)
+    bad = (face_a < 0) | (face_a >= NUM_FACES)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise CoordinateError(f"face {int(face_a[i])} at index {i} is out of range 0..19")
+    for name, arr in (("x", x_a), ("y", y_a)):
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            raise CoordinateError(f"{name} {float(arr[i])!r} at index {i} is not a finite number")
+    off = _outside_face(x_a, y_a, 1e-9)
+    if off.any():
+        i = int(np.flatnonzero(off)[0])
+        raise CoordinateError(
+            f"point ({float(x_a[i])!r}, {float(y_a[i])!r}) at index {i} is off face {int(face_a[i])}"
+        )
+    xyz, iterations = inverse_xyz(
+        face_a, x_a, y_a, orientation, method, degree=degree, tol=tol, max_iter=max_iter
+    )
+    lat, lng = (np.degrees(v) for v in xyz_to_latlng(xyz))
+    if scalar:
+        out = (float(lat[0]), float(lng[0]))
+        return (*out, int(iterations[0])) if return_iterations else out
+    out = (lat.reshape(shape), lng.reshape(shape))
+    return (*out, iterations.reshape(shape)) if return_iterations else out
+
+
+# ----------------------------------------------------------------------------
+# On the ellipsoid
+# ----------------------------------------------------------------------------
+class Projection:
+    """Snyder ISEA on an ellipsoid (via authalic latitude) or a sphere, in metres.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        Default WGS84; use :func:`dggs.authalic.sphere` for spherical mode.
+    orientation : Orientation
+        Default :data:`dggs.icosahedron.ISEA`.
+
+    Examples
+    --------
+    >>> p = Projection()
+    >>> face, x, y = p.forward(0.0, 0.0)
+    >>> int(face), round(float(y))
+    (2, -2215425)
+    >>> [round(v, 9) for v in p.inverse(face, x, y)]
+    [0.0, 0.0]
+    """
+
+    def __init__(self, ellipsoid: Ellipsoid = WGS84, orientation: Orientation = ISEA) -> None:
+        self.ellipsoid = ellipsoid
+        self.orientation = orientation
+        self.radius = ellipsoid.authalic_radius
+
+    def __repr__(self) -> str:
+        return f"Projection(ellipsoid={self.ellipsoid.name}, orientation={self.orientation})"
+
+    def forward(self, lat, lng):
+        """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
+        lat_a, lng_a, scalar = as_latlng(lat, lng)
+        beta = self.ellipsoid.geodetic_to_authalic(np.radians(lat_a))
+        face, x, y = forward_xyz(latlng_to_xyz(beta, np.radians(lng_a)), self.orientation)
+        x, y = x * self.radius, y * self.radius
+        if scalar:
+            return int(face[0]), float(x[0]), float(y[0])
+        return face, x, y
+
+    def inverse(self, face, x, y, method: str = "closed"):
+        """``(face, x, y)`` in metres -> geodetic ``(lat, lng)`` in degrees."""
+        lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), method, self.orientation)
+        lat = self.ellipsoid.authalic_to_geodetic_deg(lat)
+        return (float(lat), lng) if np.ndim(lat) == 0 else (lat, lng)

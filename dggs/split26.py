@@ -1,0 +1,177 @@
+"""The Split (2:6) hierarchy on a face plane (thesis §6.1.7).
+
+Level 1 splits each face into 6 congruent 30-60-90 triangles (vertex, centre,
+edge midpoint); every later level splits each 30-60-90 triangle
+``A (30 deg), B (60 deg), C (90 deg)`` into 3 congruent similar ones by
+bisecting the 60-degree angle at B (the bisector meets AC at D, a third of
+the way from C to A) and halving the remaining 30-30-120 triangle ABD at E,
+the midpoint of AB.  The children, in digit order, are::
+
+    0: BCD  (A', B', C') = (B, D, C)
+    1: BDE  (A', B', C') = (B, D, E)
+    2: ADE  (A', B', C') = (A, D, E)
+
+Consecutive children share an edge.  Every level is the kisrhombille tiling
+of a triangular lattice (scaled by 1/sqrt(3) and turned 30 degrees per
+level), a reflection tiling: the neighbour across any cell edge is the
+cell's mirror image in that edge, across face edges too once the adjacent
+face is unfolded into the plane.
+
+All coordinates are in the face frame of :mod:`dggs.snyder` (unit sphere).
+Level-1 digits ``d = 0..5`` number the six triangles clockwise from the face's
+reference vertex: triangle ``d`` spans planar azimuths ``60 d .. 60 (d + 1)``
+degrees.
+
+Examples
+--------
+>>> import numpy as np
+>>> digits = locate(np.array([0.01]), np.array([0.2]), 3)
+>>> digits.tolist()
+[[0, 0, 2]]
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dggs.snyder import FACE_CIRCUMRADIUS, FACE_INRADIUS
+
+__all__ = [
+    "FACE_VERTICES",
+    "level1_triangles",
+    "locate",
+    "cell_vertices",
+    "CHILD_COUNT",
+]
+
+SQRT3 = math.sqrt(3.0)
+#: Planar face vertices: vertex k at azimuth 120 k degrees, clockwise from +y.
+FACE_VERTICES = np.array(
+    [
+        [FACE_CIRCUMRADIUS * math.sin(a), FACE_CIRCUMRADIUS * math.cos(a)]
+        for a in (0.0, 2 * math.pi / 3, 4 * math.pi / 3)
+    ]
+)
+CHILD_COUNT = 3
+
+
+def level1_triangles() -> np.ndarray:
+    """The six level-1 triangles as a (6, 3, 2) array of (A, B, C) corners."""
+    tris = np.empty((6, 3, 2))
+    for d in range(6):
+        k = d // 2
+        vk, vn = FACE_VERTICES[k], FACE_VERTICES[(k + 1) % 3]
+        tris[d, 0] = vk if d % 2 == 0 else vn  # A: the face vertex, 30 degrees
+        tris[d, 1] = 0.0  # B: the face centre, 60 degrees
+        tris[d, 2] = 0.5 * (vk + vn)  # C: the edge midpoint, 90 degrees
+    return tris
+
+
+LEVEL1 = level1_triangles()
+LEVEL1.setflags(write=False)
+
+# Canonical triangle: C = (0, 0), A = (sqrt3, 0), B = (0, 1).  The child
+# corners D = (1/sqrt3, 0) and E = (sqrt3/2, 1/2).
+_CANON = {
+    "A": np.array([SQRT3, 0.0]),
+    "B": np.array([0.0, 1.0]),
+    "C": np.array([0.0, 0.0]),
+    "D": np.array([1.0 / SQRT3, 0.0]),
+    "E": np.array([SQRT3 / 2, 0.5]),
+}
+_CHILDREN = ("BDC", "BDE", "ADE")  # (A', B', C') of children 0, 1, 2
+
+
+def _frame_rows(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """Rows mapping a 30-60-90 triangle's C->A and C->B directions to +x and +y."""
+    return np.stack([(a - c) / np.linalg.norm(a - c), (b - c) / np.linalg.norm(b - c)])
+
+
+def _child_affines() -> tuple[np.ndarray, np.ndarray]:
+    """Per child j, ``p' = M[j] @ p + t[j]``: parent canonical -> child canonical."""
+    mats, offs = [], []
+    for corners in _CHILDREN:
+        a, b, c = (_CANON[k] for k in corners)
+        m = SQRT3 * _frame_rows(a, b, c)
+        mats.append(m)
+        offs.append(-m @ c)
+    return np.array(mats), np.array(offs)
+
+
+_M, _T = _child_affines()
+# Level-1 triangle d: canonical = (rows @ (p - C)) / inradius_of_cell
+_L1_ROWS = np.array([_frame_rows(*LEVEL1[d]) / FACE_INRADIUS for d in range(6)])
+_L1_C = LEVEL1[:, 2].copy()
+
+
+def level1_digit(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Level-1 digit 0..5 of face-frame points (planar azimuth // 60 degrees).
+
+    A point on a dividing ray goes to the triangle clockwise of it; the face
+    centre goes to triangle 0.
+    """
+    az = np.arctan2(x, y)
+    az = np.where(az < 0, az + 2 * math.pi, az)
+    return np.minimum((az * (3 / math.pi)).astype(np.intp), 5)
+
+
+def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
+    """Digits (N, level) uint8 of the level-``level`` cells holding face-frame points.
+
+    Column 0 holds the level-1 digit (0..5), later columns 0..2.  Points on a
+    shared edge go to one side by fixed comparisons (child 1 wins its two
+    internal edges), so the same point always gets the same cell.
+    """
+    n = x.shape[0]
+    digits = np.empty((n, max(level, 0)), dtype=np.uint8)
+    if level <= 0:
+        return digits
+    d = level1_digit(x, y)
+    digits[:, 0] = d
+    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
+    rows = _L1_ROWS[d]
+    px = rows[:, 0, 0] * dx + rows[:, 0, 1] * dy
+    py = rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
+    m00, m01, m10, m11 = _M[:, 0, 0], _M[:, 0, 1], _M[:, 1, 0], _M[:, 1, 1]
+    t0, t1 = _T[:, 0], _T[:, 1]
+    for col in range(1, level):
+        sx = SQRT3 * px
+        # Child 0 (BCD) lies on C's side of BD: sqrt3 x + y < 1; child 2 (ADE)
+        # on A's side of DE: sqrt3 x - y > 1; child 1 (BDE) between them.
+        c = np.where(sx + py < 1.0, 0, np.where(sx - py > 1.0, 2, 1)).astype(np.uint8)
+        digits[:, col] = c
+        px, py = m00[c] * px + m01[c] * py + t0[c], m10[c] * px + m11[c] * py + t1[c]
+    return digits
+
+
+def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
+    """Face-frame corners ``(A, B, C)`` of cells, each an (N, 2) array.
+
+    Parameters
+    ----------
+    l1 : (N,) int array
+        Level-1 digits 0..5.
+    digits : (N, L) int array
+        The later digits (0..2), one column per level from 2 on.
+    levels : (N,) int array, optional
+        Each cell's level, for rows of mixed depth (columns past a row's
+        level are ignored).  Default: every row uses all columns.
+    """
+    tri = LEVEL1[l1]
+    a, b, c = tri[:, 0].copy(), tri[:, 1].copy(), tri[:, 2].copy()
+    for col in range(digits.shape[1]):
+        dig = digits[:, col]
+        dpt = c + (a - c) / 3.0  # D: a third of the way from C to A
+        ept = 0.5 * (a + b)  # E: the midpoint of AB
+        active = None if levels is None else (levels > col + 1)
+        na = np.where((dig == 2)[:, None], a, b)
+        nb = dpt
+        nc = np.where((dig == 0)[:, None], c, ept)
+        if active is None:
+            a, b, c = na, nb, nc
+        else:
+            m = active[:, None]
+            a, b, c = np.where(m, na, a), np.where(m, nb, b), np.where(m, nc, c)
+    return a, b, c
