@@ -1,0 +1,201 @@
+"""PNG analogues of Figures 6.14-6.28: area highlighting and error histograms.
+
+Area highlighting (Figures 6.14, 6.16, 6.19, 6.21, 6.23, 6.25, 6.27): faces
+on an orthographic globe, white at 0 % error, blue where a face is too big
+and purple where it is too small, the scale running to the level's maximum
+error as in the thesis (§6.3.3).  Error distributions (Figures 6.15, 6.17,
+6.20, 6.22, 6.24, 6.26, 6.28): one histogram of signed face errors per level.
+
+matplotlib is an optional extra (``pip install dggs[plot]``) and is imported
+only here, lazily.
+
+Examples
+--------
+>>> import tempfile
+>>> paths = write_figures(tempfile.mkdtemp(), ["1:4"], 1)  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from dggs.errors import DggsError
+from dggs.experiments.mesh import Mesh
+from dggs.experiments.schemes import SCHEMES, get_scheme, iter_levels
+
+__all__ = ["MissingPlotDependency", "write_figures", "plot_area_highlighting", "plot_error_distribution"]
+
+#: Thesis figure numbers per scheme: (area highlighting, error distribution).
+FIGURE_NUMBERS = {
+    "1:4": ("6.14", "6.15"),
+    "1:9": ("6.16", "6.17"),
+    "catmull-clark": ("6.19", "6.20"),
+    "1:3": ("6.21", "6.22"),
+    "1:6": ("6.23", "6.24"),
+    "1:5": ("6.25", "6.26"),
+    "2:6": ("6.27", "6.28"),
+}
+
+
+class MissingPlotDependency(DggsError):
+    """matplotlib is not installed."""
+
+
+def _plt() -> Any:
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as exc:
+        raise MissingPlotDependency(
+            "figures need matplotlib: pip install 'dggs[plot]' (or pip install matplotlib)"
+        ) from exc
+    return plt
+
+
+def _cmap() -> Any:
+    from matplotlib.colors import LinearSegmentedColormap
+
+    return LinearSegmentedColormap.from_list("thesis", ["#6a1b9a", "#ffffff", "#1f4fbf"])
+
+
+def _polygons(mesh: Mesh) -> tuple[list[np.ndarray], np.ndarray]:
+    polys = [mesh.vertices[b] for b in mesh.faces]
+    return polys, np.concatenate([np.arange(len(b)) for b in mesh.faces])
+
+
+def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20.0, 30.0)) -> Any:
+    """Draw faces on an orthographic globe coloured by signed error.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Target axes.
+    mesh : Mesh
+        Mesh of the level.
+    errors_pct : numpy.ndarray
+        Signed per-face errors, blocks concatenated as in ``mesh.faces``.
+    view : tuple of float
+        (latitude, longitude) of the view centre, degrees.
+
+    Returns
+    -------
+    matplotlib.collections.PolyCollection
+        The face collection (for a colour bar).
+    """
+    from matplotlib.collections import PolyCollection
+
+    lat, lng = np.radians(view)
+    centre = np.array([np.cos(lat) * np.cos(lng), np.cos(lat) * np.sin(lng), np.sin(lat)])
+    east = np.array([-np.sin(lng), np.cos(lng), 0.0])
+    north = np.cross(centre, east)
+    verts, depth, start = [], [], 0
+    for block in mesh.faces:
+        p = mesh.vertices[block]
+        p = p / np.linalg.norm(p, axis=2, keepdims=True)
+        verts += list(np.stack([p @ east, p @ north], axis=-1))
+        depth.append((p.mean(axis=1) @ centre))
+        start += len(block)
+    depth_a = np.concatenate(depth)
+    front = np.flatnonzero(depth_a > 0.05)
+    vmax = max(float(np.abs(errors_pct).max()), 1e-9)
+    coll = PolyCollection(
+        [verts[i] for i in front],
+        array=errors_pct[front],
+        cmap=_cmap(),
+        clim=(-vmax, vmax),
+        edgecolors="0.35" if len(front) < 2500 else "face",
+        linewidths=0.2,
+    )
+    ax.add_collection(coll)
+    ax.add_patch(__import__("matplotlib.patches", fromlist=["Circle"]).Circle((0, 0), 1.0, fill=False, lw=0.6))
+    ax.set_xlim(-1.05, 1.05)
+    ax.set_ylim(-1.05, 1.05)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    return coll
+
+
+def plot_error_distribution(ax: Any, errors_by_level: dict[int, np.ndarray], bins: int = 40) -> None:
+    """Histogram of signed face errors (percentage of faces), one line per level."""
+    allv = np.concatenate(list(errors_by_level.values()))
+    lo, hi = float(allv.min()), float(allv.max())
+    if hi - lo < 1e-9:
+        lo, hi = lo - 1.0, hi + 1.0
+    edges = np.linspace(lo, hi, bins + 1)
+    mids = 0.5 * (edges[1:] + edges[:-1])
+    for level, e in errors_by_level.items():
+        counts, _ = np.histogram(e, bins=edges)
+        ax.plot(mids, 100.0 * counts / len(e), marker="o", ms=2.5, lw=1.0, label=f"level {level}")
+    ax.set_xlabel("face area error (%)  (- smaller, + larger than total/faces)")
+    ax.set_ylabel("faces (%)")
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+
+
+def write_figures(
+    outdir: str | Path,
+    schemes: Iterable[str] | None = None,
+    levels: int | None = None,
+    progress: bool = False,
+) -> list[Path]:
+    """Write the highlighting and distribution PNGs for each scheme.
+
+    Parameters
+    ----------
+    outdir : str or pathlib.Path
+        Directory (created if needed).
+    schemes : iterable of str, optional
+        Scheme names (default: all seven).
+    levels : int, optional
+        Deepest level (default: the thesis's depth, at most 5).
+    progress : bool
+        tqdm progress bar.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    MissingPlotDependency
+        If matplotlib is not installed.
+    UnknownSchemeError, ExperimentLevelError
+        On bad input.
+    """
+    plt = _plt()
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+    for name in schemes or SCHEMES:
+        scheme = get_scheme(name)
+        depth = min(scheme.thesis_levels, 5) if levels is None else levels
+        meshes = list(iter_levels(scheme, depth, progress))[1:]
+        fig_a, fig_d = FIGURE_NUMBERS[scheme.key]
+        ncol = max(len(meshes), 1)
+        fig, axes = plt.subplots(1, ncol, figsize=(2.6 * ncol + 0.8, 3.0), squeeze=False)
+        for ax, (mesh, m) in zip(axes[0], meshes):
+            coll = plot_area_highlighting(ax, mesh, m.face_errors_pct)
+            ax.set_title(f"level {m.level}: max {m.max_face_error_pct:.2f} %", fontsize=8)
+            cb = fig.colorbar(coll, ax=ax, orientation="horizontal", fraction=0.05, pad=0.02)
+            cb.ax.tick_params(labelsize=6)
+        fig.suptitle(f"Area highlighting - {scheme.title} (cf. Figure {fig_a}); blue larger, purple smaller", fontsize=9)
+        slug = scheme.key.replace(":", "_")
+        path = out / f"area_highlighting_{slug}.png"
+        fig.savefig(path, dpi=130, bbox_inches="tight")
+        plt.close(fig)
+        written.append(path)
+        fig, ax = plt.subplots(figsize=(6.0, 3.6))
+        plot_error_distribution(ax, {m.level: m.face_errors_pct for _, m in meshes})
+        ax.set_title(f"Face area error distribution - {scheme.title} (cf. Figure {fig_d})", fontsize=9)
+        path = out / f"error_distribution_{slug}.png"
+        fig.savefig(path, dpi=130, bbox_inches="tight")
+        plt.close(fig)
+        written.append(path)
+    return written
