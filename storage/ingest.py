@@ -1,0 +1,450 @@
+"""Turn raw batches into checked rows and commit them, one batch per transaction.
+
+The ingest loop guarantees:
+
+* **Atomic batches.**  A batch's rows, its rejects and the source's progress
+  counter (``sources.rows_done``) are written in one transaction, so a
+  process killed at any moment leaves only whole batches behind.
+* **Exactly once.**  Re-running the same ingest skips the ``rows_done``
+  records already committed and carries on from there.
+* **No silent loss.**  A bad row either stops the ingest
+  (``on_error="fail"``, :class:`~dggs.storage.errors.BadRowError` naming the
+  line, column and value) or is skipped *and* recorded in table ``rejects``
+  (``on_error="skip"``, with a :class:`~dggs.storage.errors.RejectedRowsWarning`).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+import warnings
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from itertools import repeat
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+import dggs
+from dggs.errors import DggsValueError
+
+from .errors import BadRowError, RejectedRowsWarning
+from .readers import RawBatch
+from .schema import add_columns, column_types, infer_type, now, quote, sql_type
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .store import CellStore
+
+__all__ = ["IngestResult", "prepare", "run_ingest", "make_transformer", "value_types"]
+
+#: Rows of ``points_pending`` that trigger a merge into the indexed table.
+MERGE_ROWS = 250_000
+
+_Bad = dict[int, tuple[str | None, Any, str]]
+
+
+@dataclass
+class IngestResult:
+    """What an ingest did.
+
+    Attributes
+    ----------
+    source : str
+        The input's name (file path or stream name).
+    rows_read : int
+        Input records read by this run (not counting resumed ones).
+    rows_inserted : int
+        Rows stored by this run (a polygon feature stores one per cell).
+    rows_rejected : int
+        Records refused by ``on_error="skip"`` in this run.
+    rows_resumed : int
+        Records skipped because an earlier run had committed them already.
+    already_complete : bool
+        True if the source had been ingested completely before: nothing done.
+    rejects : list of dict
+        The first few rejected records (row, line, column, value, reason).
+    seconds : float
+        Wall time of this run.
+    """
+
+    source: str
+    rows_read: int = 0
+    rows_inserted: int = 0
+    rows_rejected: int = 0
+    rows_resumed: int = 0
+    already_complete: bool = False
+    rejects: list[dict] = field(default_factory=list)
+    seconds: float = 0.0
+
+    @property
+    def rows_per_second(self) -> float:
+        """Input records read per second of wall time."""
+        return self.rows_read / self.seconds if self.seconds > 0 else float("nan")
+
+    def summary(self) -> str:
+        """One line for people, e.g. for the CLI.
+
+        Examples
+        --------
+        >>> IngestResult("a.csv", rows_read=10, rows_inserted=9, rows_rejected=1).summary()
+        'a.csv: read 10 rows, stored 9, rejected 1'
+        """
+        if self.already_complete:
+            return f"{self.source}: already ingested ({self.rows_resumed:,} rows), nothing to do"
+        text = f"{self.source}: read {self.rows_read:,} rows, stored {self.rows_inserted:,}"
+        if self.rows_rejected:
+            text += f", rejected {self.rows_rejected:,}"
+        if self.rows_resumed:
+            text += f" (resumed after {self.rows_resumed:,} committed earlier)"
+        return text
+
+
+@dataclass
+class Prepared:
+    """Checked rows of one batch, ready for ``executemany``."""
+
+    rows: list[tuple]
+    rejects: list[dict]
+
+
+def make_transformer(crs: Any) -> Any:
+    """Return a pyproj transformer from ``crs`` to WGS84 (x, y order), or None.
+
+    Raises
+    ------
+    DggsValueError
+        If pyproj does not know the CRS.
+
+    Examples
+    --------
+    >>> make_transformer("EPSG:4326") is None
+    True
+    >>> t = make_transformer("EPSG:3857")
+    >>> [round(v, 6) for v in t.transform(0.0, 0.0)]
+    [0.0, 0.0]
+    """
+    if crs is None:
+        return None
+    from pyproj import CRS, Transformer
+    from pyproj.exceptions import CRSError
+
+    try:
+        source = CRS.from_user_input(crs)
+    except CRSError as exc:
+        raise DggsValueError(f"unknown CRS {crs!r}: {exc}") from exc
+    if source == CRS.from_epsg(4326):
+        return None
+    return Transformer.from_crs(source, CRS.from_epsg(4326), always_xy=True)
+
+
+def _floats(raw: Sequence[Any], name: str, bad: _Bad, text: bool) -> np.ndarray:
+    """Parse coordinates to float64; mark unparsable or non-finite entries bad."""
+    try:
+        arr = np.asarray(raw, dtype=np.float64)
+        if arr.ndim != 1:
+            raise ValueError
+    except (ValueError, TypeError):
+        arr = np.empty(len(raw), dtype=np.float64)
+        for i, value in enumerate(raw):
+            try:
+                if isinstance(value, (str, bytes)) and not value.strip():
+                    raise ValueError
+                arr[i] = float(value)
+            except (ValueError, TypeError):
+                arr[i] = np.nan
+                bad.setdefault(i, (name, value, "is not a number"))
+    notfinite = ~np.isfinite(arr)
+    if notfinite.any():
+        for i in np.flatnonzero(notfinite).tolist():
+            bad.setdefault(i, (name, raw[i], "is missing or not finite"))
+    return arr
+
+
+def _convert(raw: Sequence[Any], kind: str, name: str, bad: _Bad, text: bool) -> list[Any]:
+    """Convert a raw value column to Python values of SQL type ``kind``.
+
+    Empty text, ``None`` and NaN become NULL; infinities and unparsable
+    numbers are bad.
+    """
+    if kind == "TEXT":
+        if text:
+            return [value if value != "" else None for value in raw]
+        out = []
+        for value in (raw.tolist() if isinstance(raw, np.ndarray) else raw):
+            if value is None or (isinstance(value, float) and math.isnan(value)):
+                out.append(None)
+            else:
+                out.append(value if isinstance(value, str) else str(value))
+        return out
+    arr = raw if isinstance(raw, np.ndarray) else None
+    if arr is not None and arr.dtype.kind in "iub":
+        return arr.tolist()
+    try:
+        if text and kind == "INTEGER":
+            try:
+                return np.asarray(raw, dtype=np.int64).tolist()
+            except (ValueError, OverflowError):
+                pass
+        values = np.asarray(raw, dtype=np.float64)
+        if values.ndim != 1:
+            raise ValueError
+        if np.isfinite(values).all():
+            return values.tolist()
+        if not np.isinf(values).any():
+            return [None if v != v else v for v in values.tolist()]
+    except (ValueError, TypeError, OverflowError):
+        pass
+    out: list[Any] = []
+    for i, value in enumerate(raw.tolist() if isinstance(raw, np.ndarray) else raw):
+        try:
+            if value is None:
+                out.append(None)
+                continue
+            if isinstance(value, (bool, np.bool_)):
+                out.append(int(value))
+                continue
+            if isinstance(value, (str, bytes)):
+                value_s = value.strip()
+                if not value_s:
+                    out.append(None)
+                    continue
+                if kind == "INTEGER":
+                    try:
+                        out.append(int(value_s))
+                        continue
+                    except ValueError:
+                        pass
+                number = float(value_s)
+            elif isinstance(value, int):
+                out.append(value)
+                continue
+            else:
+                number = float(value)
+            if math.isnan(number):
+                out.append(None)
+            elif math.isinf(number):
+                bad.setdefault(i, (name, value, "is not finite"))
+                out.append(None)
+            else:
+                out.append(number)
+        except (ValueError, TypeError, OverflowError):
+            bad.setdefault(i, (name, value, f"is not a number (column type {kind})"))
+            out.append(None)
+    return out
+
+
+def value_types(
+    batch: RawBatch, existing: Mapping[str, str], declared: Mapping[str, str]
+) -> dict[str, str]:
+    """Return the SQL types of value columns that ``points`` does not have yet."""
+    new: dict[str, str] = {}
+    for name, raw in batch.values.items():
+        if name in existing:
+            continue
+        if name in declared:
+            new[name] = declared[name]
+        elif isinstance(raw, np.ndarray) and raw.dtype.kind in "iub":
+            new[name] = "INTEGER"
+        elif isinstance(raw, np.ndarray) and raw.dtype.kind == "f":
+            new[name] = "REAL"
+        elif isinstance(raw, np.ndarray) and raw.dtype.kind in "US":
+            new[name] = "TEXT"
+        else:
+            sample = raw.tolist() if isinstance(raw, np.ndarray) else list(raw)
+            new[name] = infer_type(sample, batch.text)
+    return new
+
+
+def prepare(
+    batch: RawBatch,
+    level: int,
+    types: Mapping[str, str],
+    transformer: Any,
+    source_id: int,
+) -> Prepared:
+    """Convert and check one batch; compute the cells of its good rows.
+
+    Returns the rows to insert (in ``points`` column order: cell, lat, lng,
+    source_id, row, then value columns in ``types`` order) and the rejects.
+    """
+    n = len(batch)
+    bad: _Bad = dict(batch.bad)
+    lat = _floats(batch.lat, "lat", bad, batch.text)
+    lng = _floats(batch.lng, "lng", bad, batch.text)
+    if transformer is not None:
+        ok = np.isfinite(lat) & np.isfinite(lng)
+        x, y = transformer.transform(np.where(ok, lng, 0.0), np.where(ok, lat, 0.0))
+        lng, lat = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+        failed = ok & ~(np.isfinite(lat) & np.isfinite(lng))
+        for i in np.flatnonzero(failed).tolist():
+            bad.setdefault(i, ("lat", (batch.lat[i], batch.lng[i]), "cannot be transformed to WGS84"))
+    with np.errstate(invalid="ignore"):
+        for i in np.flatnonzero(np.abs(lat) > 90).tolist():
+            bad.setdefault(i, ("lat", batch.lat[i], "is out of range -90..90"))
+        for i in np.flatnonzero(np.abs(lng) > 180).tolist():
+            bad.setdefault(i, ("lng", batch.lng[i], "is out of range -180..180"))
+    columns = [_convert(batch.values[name], kind, name, bad, batch.text) for name, kind in types.items()]
+
+    good = np.ones(n, dtype=bool)
+    if bad:
+        good[list(bad)] = False
+    keep = np.flatnonzero(good)
+    all_good = len(keep) == n
+    cells = np.empty(n, dtype=object)
+    known = np.asarray(batch.cells, dtype=object) if batch.cells is not None else None
+    todo = keep if known is None else keep[known[keep] == ""]
+    if len(todo):
+        cells[todo] = dggs.latlng_to_cell(lat[todo], lng[todo], level)
+    if known is not None:
+        given = keep[known[keep] != ""]
+        cells[given] = known[given]
+    rows_col = batch.rows if all_good else [batch.rows[i] for i in keep.tolist()]
+    if all_good:
+        parts = [cells.tolist(), lat.tolist(), lng.tolist(), repeat(source_id), rows_col, *columns]
+    else:
+        idx = keep.tolist()
+        parts = [
+            cells[keep].tolist(),
+            lat[keep].tolist(),
+            lng[keep].tolist(),
+            repeat(source_id),
+            rows_col,
+            *[[col[i] for i in idx] for col in columns],
+        ]
+    rows = list(zip(*parts))
+    rejects = []
+    for i in sorted(bad):
+        column, value, reason = bad[i]
+        rejects.append(
+            {
+                "row": batch.rows[i],
+                "line": batch.lines[i] if batch.lines is not None else None,
+                "column": column,
+                "value": value,
+                "reason": reason,
+                "index": i,
+            }
+        )
+    return Prepared(rows=rows, rejects=rejects)
+
+
+def _jsonable(value: Any) -> Any:
+    if hasattr(value, "item") and not isinstance(value, (str, bytes)):
+        try:
+            return value.item()
+        except (ValueError, AttributeError):
+            return str(value)
+    return value
+
+
+def run_ingest(
+    store: CellStore,
+    *,
+    key: str,
+    kind: str,
+    name: str,
+    params: dict[str, Any],
+    batches: Callable[[int], Iterator[RawBatch]],
+    level: int,
+    declared: Mapping[str, str],
+    crs: Any,
+    on_error: str,
+    replace: bool,
+    progress: Callable[[int], Any] | None,
+    file_info: Mapping[str, Any] | None = None,
+) -> IngestResult:
+    """Ingest batches into ``store`` with per-batch transactions and resume.
+
+    ``batches(skip)`` must yield the input's batches after its first ``skip``
+    records, the same way on every call.
+    """
+    if on_error not in ("fail", "skip"):
+        raise DggsValueError(f"on_error must be 'fail' or 'skip', not {on_error!r}")
+    declared = {name_: sql_type(t) for name_, t in declared.items()}
+    store._check_level_for_ingest(level)
+    transformer = make_transformer(crs)
+    params = {**params, "level": level, "crs": None if crs is None else str(crs)}
+    start = time.perf_counter()
+    source = store._open_source(key, kind, name, params, file_info or {}, replace)
+    result = IngestResult(source=name, rows_resumed=source["rows_done"])
+    if source["complete"]:
+        result.already_complete = True
+        if progress is not None and source["rows_done"]:
+            progress(source["rows_done"])
+        return result
+    if progress is not None and source["rows_done"]:
+        progress(source["rows_done"])
+    conn = store.conn
+    source_id = source["id"]
+    pending = store._pending_count()
+    for batch in batches(source["rows_done"]):
+        existing = column_types(conn)
+        new = value_types(batch, existing, declared)
+        types = {name_: (existing.get(name_) or new[name_]) for name_ in batch.values}
+        prepared = prepare(batch, level, types, transformer, source_id)
+        if prepared.rejects and on_error == "fail":
+            first = prepared.rejects[0]
+            raise BadRowError(name, first["row"], first["line"], first["column"], _jsonable(first["value"]), first["reason"])
+        insert = (
+            f"INSERT INTO points_pending (cell, lat, lng, source_id, row"
+            f"{''.join(', ' + quote(c) for c in types)}) VALUES (?, ?, ?, ?, ?{', ?' * len(types)})"
+        )
+        with store._transaction():
+            if new:
+                add_columns(conn, new)
+            store._set_level(level)
+            conn.executemany(insert, prepared.rows)
+            if prepared.rejects:
+                conn.executemany(
+                    'INSERT INTO rejects (source_id, row, line, "column", value, reason, record) '
+                    "VALUES (?, ?, ?, ?, ?, ?, ?)",
+                    [
+                        (
+                            source_id,
+                            r["row"],
+                            r["line"],
+                            r["column"],
+                            json.dumps(_jsonable(r["value"]), default=str),
+                            r["reason"],
+                            json.dumps({k: _jsonable(v) for k, v in batch.record(r["index"]).items()}, default=str),
+                        )
+                        for r in prepared.rejects
+                    ],
+                )
+            conn.execute(
+                "UPDATE sources SET rows_done = rows_done + ?, rows_inserted = rows_inserted + ?, "
+                "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ?",
+                (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id),
+            )
+            store._touch()
+        result.rows_read += batch.consumed
+        result.rows_inserted += len(prepared.rows)
+        result.rows_rejected += len(prepared.rejects)
+        for r in prepared.rejects[: max(0, 5 - len(result.rejects))]:
+            result.rejects.append({k: _jsonable(v) for k, v in r.items() if k != "index"})
+        pending += len(prepared.rows)
+        if progress is not None:
+            progress(batch.consumed)
+        if pending >= store.merge_rows:
+            store.merge()
+            pending = 0
+    with store._transaction():
+        store._merge_pending()
+        conn.execute("UPDATE sources SET complete = 1, updated = ? WHERE id = ?", (now(), source_id))
+        store._touch()
+    result.seconds = time.perf_counter() - start
+    if result.rows_rejected:
+        shown = "; ".join(
+            f"row {r['row']}" + (f" (line {r['line']})" if r["line"] else "")
+            + (f" column {r['column']!r} {r['value']!r}" if r["column"] else "")
+            + f" {r['reason']}"
+            for r in result.rejects[:3]
+        )
+        warnings.warn(
+            f"{name}: skipped {result.rows_rejected:,} bad row(s), kept in table rejects; "
+            f"first: {shown}",
+            RejectedRowsWarning,
+            stacklevel=3,
+        )
+    return result

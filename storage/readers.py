@@ -1,0 +1,373 @@
+"""Readers that cut an input into :class:`RawBatch` es of column values.
+
+Each reader streams its input (a CSV file is never held in memory whole),
+can skip the records already committed by an earlier, interrupted run, and
+reports row (and, for CSV, line) numbers for error messages.  Converting and
+checking values is left to :mod:`dggs.storage.ingest`.
+"""
+
+from __future__ import annotations
+
+import collections
+import csv
+import itertools
+import json
+import operator
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import dggs
+from dggs.errors import DggsValueError, StorageError
+
+__all__ = ["RawBatch", "csv_batches", "records_batches", "array_batches", "geojson_batches"]
+
+
+@dataclass
+class RawBatch:
+    """Unconverted column values of one batch of input records.
+
+    Attributes
+    ----------
+    consumed : int
+        Input records this batch accounts for (the source's progress advances
+        by this much when the batch is committed).
+    rows : list of int
+        1-based input record number of each entry (a polygon feature gives
+        several entries with the same number).
+    lines : list of int or None
+        File line of each entry, when known.
+    lat, lng : sequence
+        Raw coordinates (y and x in the input CRS).
+    values : dict
+        Raw value columns.
+    text : bool
+        True if values are raw text (CSV) to be parsed.
+    bad : dict
+        Entries already known to be bad: position -> (column, value, reason).
+    cells : list or None
+        Cell ids already known (polygon cells), ``""`` where not.
+    record : callable
+        ``record(i)`` gives entry ``i`` as a dict, for the rejects table.
+    """
+
+    consumed: int
+    rows: Sequence[int]
+    lines: Sequence[int] | None
+    lat: Sequence[Any]
+    lng: Sequence[Any]
+    values: dict[str, Sequence[Any]]
+    text: bool
+    record: Callable[[int], dict]
+    bad: dict[int, tuple[str | None, Any, str]] = field(default_factory=dict)
+    cells: Sequence[str] | None = None
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+
+def _skip(iterator: Iterator[Any], n: int) -> None:
+    collections.deque(itertools.islice(iterator, n), maxlen=0)
+
+
+def csv_header(path: str | Path, delimiter: str = ",") -> list[str]:
+    """Return the header of a CSV file (its first row)."""
+    with open(path, newline="", encoding="utf-8-sig") as fh:
+        try:
+            return next(csv.reader(fh, delimiter=delimiter))
+        except StopIteration:
+            raise DggsValueError(f"{path} is empty (no header row)") from None
+        except (csv.Error, UnicodeDecodeError) as exc:
+            raise DggsValueError(f"{path} is not a readable CSV file: {exc}") from exc
+
+
+def csv_batches(
+    path: str | Path,
+    lat: str,
+    lng: str,
+    values: Sequence[str],
+    batch_size: int,
+    skip: int = 0,
+    delimiter: str = ",",
+) -> Iterator[RawBatch]:
+    """Stream a CSV file with a header row as raw text batches.
+
+    Blank lines count as consumed records but give no entries.
+
+    Raises
+    ------
+    DggsValueError
+        If a named column is not in the header.
+    """
+    header = csv_header(path, delimiter)
+    wanted = [lat, lng, *values]
+    missing = [name for name in wanted if name not in header]
+    if missing:
+        raise DggsValueError(
+            f"{path} has no column(s) {', '.join(map(repr, missing))}; "
+            f"its header is {', '.join(map(repr, header))}"
+        )
+    index = [header.index(name) for name in wanted]
+    need = max(index) + 1
+    getter = operator.itemgetter(*index)
+    with open(path, newline="", encoding="utf-8-sig") as fh:
+        reader = csv.reader(fh, delimiter=delimiter)
+        next(reader)
+        _skip(reader, skip)
+        done = skip
+        while True:
+            line_before = reader.line_num
+            try:
+                chunk = list(itertools.islice(reader, batch_size))
+            except csv.Error as exc:
+                raise DggsValueError(f"{path}, near line {reader.line_num + 1}: {exc}") from exc
+            if not chunk:
+                return
+            consumed = len(chunk)
+            one_line_each = reader.line_num - line_before == consumed
+            rows = range(done + 1, done + consumed + 1)
+            lines = range(line_before + 1, line_before + consumed + 1) if one_line_each else None
+            bad: dict[int, tuple[str | None, Any, str]] = {}
+            if min(map(len, chunk)) < need:
+                keep = [i for i, r in enumerate(chunk) if r]  # drop blank lines
+                rows = [rows[i] for i in keep]
+                lines = [lines[i] for i in keep] if lines is not None else None
+                chunk = [chunk[i] for i in keep]
+                for i, record in enumerate(chunk):
+                    if len(record) < need:
+                        bad[i] = (None, record, f"has {len(record)} fields, expected at least {need}")
+                        chunk[i] = record + [""] * (need - len(record))
+            columns = list(zip(*map(getter, chunk))) if chunk else [()] * len(wanted)
+            done += consumed
+
+            def record(i: int, _chunk: list[list[str]] = chunk) -> dict:
+                return dict(zip(header, _chunk[i]))
+
+            yield RawBatch(
+                consumed=consumed,
+                rows=rows,
+                lines=lines,
+                lat=columns[0],
+                lng=columns[1],
+                values=dict(zip(values, columns[2:])),
+                text=True,
+                record=record,
+                bad=bad,
+            )
+
+
+def records_batches(
+    records: Iterable[Mapping[str, Any]],
+    lat: str,
+    lng: str,
+    values: Sequence[str],
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Stream an iterable of mappings (dicts, sqlite rows...) as batches."""
+    iterator = iter(records)
+    _skip(iterator, skip)
+    done = skip
+    while True:
+        chunk = list(itertools.islice(iterator, batch_size))
+        if not chunk:
+            return
+        bad: dict[int, tuple[str | None, Any, str]] = {}
+        for i, item in enumerate(chunk):
+            if not isinstance(item, Mapping):
+                bad[i] = (None, item, "is not a mapping (dict)")
+                chunk[i] = {}
+        yield RawBatch(
+            consumed=len(chunk),
+            rows=range(done + 1, done + len(chunk) + 1),
+            lines=None,
+            lat=[item.get(lat) for item in chunk],
+            lng=[item.get(lng) for item in chunk],
+            values={name: [item.get(name) for item in chunk] for name in values},
+            text=False,
+            record=lambda i, _chunk=chunk: dict(_chunk[i]),
+            bad=bad,
+        )
+        done += len(chunk)
+
+
+def array_batches(
+    lat: Any,
+    lng: Any,
+    values: Mapping[str, Any],
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Slice equal-length arrays (numpy, lists, pandas columns) into batches.
+
+    Raises
+    ------
+    DggsValueError
+        If the arrays differ in length.
+    """
+    lat_a = np.asarray(lat)
+    lng_a = np.asarray(lng)
+    cols = {name: np.asarray(col) for name, col in values.items()}
+    n = lat_a.shape[0] if lat_a.ndim else 1
+    lat_a, lng_a = lat_a.reshape(-1), lng_a.reshape(-1)
+    for name, col in {"lng": lng_a, **cols}.items():
+        if col.reshape(-1).shape[0] != n:
+            raise DggsValueError(
+                f"column {name!r} has {col.reshape(-1).shape[0]} values but lat has {n}"
+            )
+    cols = {name: col.reshape(-1) for name, col in cols.items()}
+    for start in range(skip, n, batch_size):
+        stop = min(start + batch_size, n)
+        sl = slice(start, stop)
+        batch_cols = {name: col[sl] for name, col in cols.items()}
+        batch_lat, batch_lng = lat_a[sl], lng_a[sl]
+
+        def record(i: int, _lat=batch_lat, _lng=batch_lng, _cols=batch_cols) -> dict:
+            out = {"lat": _lat[i], "lng": _lng[i], **{k: v[i] for k, v in _cols.items()}}
+            return {k: (v.item() if hasattr(v, "item") else v) for k, v in out.items()}
+
+        yield RawBatch(
+            consumed=stop - start,
+            rows=range(start + 1, stop + 1),
+            lines=None,
+            lat=batch_lat,
+            lng=batch_lng,
+            values=batch_cols,
+            text=False,
+            record=record,
+        )
+
+
+def load_geojson(path: str | Path) -> list[dict]:
+    """Read the features of a GeoJSON file (FeatureCollection, Feature or geometry).
+
+    Raises
+    ------
+    DggsValueError
+        If the file is not GeoJSON.
+    """
+    try:
+        with open(path, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise DggsValueError(f"{path} is not valid JSON: {exc}") from exc
+    kind = data.get("type") if isinstance(data, dict) else None
+    if kind == "FeatureCollection" and isinstance(data.get("features"), list):
+        return data["features"]
+    if kind == "Feature":
+        return [data]
+    if isinstance(kind, str) and "coordinates" in data:
+        return [{"type": "Feature", "geometry": data, "properties": {}}]
+    raise DggsValueError(f"{path} is not GeoJSON (no FeatureCollection, Feature or geometry)")
+
+
+def geojson_batches(
+    features: Sequence[Any],
+    values: Sequence[str],
+    level: int,
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Cut GeoJSON features into batches: points as they are, polygons as cells.
+
+    A ``Polygon``/``MultiPolygon`` feature becomes one entry per cell at
+    ``level`` whose centre lies inside it (:func:`dggs.polygon_to_cells`),
+    each with the feature's properties and the cell centre as coordinates.
+    A ``MultiPoint`` gives one entry per point.
+    """
+    from shapely.geometry import shape
+
+    for start in range(skip, len(features), batch_size):
+        chunk = features[start : start + batch_size]
+        rows: list[int] = []
+        lat: list[Any] = []
+        lng: list[Any] = []
+        cells: list[str] = []
+        props: list[dict] = []
+        bad: dict[int, tuple[str | None, Any, str]] = {}
+
+        def add(row: int, y: Any, x: Any, cell: str, prop: dict) -> None:
+            rows.append(row)
+            lat.append(y)
+            lng.append(x)
+            cells.append(cell)
+            props.append(prop)
+
+        for offset, feature in enumerate(chunk):
+            row = start + offset + 1
+            geometry = feature.get("geometry") if isinstance(feature, dict) else None
+            prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
+            kind = geometry.get("type") if isinstance(geometry, dict) else None
+            coords = geometry.get("coordinates") if isinstance(geometry, dict) else None
+            try:
+                if kind == "Point":
+                    add(row, coords[1], coords[0], "", prop)
+                    continue
+                if kind == "MultiPoint":
+                    for x, y, *_ in coords:
+                        add(row, y, x, "", prop)
+                    continue
+                if kind in ("Polygon", "MultiPolygon"):
+                    found = dggs.polygon_to_cells(shape(geometry), level)
+                    if len(found):
+                        clat, clng = dggs.cell_to_latlng(np.asarray(found))
+                        for cell, y, x in zip(np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()):
+                            add(row, y, x, cell, prop)
+                    else:
+                        bad[len(rows)] = (None, kind, f"polygon holds no cell centre at level {level}")
+                        add(row, None, None, "", prop)
+                    continue
+            except (TypeError, IndexError, ValueError, AttributeError) as exc:
+                bad[len(rows)] = (None, kind, f"geometry is malformed ({exc})")
+                add(row, None, None, "", prop)
+                continue
+            bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
+            add(row, None, None, "", prop)
+
+        yield RawBatch(
+            consumed=len(chunk),
+            rows=rows,
+            lines=None,
+            lat=lat,
+            lng=lng,
+            values={name: [p.get(name) for p in props] for name in values},
+            text=False,
+            record=lambda i, _p=props, _la=lat, _ln=lng: {"lat": _la[i], "lng": _ln[i], **_p[i]},
+            bad=bad,
+            cells=cells,
+        )
+
+
+def count_csv_rows(path: str | Path) -> int:
+    """Count data rows of a CSV file quickly (newlines, less the header).
+
+    Used for progress bars; quoted fields with newlines make it an upper bound.
+    """
+    count = 0
+    last = b"\n"
+    with open(path, "rb") as fh:
+        while block := fh.read(1 << 20):
+            count += block.count(b"\n")
+            last = block[-1:]
+    if last != b"\n":
+        count += 1
+    return max(count - 1, 0)
+
+
+def sniff_kind(path: str | Path) -> str:
+    """Return ``"csv"`` or ``"geojson"`` from a file's name.
+
+    Raises
+    ------
+    StorageError
+        For other extensions.
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix in (".csv", ".tsv", ".txt"):
+        return "csv"
+    if suffix in (".geojson", ".json"):
+        return "geojson"
+    raise StorageError(f"cannot tell the format of {path}: expected .csv, .tsv, .geojson or .json")
