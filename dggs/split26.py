@@ -175,3 +175,71 @@ def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None 
             m = active[:, None]
             a, b, c = np.where(m, na, a), np.where(m, nb, b), np.where(m, nc, c)
     return a, b, c
+
+
+def _face_edge_transforms(face_vertices: np.ndarray):
+    """Unfolding maps across face edges, from the icosahedron's topology.
+
+    For face ``f`` and its edge ``k`` (from vertex k to vertex k+1), returns
+    the adjacent face ``g`` and the rigid motion ``p -> R @ p + t`` taking
+    ``f``'s face frame to ``g``'s, fixed by the two shared vertices.
+    """
+    nf = face_vertices.shape[0]
+    adjacent = np.empty((nf, 3), dtype=np.intp)
+    rot = np.empty((nf, 3, 2, 2))
+    off = np.empty((nf, 3, 2))
+    for f in range(nf):
+        for k in range(3):
+            a, b = face_vertices[f, k], face_vertices[f, (k + 1) % 3]
+            g = next(
+                h for h in range(nf) if h != f and a in face_vertices[h] and b in face_vertices[h]
+            )
+            ia = int(np.flatnonzero(face_vertices[g] == a)[0])
+            ib = int(np.flatnonzero(face_vertices[g] == b)[0])
+            pa, pb = FACE_VERTICES[k], FACE_VERTICES[(k + 1) % 3]
+            qa, qb = FACE_VERTICES[ia], FACE_VERTICES[ib]
+            ang = math.atan2(*(qb - qa)[::-1]) - math.atan2(*(pb - pa)[::-1])
+            r = np.array([[math.cos(ang), -math.sin(ang)], [math.sin(ang), math.cos(ang)]])
+            adjacent[f, k], rot[f, k], off[f, k] = g, r, qa - r @ pa
+    return adjacent, rot, off
+
+
+#: Outward unit normals of the face edges: edge k (vertex k to k+1) faces azimuth 60 + 120 k.
+EDGE_NORMALS = np.array(
+    [[math.sin(a), math.cos(a)] for a in (math.pi / 3, math.pi, 5 * math.pi / 3)]
+)
+
+
+def neighbour_points(face: np.ndarray, pts: np.ndarray, face_vertices: np.ndarray):
+    """Move face-frame points that fell off their face onto the adjacent face.
+
+    ``pts`` (N, 2) are mirror images of cell centres; a point beyond face
+    edge k is carried by the unfolding map to the face across that edge.
+    Returns the new faces and points.
+    """
+    adjacent, rot, off = _transforms(face_vertices.astype(np.int64).tobytes(), face_vertices.shape)
+    beyond = pts @ EDGE_NORMALS.T - FACE_INRADIUS  # (N, 3): > 0 outside edge k
+    k = np.argmax(beyond, axis=1)
+    out = beyond[np.arange(len(k)), k] > 0
+    face = face.copy()
+    pts = pts.copy()
+    if out.any():
+        f, kk, p = face[out], k[out], pts[out]
+        r, t = rot[f, kk], off[f, kk]
+        pts[out] = np.einsum("nij,nj->ni", r, p) + t
+        face[out] = adjacent[f, kk]
+    return face, pts
+
+
+_TRANSFORM_CACHE: dict = {}
+
+
+def _transforms(key: bytes, shape):
+    if key not in _TRANSFORM_CACHE:
+        _TRANSFORM_CACHE[key] = _face_edge_transforms(np.frombuffer(key, dtype=np.int64).reshape(shape))
+    return _TRANSFORM_CACHE[key]
+
+
+def face_adjacency(face_vertices: np.ndarray) -> np.ndarray:
+    """(20, 3) faces across edges 0, 1, 2 of each face."""
+    return _transforms(face_vertices.astype(np.int64).tobytes(), face_vertices.shape)[0]

@@ -25,7 +25,7 @@ from dggs.errors import InvalidCellError, LevelError
 
 __all__ = ["MAX_LEVEL", "FACE_LETTERS", "encode", "decode", "Decoded", "valid_mask", "as_id_array", "check_level"]
 
-#: Deepest level: 40 (cells of about 0.9 mm^2 on the Earth).  Point location
+#: Deepest level: 40 (cells of about 1 mm^2 on the Earth).  Point location
 #: and cell corners stay consistent to about 1e-6 of a cell's size there.
 MAX_LEVEL = 40
 FACE_LETTERS = "ABCDEFGHIJKLMNOPQRST"

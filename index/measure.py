@@ -1,0 +1,91 @@
+"""Cell areas and the level table: every cell at a level has the same area."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dggs.errors import DggsValueError
+
+from . import _geo
+from .cellid import MAX_LEVEL, as_id_array, check_level, decode
+
+__all__ = ["cell_area", "level_table"]
+
+_UNITS = {"m^2": 1.0, "km^2": 1e-6}
+
+
+def _num_cells(level):
+    return np.where(level == 0, 20.0, 120.0 * 3.0 ** (np.asarray(level, dtype=float) - 1))
+
+
+def cell_area(cell_or_level, unit: str = "m^2"):
+    """Area of a cell, or of every cell at a level, on the WGS84 ellipsoid.
+
+    Exactly the ellipsoid's area divided by the number of cells at the level:
+    the planar cells are congruent and the projection is equal-area on the
+    authalic sphere, which has the ellipsoid's area.
+
+    Parameters
+    ----------
+    cell_or_level : str, int, or array_like of them
+        Cell id(s) or level(s).
+    unit : {"m^2", "km^2", "rads^2"}
+        Square metres, square kilometres, or steradians (unit sphere).
+
+    Examples
+    --------
+    >>> round(cell_area(0, "km^2"))
+    25503281
+    >>> cell_area("C401") == cell_area(3)
+    True
+    """
+    if unit not in (*_UNITS, "rads^2"):
+        raise DggsValueError(f"unit {unit!r} is not one of m^2, km^2, rads^2")
+    scalar = np.ndim(cell_or_level) == 0
+    if isinstance(cell_or_level, str) or (
+        not scalar and np.asarray(cell_or_level).dtype.kind in "UO"
+    ):
+        ids, scalar = as_id_array(cell_or_level)
+        level = decode(ids).level
+    else:
+        level = np.array([check_level(int(v) if isinstance(v, (np.integer,)) else v) for v in np.atleast_1d(cell_or_level).ravel()])
+    total = 4 * math.pi if unit == "rads^2" else _geo.ELLIPSOID.area * _UNITS[unit]
+    area = total / _num_cells(level)
+    return float(area[0]) if scalar else area
+
+
+def level_table(max_level: int = MAX_LEVEL) -> list[dict]:
+    """Cell count, area and edge lengths at each level (for docs and the CLI).
+
+    Edge lengths are those of the planar 30-60-90 cell of the same area
+    (short leg, long leg, hypotenuse), a close guide to the curved edges.
+
+    Examples
+    --------
+    >>> row = level_table(10)[10]
+    >>> row["cells"], round(row["area_km2"], 1)
+    (2361960, 216.0)
+    """
+    rows = []
+    for level in range(check_level(max_level) + 1):
+        area = cell_area(level)
+        if level == 0:
+            edge = math.sqrt(4 * area / math.sqrt(3))
+            legs = (edge, edge, edge)
+        else:
+            short = math.sqrt(2 * area / math.sqrt(3))
+            legs = (short, math.sqrt(3) * short, 2 * short)
+        rows.append(
+            {
+                "level": level,
+                "cells": 20 if level == 0 else 120 * 3 ** (level - 1),
+                "area_m2": area,
+                "area_km2": area * 1e-6,
+                "short_edge_m": legs[0],
+                "long_edge_m": legs[1],
+                "hypotenuse_m": legs[2],
+            }
+        )
+    return rows

@@ -1,0 +1,315 @@
+"""Snyder ISEA forward/inverse against independent references (PROJ, Snyder's constants)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pyproj
+import pytest
+from hypothesis import example, given
+from hypothesis import strategies as st
+
+from dggs import snyder
+from dggs.authalic import WGS84, sphere
+from dggs.errors import CoordinateError, DggsValueError
+from dggs.icosahedron import DOWN_FACES, ISEA, POLE, latlng_to_xyz
+
+from .strategies import latlngs, special_points
+
+FIXTURES = Path(__file__).parent / "reference" / "fixtures"
+PROJ_VECTORS = json.loads((FIXTURES / "proj_isea_builtins.json").read_text())
+CONSTANTS = json.loads((FIXTURES / "snyder_constants.json").read_text())
+
+# PROJ's net layout (plane mode), derived from the icosahedron: faces 0-4 and
+# 5-9 in the top two rows with centres one planar edge apart, faces 10-19 in
+# the bottom rows shifted by half an edge; rows sit at +-5/4 and +-1/4 of the
+# circumradius; "down" faces are turned 180 degrees.
+RC = snyder.FACE_CIRCUMRADIUS
+HALF_EDGE = RC * math.sqrt(3) / 2
+NET_PERIOD = 5 * snyder.FACE_EDGE  # the net wraps around horizontally
+
+
+def net_offset(face):
+    face = np.asarray(face)
+    cx = 2 * HALF_EDGE * ((face % 5) - 2) + np.where(face >= 10, HALF_EDGE, 0.0)
+    cy = np.array([5, 1, -1, -5])[face // 5] * RC / 4
+    turn = np.where(DOWN_FACES[face], -1.0, 1.0)
+    return cx, cy, turn
+
+
+def to_net(face, x, y):
+    cx, cy, turn = net_offset(face)
+    return cx + turn * x, cy + turn * y
+
+
+def from_net(face, nx, ny):
+    cx, cy, turn = net_offset(face)
+    dx = (nx - cx + NET_PERIOD / 2) % NET_PERIOD - NET_PERIOD / 2  # the net wraps
+    return turn * dx, turn * (ny - cy)
+
+
+def random_points(n, seed):
+    rng = np.random.default_rng(seed)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, n)))
+    lng = rng.uniform(-180, 180, n)
+    return lat, lng
+
+
+def angle_between(lat1, lng1, lat2, lng2):
+    a = latlng_to_xyz(np.radians(lat1), np.radians(lng1))
+    b = latlng_to_xyz(np.radians(lat2), np.radians(lng2))
+    return 2 * np.arcsin(np.clip(np.linalg.norm(a - b, axis=-1) / 2, 0, 1))
+
+
+PROJ_UNIT = pyproj.Transformer.from_pipeline("+proj=isea +R=1")
+
+
+# --- Snyder's published constants --------------------------------------------
+def test_constants_match_snyder_table():
+    assert math.degrees(snyder.G_ARC) == pytest.approx(CONSTANTS["g_deg"], abs=1e-8)
+    assert math.degrees(snyder.G) == CONSTANTS["G_deg"]
+    assert math.degrees(snyder.THETA) == pytest.approx(CONSTANTS["theta_deg"], abs=1e-12)
+    assert snyder.R_PRIME == pytest.approx(CONSTANTS["R_prime_over_R"], abs=1e-10)
+
+
+def test_face_area_is_a_twentieth_of_the_sphere():
+    area = 3 * math.sqrt(3) / 4 * snyder.FACE_CIRCUMRADIUS**2
+    assert area == pytest.approx(4 * math.pi * CONSTANTS["thesis_face_area_fraction_of_sphere"], rel=1e-15)
+
+
+# --- PROJ's own test vectors ---------------------------------------------------
+@pytest.mark.parametrize("case", PROJ_VECTORS["isea"], ids=lambda c: f"{c['lon']},{c['lat']}")
+def test_proj_builtins_forward_isea(case):
+    r = PROJ_VECTORS["radius"]
+    face, x, y = snyder.forward(case["lat"], case["lon"])
+    nx, ny = to_net(face, x, y)
+    # PROJ's forward uses vertex latitude 58.28252559 (2.5e-11 rad off): 0.2 mm tolerance
+    dx = (nx * r - case["x"] + NET_PERIOD * r / 2) % (NET_PERIOD * r) - NET_PERIOD * r / 2
+    assert abs(dx) < 2e-4
+    assert ny * r == pytest.approx(case["y"], abs=2e-4)
+
+
+@pytest.mark.parametrize("case", PROJ_VECTORS["pole"], ids=lambda c: f"{c['lon']},{c['lat']}")
+def test_proj_builtins_forward_pole(case):
+    r = PROJ_VECTORS["radius"]
+    face, x, y = snyder.forward(case["lat"], case["lon"], orientation=POLE)
+    nx, ny = to_net(face, x, y)
+    dx = (nx * r - case["x"] + NET_PERIOD * r / 2) % (NET_PERIOD * r) - NET_PERIOD * r / 2
+    assert abs(dx) < 2e-4
+    assert ny * r == pytest.approx(case["y"], abs=2e-4)
+
+
+@pytest.mark.parametrize("case", PROJ_VECTORS["isea"], ids=lambda c: f"{c['lon']},{c['lat']}")
+def test_proj_builtins_inverse(case):
+    r = PROJ_VECTORS["radius"]
+    face, _, _ = snyder.forward(case["lat"], case["lon"])
+    x, y = from_net(face, case["x"] / r, case["y"] / r)
+    lat, lng = snyder.inverse(face, x, y)
+    assert angle_between(lat, lng, case["lat"], case["lon"]) * r < 2e-4
+
+
+# --- PROJ on 200,000 random points ---------------------------------------------
+def near_face_edge(lat, lng, slack=1e-5):
+    """Points within about ``slack`` rad of a face edge.
+
+    PROJ gives a point within 5e-6 rad of an edge to the lower-numbered face
+    and extrapolates that face's formulas past its edge; we give it to the
+    face that contains it.  Both are right; the net positions differ.
+    """
+    xyz = latlng_to_xyz(np.radians(lat), np.radians(lng))
+    dots = np.sort(xyz @ ISEA.geometry.centres.T, axis=1)
+    return dots[:, -1] - dots[:, -2] < slack
+
+
+def test_forward_matches_proj_on_random_points():
+    lat, lng = random_points(200_000, seed=11)
+    px, py = PROJ_UNIT.transform(lng, lat)
+    face, x, y = snyder.forward(lat, lng)
+    nx, ny = to_net(face, x, y)
+    dx = (nx - px + NET_PERIOD / 2) % NET_PERIOD - NET_PERIOD / 2  # face 14 wraps in PROJ's net
+    err = np.hypot(dx, ny - py)
+    assert np.isfinite(px).all()
+    near = near_face_edge(lat, lng)
+    assert near.mean() < 1e-4
+    assert err[~near].max() <= 1e-9
+
+
+def test_inverse_matches_proj_on_random_points():
+    lat, lng = random_points(200_000, seed=12)
+    face, x, y = snyder.forward(lat, lng)
+    nx, ny = to_net(face, x, y)
+    plng, plat = PROJ_UNIT.transform(nx, ny, direction="INVERSE")
+    ok = np.isfinite(plat) & ~near_face_edge(lat, lng)  # PROJ 9.5 returns inf for a handful
+    assert ok.mean() > 0.9999
+    lat2, lng2 = snyder.inverse(face, x, y)
+    assert angle_between(lat2[ok], lng2[ok], plat[ok], plng[ok]).max() <= 1e-9
+
+
+# --- round trips -----------------------------------------------------------------
+SPECIAL = special_points()
+
+
+@given(latlngs())
+@example((90.0, 0.0))
+@example((-90.0, 123.0))
+@example((0.0, 180.0))
+@example((0.0, -180.0))
+@example((58.282525588539, 11.25))
+@example((26.565051177078, -168.75))
+def test_round_trip_closed_form(p):
+    lat, lng = p
+    face, x, y = snyder.forward(lat, lng)
+    lat2, lng2 = snyder.inverse(face, x, y)
+    assert angle_between(lat, lng, lat2, lng2) <= 1e-12
+
+
+def test_round_trip_at_vertices_edges_and_poles():
+    lat = np.array([p[0] for p in SPECIAL])
+    lng = np.array([p[1] for p in SPECIAL])
+    face, x, y = snyder.forward(lat, lng)
+    lat2, lng2 = snyder.inverse(face, x, y)
+    assert angle_between(lat, lng, lat2, lng2).max() <= 1e-12
+
+
+def test_round_trip_on_a_million_points_every_method():
+    lat, lng = random_points(200_000, seed=13)
+    face, x, y = snyder.forward(lat, lng)
+    # the polynomial alone is approximate: cubic about 1.7 km at worst, degree 7 about 20 m
+    cases = (("closed", 3, 1e-12), ("newton", 3, 1e-12), ("newton-poly", 3, 1e-12), ("poly", 3, 5e-4), ("poly", 7, 5e-6))
+    for method, degree, tol in cases:
+        lat2, lng2 = snyder.inverse(face, x, y, method=method, degree=degree)
+        assert angle_between(lat, lng, lat2, lng2).max() <= tol, method
+
+
+def test_newton_iterations_reported_and_fewer_from_polynomial():
+    lat, lng = random_points(50_000, seed=14)
+    face, x, y = snyder.forward(lat, lng)
+    *_, it_plain = snyder.inverse(face, x, y, method="newton", return_iterations=True)
+    *_, it_poly = snyder.inverse(face, x, y, method="newton-poly", degree=3, return_iterations=True)
+    *_, it_poly7 = snyder.inverse(face, x, y, method="newton-poly", degree=7, return_iterations=True)
+    assert 2 <= it_plain.mean() <= 5
+    assert it_poly.mean() < it_plain.mean()
+    assert it_poly7.mean() <= it_poly.mean()
+    assert it_plain.max() <= 10
+
+
+def test_great_circle_edges_map_to_straight_face_edges():
+    """Points on an icosahedron edge land on the planar face edge, evenly in area."""
+    geo = ISEA.geometry
+    t = np.linspace(0.0, 1.0, 41)
+    for f in range(20):
+        for k in range(3):
+            a = geo.vertices[geo.face_vertices[f, k]]
+            b = geo.vertices[geo.face_vertices[f, (k + 1) % 3]]
+            # slerp along the great circle from a to b
+            omega = math.acos(float(a @ b))
+            pts = (np.sin((1 - t) * omega)[:, None] * a + np.sin(t * omega)[:, None] * b) / math.sin(omega)
+            face, x, y = snyder.forward_xyz(pts)
+            # the point may be given to the neighbour face; move into face f's frame via the inverse
+            xyz_back, _ = snyder.inverse_xyz(face, x, y)
+            assert np.abs(xyz_back - pts).max() < 1e-14
+            # nudged 1e-13 rad into face f, the points lie on f's planar edge
+            inside = pts + 1e-13 * geo.centres[f]
+            inside /= np.linalg.norm(inside, axis=1)[:, None]
+            face, x, y = snyder.forward_xyz(inside)
+            on_f = face == f
+            assert on_f.mean() > 0.9
+            normal = np.array([math.sin(math.pi / 3 + 2 * math.pi * k / 3), math.cos(math.pi / 3 + 2 * math.pi * k / 3)])
+            dist = x[on_f] * normal[0] + y[on_f] * normal[1]
+            assert np.abs(dist - snyder.FACE_INRADIUS).max() < 1e-12
+
+
+# --- equal area -----------------------------------------------------------------
+def test_jacobian_is_constant():
+    """|det J| of the forward map equals the sphere's area element (central differences).
+
+    The map is smooth inside each of a face's six 30-60-90 triangles and only
+    continuous across their seams, so points whose stencil straddles a seam
+    are left out.
+    """
+    from dggs.split26 import level1_digit
+
+    lat, lng = random_points(20_000, seed=16)
+    lat = np.clip(lat, -85.0, 85.0)
+    h = 1e-4
+    f, x, y = snyder.forward(lat, lng)
+    tri = level1_digit(x, y)
+    pts = {}
+    for key, (dla, dlo) in {"n": (h, 0), "s": (-h, 0), "e": (0, h), "w": (0, -h)}.items():
+        pts[key] = snyder.forward(lat + dla, lng + dlo)
+    same = np.all([(pts[k][0] == f) & (level1_digit(pts[k][1], pts[k][2]) == tri) for k in pts], axis=0)
+    assert same.mean() > 0.99
+    dxdlat = (pts["n"][1] - pts["s"][1]) / (2 * h)
+    dydlat = (pts["n"][2] - pts["s"][2]) / (2 * h)
+    dxdlng = (pts["e"][1] - pts["w"][1]) / (2 * h)
+    dydlng = (pts["e"][2] - pts["w"][2]) / (2 * h)
+    jac = np.abs(dxdlat * dydlng - dydlat * dxdlng) / np.radians(1.0) ** 2
+    ratio = jac / np.cos(np.radians(lat))
+    assert np.abs(ratio[same] - 1).max() < 1e-8
+
+
+# --- bad input --------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "lat,lng,match",
+    [
+        (float("nan"), 0.0, "latitude nan at index 0"),
+        (0.0, float("inf"), "longitude inf at index 0"),
+        ([0.0, 91.0], [0.0, 0.0], "latitude 91.0 at index 1"),
+        ([0.0, 1.0], [0.0, 1.0, 2.0], "shape"),
+    ],
+)
+def test_forward_bad_input(lat, lng, match):
+    with pytest.raises(CoordinateError, match=match):
+        snyder.forward(lat, lng)
+
+
+def test_inverse_bad_input():
+    with pytest.raises(CoordinateError, match="face 20 at index 0"):
+        snyder.inverse(20, 0.0, 0.0)
+    with pytest.raises(CoordinateError, match="off face 3"):
+        snyder.inverse(3, 0.0, 0.9)
+    with pytest.raises(CoordinateError, match="x nan"):
+        snyder.inverse(3, float("nan"), 0.0)
+    with pytest.raises(DggsValueError, match="method 'fast'"):
+        snyder.inverse(3, 0.0, 0.0, method="fast")
+
+
+def test_longitudes_wrap():
+    a = snyder.forward(10.0, 190.0)
+    b = snyder.forward(10.0, -170.0)
+    assert a[0] == b[0]
+    assert a[1] == pytest.approx(b[1], abs=1e-14) and a[2] == pytest.approx(b[2], abs=1e-14)
+
+
+def test_scalar_and_array_shapes():
+    f, x, y = snyder.forward(10.0, 20.0)
+    assert isinstance(f, int) and isinstance(x, float)
+    f, x, y = snyder.forward(np.zeros((2, 3)), np.ones((2, 3)))
+    assert f.shape == x.shape == y.shape == (2, 3)
+
+
+# --- ellipsoid ----------------------------------------------------------------------
+def test_projection_on_wgs84_round_trip_and_matches_proj_on_authalic_latitudes():
+    lat, lng = random_points(50_000, seed=17)
+    proj = snyder.Projection()
+    face, x, y = proj.forward(lat, lng)
+    lat2, lng2 = proj.inverse(face, x, y)
+    assert angle_between(lat, lng, lat2, lng2).max() < 1e-12
+    # PROJ 9.5 isea is spherical: feed it authalic latitudes and the authalic radius
+    t = pyproj.Transformer.from_pipeline(f"+proj=isea +R={WGS84.authalic_radius!r}")
+    px, py = t.transform(lng, WGS84.geodetic_to_authalic_deg(lat))
+    nx, ny = to_net(face, x / proj.radius, y / proj.radius)
+    period = NET_PERIOD * proj.radius
+    dx = (nx * proj.radius - px + period / 2) % period - period / 2
+    far = ~near_face_edge(WGS84.geodetic_to_authalic_deg(lat), lng)
+    assert np.hypot(dx, ny * proj.radius - py)[far].max() < 1e-3  # metres
+
+
+def test_spherical_mode_scales_by_radius():
+    p = snyder.Projection(sphere(1000.0))
+    f, x, y = p.forward(12.0, 34.0)
+    f1, x1, y1 = snyder.forward(12.0, 34.0)
+    assert f == f1 and x == pytest.approx(1000 * x1) and y == pytest.approx(1000 * y1)
