@@ -64,11 +64,6 @@ def _cmap() -> Any:
     return LinearSegmentedColormap.from_list("thesis", ["#6a1b9a", "#ffffff", "#1f4fbf"])
 
 
-def _polygons(mesh: Mesh) -> tuple[list[np.ndarray], np.ndarray]:
-    polys = [mesh.vertices[b] for b in mesh.faces]
-    return polys, np.concatenate([np.arange(len(b)) for b in mesh.faces])
-
-
 def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20.0, 30.0)) -> Any:
     """Draw faces on an orthographic globe coloured by signed error.
 
@@ -89,6 +84,7 @@ def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20
         The face collection (for a colour bar).
     """
     from matplotlib.collections import PolyCollection
+    from matplotlib.patches import Circle
 
     lat, lng = np.radians(view)
     centre = np.array([np.cos(lat) * np.cos(lng), np.cos(lat) * np.sin(lng), np.sin(lat)])
@@ -113,7 +109,7 @@ def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20
         linewidths=0.2,
     )
     ax.add_collection(coll)
-    ax.add_patch(__import__("matplotlib.patches", fromlist=["Circle"]).Circle((0, 0), 1.0, fill=False, lw=0.6))
+    ax.add_patch(Circle((0, 0), 1.0, fill=False, lw=0.6))
     ax.set_xlim(-1.05, 1.05)
     ax.set_ylim(-1.05, 1.05)
     ax.set_aspect("equal")
