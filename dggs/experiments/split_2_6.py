@@ -86,7 +86,7 @@ def equal_area_fractions(
     >>> f = m.faces[0][:1]
     >>> s, t = equal_area_fractions(*(m.vertices[f[:, i]] for i in range(3)), 1.0)
     >>> round(float(s[0]), 3), round(float(t[0]), 3)
-    (0.5, 0.335)
+    (0.501, 0.345)
     """
     s = np.full(len(a), 0.5)
     t = np.full(len(a), 1.0 / 3.0)
