@@ -204,7 +204,14 @@ def face_of(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
 
     The faces are the Voronoi cells of their centres, so the nearest centre is
     the containing face.  A point on an edge or a vertex is equally near two
-    or five centres; it goes to the lowest-numbered of them (``argmax`` returns
-    the first maximum), which is deterministic.
+    or five centres; it goes to the lowest-numbered of them.  "Equally" allows
+    for rounding: centres within :data:`TIE` of the nearest (about 6 nm on the
+    Earth) count as tied.
     """
-    return np.argmax(xyz @ geometry(orientation).centres.T, axis=1)
+    dots = xyz @ geometry(orientation).centres.T
+    best = dots.max(axis=1, keepdims=True)
+    return np.argmax(dots >= best - TIE, axis=1)
+
+
+#: Dot-product slack within which two face centres count as equally near.
+TIE = 1e-15

@@ -235,26 +235,25 @@ def compact_cells(cells) -> np.ndarray:
     if ids.size == 0:
         return np.array([], dtype="<U1")
     dec = decode(ids)
-    by_level: dict[int, set] = {}
-    for lv in np.unique(dec.level):
-        by_level[int(lv)] = set(np.unique(ids[dec.level == lv]).tolist())
-    for lv in sorted(by_level, reverse=True):
-        if lv == 0:
-            break
-        group = np.array(sorted(by_level[lv]))
+    top = int(dec.level.max())
+    by_level = {lv: np.unique(ids[dec.level == lv]).astype(f"<U{lv + 1}") for lv in range(top + 1)}
+    for lv in range(top, 0, -1):
+        group = by_level[lv]
         if group.size == 0:
             continue
         parents = group.astype(f"<U{lv}")
         uniq, counts = np.unique(parents, return_counts=True)
         full = uniq[counts == (6 if lv == 1 else 3)]
         if full.size:
-            full_set = set(full.tolist())
-            by_level[lv] = {c for c in by_level[lv] if c[:lv] not in full_set}
-            by_level.setdefault(lv - 1, set()).update(full_set)
-    # drop cells covered by a coarser cell
-    present = set().union(*by_level.values())
-    out = [c for c in present if not any(c[:k] in present for k in range(1, len(c)))]
-    return np.array(sorted(out)) if out else np.array([], dtype="<U1")
+            by_level[lv] = group[~np.isin(parents, full)]
+            by_level[lv - 1] = np.union1d(by_level[lv - 1], full)
+    # drop cells already covered by a coarser cell of the input
+    for lv in range(1, top + 1):
+        for coarse in range(lv):
+            if by_level[lv].size and by_level[coarse].size:
+                covered = np.isin(by_level[lv].astype(f"<U{coarse + 1}"), by_level[coarse])
+                by_level[lv] = by_level[lv][~covered]
+    return np.sort(np.concatenate([by_level[lv] for lv in range(top + 1)]))
 
 
 def uncompact_cells(cells, level: int) -> np.ndarray:

@@ -1,0 +1,122 @@
+"""Parents, children, tiling, compaction: exhaustive at levels 0-4, random to MAX_LEVEL."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+import dggs
+from dggs.errors import LevelMismatchError
+from dggs.index import _geo
+from dggs.index.cellid import decode
+
+from .strategies import cells
+
+
+def all_cells(level):
+    return dggs.get_base_cells() if level == 0 else dggs.cell_to_children(dggs.get_base_cells(), level)
+
+
+def planar_area(tri):
+    a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
+    return 0.5 * ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+
+
+@pytest.mark.parametrize("level", range(0, 5))
+def test_cell_counts(level):
+    cells_ = all_cells(level)
+    expected = 20 if level == 0 else 120 * 3 ** (level - 1)  # design card: 120 * 3^(n-1)
+    assert len(cells_) == len(np.unique(cells_)) == expected == dggs.get_num_cells(level)
+
+
+@pytest.mark.parametrize("level", range(1, 5))
+def test_children_tile_the_parent_exhaustively(level):
+    parents = all_cells(level - 1)
+    kids = dggs.cell_to_children(parents)
+    n = 6 if level == 1 else 3
+    assert len(kids) == n * len(parents)
+    assert np.all(dggs.cell_to_parent(kids) == np.repeat(parents, n))
+    tri_p = _geo.corners(decode(parents))
+    tri_k = _geo.corners(decode(kids)).reshape(len(parents), n, 3, 2)
+    # areas add up, every child is congruent (same area) and lies inside its parent
+    area_p = planar_area(tri_p)
+    area_k = planar_area(tri_k.reshape(-1, 3, 2)).reshape(len(parents), n)
+    assert np.allclose(area_k.sum(axis=1), area_p, rtol=1e-12)
+    assert np.allclose(area_k, area_k.mean(), rtol=1e-12)
+    for j in range(3):
+        p, q = tri_p[:, j], tri_p[:, (j + 1) % 3]
+        edge = q - p
+        for corner in range(3):
+            v = tri_k[:, :, corner] - p[:, None]
+            cross = edge[:, None, 0] * v[..., 1] - edge[:, None, 1] * v[..., 0]
+            assert cross.min() > -1e-13
+
+
+@pytest.mark.parametrize("level", range(2, 5))
+def test_cells_are_30_60_90_triangles(level):
+    tri = _geo.corners(decode(all_cells(level)))
+    sides = np.sort(np.linalg.norm(tri - np.roll(tri, -1, axis=1), axis=2), axis=1)
+    assert np.allclose(sides[:, 1] / sides[:, 0], np.sqrt(3), rtol=1e-12)
+    assert np.allclose(sides[:, 2] / sides[:, 0], 2.0, rtol=1e-12)
+
+
+@given(cells(min_level=1))
+def test_parent_child_round_trip(cell):
+    parent = dggs.cell_to_parent(cell)
+    assert parent == cell[:-1]
+    assert cell in dggs.cell_to_children(parent)
+    assert dggs.cell_to_parent(cell, 0) == cell[0]
+
+
+@given(cells(max_level=dggs.MAX_LEVEL - 2))
+def test_grandchildren_and_center_child(cell):
+    level = dggs.get_level(cell)
+    kids = dggs.cell_to_children(cell, level + 2)
+    assert len(kids) == (18 if level == 0 else 9)
+    assert all(k.startswith(cell) for k in kids)
+    centre_kid = dggs.cell_to_center_child(cell, level + 2)
+    assert centre_kid in kids
+    # the centre child's planar triangle holds the parent's planar centroid (the
+    # centroid may sit exactly on a grandchild edge, so allow rounding)
+    centroid = _geo.corners(decode(np.array([cell]))).mean(axis=1)[0]
+    tri = _geo.corners(decode(np.array([centre_kid])))[0]
+    size = np.linalg.norm(tri[1] - tri[0])
+    for j in range(3):
+        p, q = tri[j], tri[(j + 1) % 3]
+        cross = (q[0] - p[0]) * (centroid[1] - p[1]) - (q[1] - p[1]) * (centroid[0] - p[0])
+        assert cross / size >= -1e-7 * size  # rounding: ~1e-16 absolute at any level
+
+
+def test_parent_errors():
+    with pytest.raises(LevelMismatchError, match="base cell 'C' has no parent"):
+        dggs.cell_to_parent("C")
+    with pytest.raises(LevelMismatchError, match="parent level 5 is finer"):
+        dggs.cell_to_parent("C401", 5)
+    with pytest.raises(LevelMismatchError, match="child level 2 is coarser"):
+        dggs.cell_to_children("C401", 2)
+
+
+@given(st.lists(cells(min_level=2, max_level=6), min_size=1, max_size=20))
+def test_compact_uncompact_round_trip(cell_list):
+    level = 7
+    full = dggs.uncompact_cells(cell_list, level)
+    compacted = dggs.compact_cells(full)
+    assert np.array_equal(dggs.uncompact_cells(compacted, level), full)
+    assert len(compacted) <= len(full)
+    # compaction is minimal: no complete set of siblings remains
+    for c in compacted:
+        if len(c) > 1:
+            sibs = dggs.cell_to_children(c[:-1])
+            assert not set(sibs.tolist()) <= set(compacted.tolist())
+
+
+def test_compact_all_children_of_a_face_gives_the_face():
+    assert dggs.compact_cells(dggs.cell_to_children("H", 3)).tolist() == ["H"]
+    assert dggs.compact_cells(all_cells(2)).tolist() == all_cells(0).tolist()
+
+
+def test_uncompact_rejects_finer_cells():
+    with pytest.raises(LevelMismatchError):
+        dggs.uncompact_cells(["C4011"], 3)
