@@ -30,7 +30,9 @@ def _neighbours(ids: np.ndarray) -> np.ndarray:
     base = dec.level == 0
     if base.any():
         adj = face_adjacency(geo.face_vertices)
-        out[base] = _LETTERS[adj[dec.face[base]]]
+        # base-cell corners run V2, V1, V0 (counter-clockwise): corner edges 0, 1, 2
+        # are face edges 1, 0, 2
+        out[base] = _LETTERS[adj[dec.face[base]][:, [1, 0, 2]]]
     fine = np.flatnonzero(~base)
     if fine.size == 0:
         return out

@@ -1,0 +1,106 @@
+"""Edge neighbours, the mesh as a closed manifold, disks, rings and distances."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+import pytest
+from hypothesis import given
+
+import dggs
+from dggs.errors import DggsValueError, InvalidCellError, LevelMismatchError
+
+from .strategies import cells
+
+
+def all_cells(level):
+    return dggs.get_base_cells() if level == 0 else dggs.cell_to_children(dggs.get_base_cells(), level)
+
+
+def corner_keys(ids):
+    """Corners of cells as rounded unit vectors on the sphere (independent of neighbour code)."""
+    b = dggs.cell_to_boundary(ids)  # (N, 3, 2) geodetic degrees
+    lat, lng = np.radians(b[..., 0]), np.radians(b[..., 1])
+    xyz = np.stack([np.cos(lat) * np.cos(lng), np.cos(lat) * np.sin(lng), np.sin(lat)], axis=-1)
+    return np.round(xyz, 9) + 0.0
+
+
+@pytest.mark.parametrize("level", range(0, 5))
+def test_mesh_is_a_closed_manifold(level):
+    """Every edge (pair of shared corners on the sphere) belongs to exactly two cells."""
+    ids = all_cells(level)
+    keys = corner_keys(ids)
+    edges = Counter()
+    for tri in keys:
+        pts = [tuple(p) for p in tri]
+        for i in range(3):
+            edges[frozenset((pts[i], pts[(i + 1) % 3]))] += 1
+    assert set(edges.values()) == {2}
+    # Euler characteristic of the sphere: V - E + F = 2
+    verts = {tuple(p) for tri in keys for p in tri}
+    assert len(verts) - len(edges) + len(ids) == 2
+
+
+@pytest.mark.parametrize("level", range(0, 5))
+def test_neighbours_exhaustive(level):
+    ids = all_cells(level)
+    nb = dggs.edge_neighbors(ids)
+    index = {c: i for i, c in enumerate(ids.tolist())}
+    keys = corner_keys(ids)
+    for i, c in enumerate(ids.tolist()):
+        row = nb[i].tolist()
+        assert len(set(row)) == 3 and c not in row
+        for j, other in enumerate(row):
+            assert c in nb[index[other]].tolist()  # symmetric
+            # and really across edge j: the two cells share exactly the corners j and j+1
+            shared = {tuple(p) for p in keys[i]} & {tuple(p) for p in keys[index[other]]}
+            assert shared == {tuple(keys[i][j]), tuple(keys[i][(j + 1) % 3])}
+
+
+@given(cells(min_level=1))
+def test_neighbours_random_cells_any_level(cell):
+    nb = dggs.edge_neighbors(cell)
+    assert len(set(nb.tolist())) == 3 and cell not in nb
+    level = dggs.get_level(cell)
+    assert all(dggs.get_level(n) == level for n in nb)
+    for n in nb:
+        assert cell in dggs.edge_neighbors(n)
+        assert dggs.are_neighbor_cells(cell, n)
+
+
+def test_neighbours_across_face_edges_and_at_poles():
+    for lat, lng in [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (58.282525588539, 11.25)]:
+        for level in (1, 5, 12, dggs.MAX_LEVEL):
+            c = dggs.latlng_to_cell(lat, lng, level)
+            for n in dggs.edge_neighbors(c):
+                assert c in dggs.edge_neighbors(n)
+
+
+@given(cells(min_level=1, max_level=14))
+def test_disk_sizes_and_rings(cell):
+    d1, d2 = dggs.grid_disk(cell, 1), dggs.grid_disk(cell, 2)
+    assert len(d1) == 4 and cell in d1
+    assert set(d1.tolist()) <= set(d2.tolist())
+    ring2 = dggs.grid_ring(cell, 2)
+    assert set(ring2.tolist()) == set(d2.tolist()) - set(d1.tolist())
+    for c in ring2:
+        assert dggs.grid_distance(cell, c) == 2
+
+
+def test_disk_sizes_in_a_face_interior():
+    # 30-60-90 tiling: 3 neighbours; at distance 2 the two neighbours meeting at the
+    # cell's right-angle corner (4 cells meet there) share their other neighbour: 6 - 1 = 5
+    c = dggs.latlng_to_cell(45.0, -100.0, 12)
+    sizes = [len(dggs.grid_disk(c, k)) for k in range(5)]
+    assert sizes[:3] == [1, 4, 9]
+    assert all(b > a for a, b in zip(sizes, sizes[1:]))
+
+
+def test_bad_input():
+    with pytest.raises(InvalidCellError, match="'Z1'"):
+        dggs.edge_neighbors("Z1")
+    with pytest.raises(DggsValueError, match="k -1"):
+        dggs.grid_disk("C401", -1)
+    with pytest.raises(LevelMismatchError):
+        dggs.grid_distance("C401", "C40")

@@ -1,0 +1,140 @@
+"""Point to cell, centres and boundaries: point-in-cell at every level, determinism."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import example, given
+from hypothesis import strategies as st
+
+import dggs
+from dggs.errors import CoordinateError
+from dggs.authalic import WGS84
+
+from .strategies import cells, latlngs, levels, special_points
+
+SPECIAL = special_points()
+
+
+def to_xyz(lat, lng):
+    """Geodetic degrees -> unit vectors on the authalic sphere."""
+    beta = WGS84.geodetic_to_authalic(np.radians(lat))
+    lng = np.radians(lng)
+    return np.stack([np.cos(beta) * np.cos(lng), np.cos(beta) * np.sin(lng), np.sin(beta)], axis=-1)
+
+
+def inside_spherical_ring(ring_latlng, lat, lng, slack):
+    """Point inside a CCW ring of points, edges taken as great-circle arcs (on the authalic sphere)."""
+    ring = to_xyz(ring_latlng[:, 0], ring_latlng[:, 1])
+    p = to_xyz(np.array([lat]), np.array([lng]))[0]
+    nxt = np.roll(ring, -1, axis=0)
+    side = np.einsum("ij,j->i", np.cross(ring, nxt), p)
+    return side.min() >= -slack
+
+
+@given(latlngs(), levels())
+@example((90.0, 0.0), 5)
+@example((-90.0, 0.0), dggs.MAX_LEVEL)
+@example((0.0, 180.0), 17)
+@example((0.0, -180.0), 17)
+@example((58.282525588539, 11.25), 9)
+@example((58.282525588539, 11.25), dggs.MAX_LEVEL)
+def test_point_lies_in_its_cell(p, level):
+    lat, lng = p
+    cell = dggs.latlng_to_cell(lat, lng, level)
+    assert dggs.get_level(cell) == level
+    # the densified boundary (64 points per edge) contains the point; slack covers the
+    # chord-vs-curve gap between boundary points and rounding at deep levels
+    ring = np.array(dggs.cell_to_boundary(cell, densify=64))
+    size = np.linalg.norm(np.diff(to_xyz(ring[[0, 65], 0], ring[[0, 65], 1]), axis=0))
+    assert inside_spherical_ring(ring, lat, lng, slack=max(1e-3 * size**2, 1e-15) + 1e-6 * size * size)
+
+
+def test_special_points_every_level():
+    for lat, lng in SPECIAL:
+        for level in (0, 1, 2, 7, 20, dggs.MAX_LEVEL):
+            a = dggs.latlng_to_cell(lat, lng, level)
+            assert a == dggs.latlng_to_cell(lat, lng, level)  # deterministic
+            assert dggs.cell_to_parent(a, 0) == dggs.latlng_to_cell(lat, lng, 0)  # nested
+
+
+@given(cells())
+def test_centre_maps_back_to_its_cell(cell):
+    lat, lng = dggs.cell_to_latlng(cell)
+    assert dggs.latlng_to_cell(lat, lng, dggs.get_level(cell)) == cell
+
+
+@given(latlngs(), st.integers(1, dggs.MAX_LEVEL))
+def test_cells_nest_across_levels(p, level):
+    fine = dggs.latlng_to_cell(p[0], p[1], level)
+    assert dggs.latlng_to_cell(p[0], p[1], level - 1) == fine[:-1]
+
+
+def test_vectorized_equals_scalar_and_keeps_shape():
+    rng = np.random.default_rng(3)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, (50, 4))))
+    lng = rng.uniform(-180, 180, (50, 4))
+    arr = dggs.latlng_to_cell(lat, lng, 11)
+    assert arr.shape == (50, 4)
+    assert arr[7, 2] == dggs.latlng_to_cell(float(lat[7, 2]), float(lng[7, 2]), 11)
+    clat, clng = dggs.cell_to_latlng(arr.ravel())
+    assert np.array_equal(dggs.latlng_to_cell(clat, clng, 11), arr.ravel())
+
+
+def test_longitudes_wrap():
+    assert dggs.latlng_to_cell(10.0, 370.0, 12) == dggs.latlng_to_cell(10.0, 10.0, 12)
+    assert dggs.latlng_to_cell(10.0, -180.0, 12) == dggs.latlng_to_cell(10.0, 180.0, 12)
+
+
+@pytest.mark.parametrize(
+    "lat,lng,match",
+    [
+        (float("nan"), 0.0, "latitude nan at index 0"),
+        ([1.0, 2.0, 95.0], [0.0, 0.0, 0.0], "latitude 95.0 at index 2"),
+        (0.0, float("-inf"), "longitude -inf"),
+        ("north", 0.0, "must be numbers"),
+    ],
+)
+def test_bad_coordinates(lat, lng, match):
+    with pytest.raises(CoordinateError, match=match):
+        dggs.latlng_to_cell(lat, lng, 5)
+
+
+def test_boundary_is_counter_clockwise_from_outside():
+    rng = np.random.default_rng(4)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 500)))
+    lng = rng.uniform(-180, 180, 500)
+    for level in (0, 1, 3, 15):
+        b = dggs.cell_to_boundary(dggs.latlng_to_cell(lat, lng, level))
+        xyz = to_xyz(b[..., 0], b[..., 1])
+        det = np.einsum("ij,ij->i", np.cross(xyz[:, 0], xyz[:, 1]), xyz[:, 2])
+        assert np.all(det > 0)
+
+
+def test_polygon_antimeridian_and_poles():
+    from shapely.geometry import MultiPolygon
+
+    c = dggs.latlng_to_cell(0.0, 180.0, 6)
+    poly = dggs.cell_to_polygon(c)
+    lat, lng = dggs.cell_to_latlng(c)
+    assert poly.is_valid
+    b = np.array(dggs.cell_to_boundary(c))
+    if np.ptp(b[:, 1]) > 180:
+        assert isinstance(poly, MultiPolygon)
+    assert poly.bounds[0] >= -180 and poly.bounds[2] <= 180
+    for pole in (90.0, -90.0):
+        cell = dggs.latlng_to_cell(pole, 0.0, 4)
+        shape = dggs.cell_to_polygon(cell)
+        assert shape.is_valid and shape.bounds[1 if pole < 0 else 3] == pytest.approx(pole)
+
+
+def test_geojson():
+    fc = dggs.cells_to_geojson(["C401", "T2"], properties=[{"n": np.int64(3)}, {"n": 4}])
+    assert [f["properties"]["n"] for f in fc["features"]] == [3, 4]
+    ring = fc["features"][0]["geometry"]["coordinates"][0]
+    assert ring[0] == ring[-1]  # closed, lng/lat
+    import json
+
+    json.dumps(fc)
