@@ -31,6 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from dggs._parallel import run_chunks
 from dggs._validate import as_latlng
 from dggs.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
@@ -144,12 +145,25 @@ def forward(lat, lng, orientation: Orientation = ISEA):
     [0, 15]
     """
     lat_a, lng_a, scalar = as_latlng(lat, lng)
-    xyz = latlng_to_xyz(np.radians(lat_a), np.radians(lng_a))
-    face, x, y = forward_xyz(xyz, orientation)
+    face, x, y = _forward_rad(np.radians(lat_a), np.radians(lng_a), orientation)
     if scalar:
         return int(face[0]), float(x[0]), float(y[0])
     shape = np.shape(np.broadcast(np.asarray(lat), np.asarray(lng)))
     return face.reshape(shape), x.reshape(shape), y.reshape(shape)
+
+
+def _forward_rad(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
+    """Chunked, threaded forward of radian arrays (1-d)."""
+    n = lat.shape[0]
+    face = np.empty(n, dtype=np.intp)
+    x = np.empty(n)
+    y = np.empty(n)
+
+    def kernel(sl: slice) -> None:
+        face[sl], x[sl], y[sl] = forward_xyz(latlng_to_xyz(lat[sl], lng[sl]), orientation)
+
+    run_chunks(kernel, n)
+    return face, x, y
 
 
 # ----------------------------------------------------------------------------
@@ -366,10 +380,18 @@ def inverse(
         raise CoordinateError(
             f"point ({float(x_a[i])!r}, {float(y_a[i])!r}) at index {i} is off face {int(face_a[i])}"
         )
-    xyz, iterations = inverse_xyz(
-        face_a, x_a, y_a, orientation, method, degree=degree, tol=tol, max_iter=max_iter
-    )
-    lat, lng = (np.degrees(v) for v in xyz_to_latlng(xyz))
+    n = face_a.shape[0]
+    lat, lng = np.empty(n), np.empty(n)
+    iterations = np.zeros(n, dtype=np.int64)
+
+    def kernel(sl: slice) -> None:
+        xyz, iterations[sl] = inverse_xyz(
+            face_a[sl], x_a[sl], y_a[sl], orientation, method, degree=degree, tol=tol, max_iter=max_iter
+        )
+        la, lo = xyz_to_latlng(xyz)
+        lat[sl], lng[sl] = np.degrees(la), np.degrees(lo)
+
+    run_chunks(kernel, n)
     if scalar:
         out = (float(lat[0]), float(lng[0]))
         return (*out, int(iterations[0])) if return_iterations else out

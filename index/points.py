@@ -9,6 +9,7 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon, box, mapping
 
+from dggs._parallel import run_chunks
 from dggs._validate import as_latlng
 from dggs import snyder
 from dggs.split26 import locate
@@ -66,10 +67,13 @@ def latlng_to_cell(lat, lng, level: int):
     lat_a, lng_a, scalar = as_latlng(lat, lng)
     n = lat_a.shape[0]
     out = np.empty(n, dtype=f"<U{level + 1}")
-    for sl in _geo.chunks(n):
+
+    def kernel(sl: slice) -> None:
         xyz = _geo.geodetic_to_xyz(lat_a[sl], lng_a[sl])
         face, x, y = snyder.forward_xyz(xyz, _geo.ORIENTATION)
         out[sl] = encode(face, locate(x, y, level))
+
+    run_chunks(kernel, n)
     if scalar:
         return str(out[0])
     return out.reshape(np.broadcast(np.asarray(lat), np.asarray(lng)).shape)
