@@ -18,9 +18,9 @@ Examples
 --------
 >>> face, x, y = forward(0.0, 0.0)
 >>> int(face), round(float(x), 8), round(float(y), 8)
-(2, 0.0, -0.34773547)
+(2, -0.20898643, -0.34773547)
 >>> lat, lng = inverse(face, x, y)
->>> round(float(lat), 10) + 0.0, round(float(lng), 10) + 0.0
+>>> abs(round(float(lat), 10)), abs(round(float(lng), 10))
 (0.0, 0.0)
 """
 
@@ -142,7 +142,7 @@ def forward(lat, lng, orientation: Orientation = ISEA):
     --------
     >>> face, x, y = forward([90.0, -90.0], [0.0, 0.0])
     >>> face.tolist()
-    [0, 15]
+    [0, 16]
     """
     lat_a, lng_a, scalar = as_latlng(lat, lng)
     face, x, y = _forward_rad(np.radians(lat_a), np.radians(lng_a), orientation)
@@ -347,7 +347,7 @@ def inverse(
     --------
     >>> lat, lng = inverse(0, 0.0, 0.0)
     >>> round(float(lat), 6), round(float(lng), 6)
-    (69.094843, -144.0)
+    (69.094843, -78.75)
     """
     if method not in METHODS:
         raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
@@ -418,7 +418,7 @@ class Projection:
     >>> face, x, y = p.forward(0.0, 0.0)
     >>> int(face), round(float(y))
     (2, -2215425)
-    >>> [round(v, 9) for v in p.inverse(face, x, y)]
+    >>> [abs(round(v, 9)) for v in p.inverse(face, x, y)]
     [0.0, 0.0]
     """
 

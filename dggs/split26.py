@@ -27,7 +27,7 @@ Examples
 >>> import numpy as np
 >>> digits = locate(np.array([0.01]), np.array([0.2]), 3)
 >>> digits.tolist()
-[[0, 0, 2]]
+[[0, 1, 2]]
 """
 
 from __future__ import annotations

@@ -63,7 +63,7 @@ def edge_neighbors(cell) -> np.ndarray:
     Examples
     --------
     >>> edge_neighbors("C401").tolist()
-    ['C400', 'C402', 'C421']
+    ['C411', 'C402', 'C400']
     """
     ids, scalar = as_id_array(cell)
     out = _neighbours(ids)
@@ -113,7 +113,7 @@ def grid_disk(cell: str, k: int = 1) -> np.ndarray:
     Examples
     --------
     >>> len(grid_disk("C401", 1)), len(grid_disk("C401", 2))
-    (4, 10)
+    (4, 9)
     """
     k = _check_k(k)
     return np.sort(np.concatenate(list(_rings(cell, k))))
@@ -125,7 +125,7 @@ def grid_ring(cell: str, k: int = 1) -> np.ndarray:
     Examples
     --------
     >>> grid_ring("C401", 1).tolist()
-    ['C400', 'C402', 'C421']
+    ['C400', 'C402', 'C411']
     """
     k = _check_k(k)
     *_, last = _rings(cell, k)

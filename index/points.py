@@ -59,9 +59,9 @@ def latlng_to_cell(lat, lng, level: int):
     Examples
     --------
     >>> latlng_to_cell(51.05, -114.07, 9)
-    'D2120011222'
+    'F200021102'
     >>> latlng_to_cell([0.0, 90.0], [0.0, 0.0], 2).tolist()
-    ['C02', 'A10']
+    ['C32', 'A50']
     """
     level = check_level(level)
     lat_a, lng_a, scalar = as_latlng(lat, lng)
@@ -98,7 +98,7 @@ def cell_to_latlng(cell):
     --------
     >>> lat, lng = cell_to_latlng("C")
     >>> round(lat, 6), round(lng, 6)
-    (20.905157, 11.25)
+    (20.990853, 11.25)
     """
     ids, scalar = as_id_array(cell)
     dec = decode(ids)
