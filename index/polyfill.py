@@ -62,7 +62,7 @@ def polygon_to_cells(polygon, level: int) -> np.ndarray:
     --------
     >>> from shapely.geometry import box
     >>> cells = polygon_to_cells(box(-10, -10, 10, 10), 6)
-    >>> len(cells), cells[0]
+    >>> len(cells), str(cells[0])
     (276, 'C300002')
     """
     level = check_level(level)
