@@ -4,6 +4,10 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
+BENCH_VENV := .venv-bench
+BENCH_PY   := $(BENCH_VENV)/bin/python
+BENCH_STAMP := $(BENCH_VENV)/.installed
+
 .PHONY: demo test test-all bench clean
 
 $(STAMP): pyproject.toml
@@ -21,5 +25,15 @@ test: $(STAMP)
 test-all: $(STAMP)
 	$(PY) -m pytest -q -m ''
 
+# Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
+$(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
+	$(PYTHON) -m venv $(BENCH_VENV)
+	$(BENCH_PY) -m pip install --quiet --upgrade pip
+	$(BENCH_PY) -m pip install --quiet -e '.[test]' -r benchmarks/requirements.txt
+	touch $(BENCH_STAMP)
+
+bench: $(BENCH_STAMP)
+	$(BENCH_PY) benchmarks/run_all.py
+
 clean:
-	rm -rf $(VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png
+	rm -rf $(VENV) $(BENCH_VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png
