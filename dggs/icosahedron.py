@@ -151,6 +151,9 @@ class Geometry:
     face_vertices : (20, 3) int array
         The vertex ids of each face in face-frame order (vertex k at azimuth
         120 k degrees clockwise from +y).
+    frames : (20, 3, 3) array
+        Rows centre, north, east of each face: ``frames[f] @ p`` gives
+        ``(cos z, north, east)`` components of a point in face f's frame.
     """
 
     rotation: np.ndarray
@@ -159,6 +162,7 @@ class Geometry:
     easts: np.ndarray
     vertices: np.ndarray
     face_vertices: np.ndarray
+    frames: np.ndarray
 
 
 @lru_cache(maxsize=16)
@@ -194,9 +198,10 @@ def geometry(orientation: Orientation) -> Geometry:
         az = np.mod(np.arctan2(vertices[near] @ easts[i], vertices[near] @ norths[i]), 2 * math.pi)
         az[az > 2 * math.pi - 1e-9] = 0.0
         face_vertices[i] = near[np.argsort(az)]
-    for arr in (rotation, vertices, centres, norths, easts, face_vertices):
+    frames = np.stack([centres, norths, easts], axis=1)
+    for arr in (rotation, vertices, centres, norths, easts, face_vertices, frames):
         arr.setflags(write=False)
-    return Geometry(rotation, centres, norths, easts, vertices, face_vertices)
+    return Geometry(rotation, centres, norths, easts, vertices, face_vertices, frames)
 
 
 def face_of(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
@@ -204,14 +209,19 @@ def face_of(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
 
     The faces are the Voronoi cells of their centres, so the nearest centre is
     the containing face.  A point on an edge or a vertex is equally near two
-    or five centres; it goes to the lowest-numbered of them.  "Equally" allows
-    for rounding: centres within :data:`TIE` of the nearest (about 6 nm on the
-    Earth) count as tied.
+    or five centres; it goes to the lowest-numbered of them.  "Equally"
+    allows for rounding: face ``i``'s dot product gets a bias of
+    ``-i * TIE_STEP`` (at most 7.6e-15, about 50 nm on the Earth), so a
+    lower-numbered face wins any near-tie.
     """
-    dots = xyz @ geometry(orientation).centres.T
-    best = dots.max(axis=1, keepdims=True)
-    return np.argmax(dots >= best - TIE, axis=1)
+    return np.argmax(face_dots(orientation, xyz), axis=1)
 
 
-#: Dot-product slack within which two face centres count as equally near.
-TIE = 1e-15
+def face_dots(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
+    """Dot products (N, 20) of points with the face centres, tie bias included."""
+    return xyz @ geometry(orientation).centres.T + _BIAS
+
+
+#: Dot-product step per face index that settles near-ties towards lower faces.
+TIE_STEP = 4e-16
+_BIAS = -TIE_STEP * np.arange(NUM_FACES)

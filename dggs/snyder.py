@@ -35,7 +35,7 @@ from dggs._parallel import run_chunks
 from dggs._validate import as_latlng
 from dggs.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.icosahedron import ISEA, NUM_FACES, Orientation, face_of, latlng_to_xyz, xyz_to_latlng
+from dggs.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, latlng_to_xyz, xyz_to_latlng
 
 __all__ = [
     "forward",
@@ -86,30 +86,34 @@ def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
 
     The vector form of Snyder's forward (eqs. 6-12 and 14): azimuth and
     distance from the face centre come from dot products with the face
-    frame's centre, north and east vectors.
+    frame's centre, north and east vectors, and ``Az + H`` is one angle
+    (``arg(e^{i Az} e^{i H})``), so the whole map costs two arctangents.
     """
     geo = orientation.geometry
-    face = face_of(orientation, xyz)
-    c, n, e = geo.centres[face], geo.norths[face], geo.easts[face]
-    az = np.arctan2(np.einsum("ij,ij->i", xyz, e), np.einsum("ij,ij->i", xyz, n))  # eq. 14
-    az = np.where(az < 0, az + 2 * math.pi, az)
-    k = np.minimum((az // _SECTOR).astype(np.intp), 2)
-    az = az - k * _SECTOR
+    face = np.argmax(face_dots(orientation, xyz), axis=1)
+    cne = np.einsum("nij,nj->ni", geo.frames[face], xyz)  # rows: centre, north, east
+    c, n, e = cne[:, 0], cne[:, 1], cne[:, 2]
+    az = np.arctan2(e, n)  # eq. 14, clockwise from the face's reference vertex
+    az += np.where(az < 0, 2 * math.pi, 0.0)
+    k = np.minimum((az * (1.0 / _SECTOR)).astype(np.intp), 2)
+    az -= k * _SECTOR
     sin_az, cos_az = np.sin(az), np.cos(az)
-    # sin(z/2) is half the chord from the centre: stable near the centre.
-    sin_half_z = 0.5 * np.linalg.norm(xyz - c, axis=1)
+    # sin(z/2) without cancellation near the centre: 1 - cos z = sin^2 z / (1 + cos z)
+    sin_half_z = np.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
     # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
     u = cos_az + sin_az * COT_THETA
     sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
-    h = np.arccos(np.clip(sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G, -1.0, 1.0))  # eq. 6
-    area = az + G + h - math.pi  # eq. 7, spherical excess of triangle ABD
+    cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
+    sin_h = np.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
+    az_plus_h = np.arctan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
+    az_plus_h += np.where(az_plus_h < 0, 2 * math.pi, 0.0)
+    area = az_plus_h + (G - math.pi)  # eq. 7, spherical excess of triangle ABD
     # eq. 8: Az' = atan2(2 A_G, R'^2 tan^2 g - 2 A_G cot theta), kept as sin/cos.
     big_x = _RT2 - 2.0 * area * COT_THETA
     big_y = 2.0 * area
-    r = np.hypot(big_x, big_y)
-    d_prime = (R_PRIME * TAN_G) * r / (big_x + big_y * COT_THETA)  # eq. 10
-    rho = d_prime * sin_half_z / sin_half_q  # eqs. 11-12
-    sin_p, cos_p = big_y / r, big_x / r
+    # eq. 10 (d') and eqs. 11-12 (rho = d' sin(z/2) / sin(q/2))
+    rho = (R_PRIME * TAN_G) / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q
+    sin_p, cos_p = big_y, big_x  # r sin Az', r cos Az' (r = |(X, Y)| cancels against d')
     rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
     x = rho * (sin_p * rc + cos_p * rs)
     y = rho * (cos_p * rc - sin_p * rs)
@@ -185,6 +189,14 @@ def _az_closed(area: np.ndarray) -> np.ndarray:
         2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area),
         np.sin(G - area) - _SIN_G * _COS_SMALL_G,
     )
+
+
+def _az_closed_sincos(area: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(sin Az, cos Az)`` of :func:`_az_closed` without the arctangent."""
+    num = 2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area)
+    den = np.sin(G - area) - _SIN_G * _COS_SMALL_G
+    r = np.hypot(num, den)
+    return num / r, den / r
 
 
 def _newton(area: np.ndarray, az0: np.ndarray, tol: float, max_iter: int):
@@ -263,35 +275,39 @@ def inverse_xyz(
     geo = orientation.geometry
     rho = np.hypot(x, y)
     ap = np.arctan2(x, y)
-    ap = np.where(ap < 0, ap + 2 * math.pi, ap)
-    k = np.minimum((ap // _SECTOR).astype(np.intp), 2)
-    ap = ap - k * _SECTOR
-    sin_a, cos_a = np.sin(ap), np.cos(ap)
+    ap += np.where(ap < 0, 2 * math.pi, 0.0)
+    k = np.minimum((ap * (1.0 / _SECTOR)).astype(np.intp), 2)
+    ap -= k * _SECTOR
+    # sin/cos of the reduced Az': turn (x, y) back by 120 k instead of calling sin and cos
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]
+    inv_rho = 1.0 / np.where(rho > 0, rho, 1.0)
+    sin_a = (x * rc - y * rs) * inv_rho
+    cos_a = np.where(rho > 0, (y * rc + x * rs) * inv_rho, 1.0)
     area = _area_from_planar(sin_a, cos_a)
     iterations = np.zeros(ap.shape, dtype=np.int64)
     if method == "closed":
-        az = _az_closed(area)
-    elif method == "newton":
-        az, iterations = _newton(area, ap, tol, max_iter)
-    elif method == "newton-poly":
-        az, iterations = _newton(area, _az_poly(ap, degree), tol, max_iter)
-    elif method == "poly":
-        az = _az_poly(ap, degree)
+        sin_az, cos_az = _az_closed_sincos(area)
     else:
-        raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
-    sin_az, cos_az = np.sin(az), np.cos(az)
+        if method == "newton":
+            az, iterations = _newton(area, ap, tol, max_iter)
+        elif method == "newton-poly":
+            az, iterations = _newton(area, _az_poly(ap, degree), tol, max_iter)
+        elif method == "poly":
+            az = _az_poly(ap, degree)
+        else:
+            raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
+        sin_az, cos_az = np.sin(az), np.cos(az)
     u = cos_az + sin_az * COT_THETA  # eq. 9
     sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
     d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
     s = np.minimum(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
     cos_z = 1.0 - 2.0 * s * s
     sin_z = 2.0 * s * np.sqrt(1.0 - s * s)
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az + 120 k
-    ct = cos_az * rc - sin_az * rs
+    ct = cos_az * rc - sin_az * rs  # Az + 120 k
     st = sin_az * rc + cos_az * rs
-    face = np.asarray(face)
-    c, n, e = geo.centres[face], geo.norths[face], geo.easts[face]
-    xyz = cos_z[:, None] * c + sin_z[:, None] * (ct[:, None] * n + st[:, None] * e)
+    frame = geo.frames[np.asarray(face)]  # rows: centre, north, east
+    coef = np.stack([cos_z, sin_z * ct, sin_z * st], axis=1)
+    xyz = np.einsum("ni,nij->nj", coef, frame)
     return xyz, iterations
 
 
