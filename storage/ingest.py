@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import json
 import math
+import queue
+import threading
 import time
 import warnings
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -39,7 +41,7 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["IngestResult", "prepare", "run_ingest", "make_transformer", "value_types"]
 
 #: Rows of ``points_pending`` that trigger a merge into the indexed table.
-MERGE_ROWS = 250_000
+MERGE_ROWS = 1_000_000
 
 _Bad = dict[int, tuple[str | None, Any, str]]
 
@@ -265,8 +267,8 @@ def prepare(
 ) -> Prepared:
     """Convert and check one batch; compute the cells of its good rows.
 
-    Returns the rows to insert (in ``points`` column order: cell, lat, lng,
-    source_id, row, then value columns in ``types`` order) and the rejects.
+    Returns the rows to insert (cell, lat, lng, source_id, row, part, then
+    value columns in ``types`` order) and the rejects.
     """
     n = len(batch)
     bad: _Bad = dict(batch.bad)
@@ -299,9 +301,9 @@ def prepare(
     if known is not None:
         given = keep[known[keep] != ""]
         cells[given] = known[given]
-    rows_col = batch.rows if all_good else [batch.rows[i] for i in keep.tolist()]
+    part_col: Any = repeat(0) if batch.parts is None else batch.parts
     if all_good:
-        parts = [cells.tolist(), lat.tolist(), lng.tolist(), repeat(source_id), rows_col, *columns]
+        parts = [cells.tolist(), lat.tolist(), lng.tolist(), repeat(source_id), batch.rows, part_col, *columns]
     else:
         idx = keep.tolist()
         parts = [
@@ -309,7 +311,8 @@ def prepare(
             lat[keep].tolist(),
             lng[keep].tolist(),
             repeat(source_id),
-            rows_col,
+            [batch.rows[i] for i in idx],
+            part_col if batch.parts is None else [batch.parts[i] for i in idx],
             *[[col[i] for i in idx] for col in columns],
         ]
     rows = list(zip(*parts))
@@ -345,7 +348,7 @@ def run_ingest(
     kind: str,
     name: str,
     params: dict[str, Any],
-    batches: Callable[[int], Iterator[RawBatch]],
+    batches: Callable[[int, dict[str, str]], Iterator[RawBatch]],
     level: int,
     declared: Mapping[str, str],
     crs: Any,
@@ -356,8 +359,9 @@ def run_ingest(
 ) -> IngestResult:
     """Ingest batches into ``store`` with per-batch transactions and resume.
 
-    ``batches(skip)`` must yield the input's batches after its first ``skip``
-    records, the same way on every call.
+    ``batches(skip, types)`` must yield the input's batches after its first
+    ``skip`` records, the same way on every call; ``types`` is the live
+    mapping of value column types, filled in as they become known.
     """
     if on_error not in ("fail", "skip"):
         raise DggsValueError(f"on_error must be 'fail' or 'skip', not {on_error!r}")
@@ -378,57 +382,30 @@ def run_ingest(
     conn = store.conn
     source_id = source["id"]
     pending = store._pending_count()
-    for batch in batches(source["rows_done"]):
-        existing = column_types(conn)
-        new = value_types(batch, existing, declared)
-        types = {name_: (existing.get(name_) or new[name_]) for name_ in batch.values}
-        prepared = prepare(batch, level, types, transformer, source_id)
-        if prepared.rejects and on_error == "fail":
-            first = prepared.rejects[0]
-            raise BadRowError(name, first["row"], first["line"], first["column"], _jsonable(first["value"]), first["reason"])
-        insert = (
-            f"INSERT INTO points_pending (cell, lat, lng, source_id, row"
-            f"{''.join(', ' + quote(c) for c in types)}) VALUES (?, ?, ?, ?, ?{', ?' * len(types)})"
-        )
-        with store._transaction():
-            if new:
-                add_columns(conn, new)
-            store._set_level(level)
-            conn.executemany(insert, prepared.rows)
-            if prepared.rejects:
-                conn.executemany(
-                    'INSERT INTO rejects (source_id, row, line, "column", value, reason, record) '
-                    "VALUES (?, ?, ?, ?, ?, ?, ?)",
-                    [
-                        (
-                            source_id,
-                            r["row"],
-                            r["line"],
-                            r["column"],
-                            json.dumps(_jsonable(r["value"]), default=str),
-                            r["reason"],
-                            json.dumps({k: _jsonable(v) for k, v in batch.record(r["index"]).items()}, default=str),
-                        )
-                        for r in prepared.rejects
-                    ],
+    known = column_types(conn)  # shared with the reader, which may parse faster once typed
+    work = _Producer(batches(source["rows_done"], known), level, known, declared, transformer, source_id)
+    try:
+        for batch, prepared, types, new in work:
+            if prepared.rejects and on_error == "fail":
+                first = prepared.rejects[0]
+                raise BadRowError(
+                    name, first["row"], first["line"], first["column"],
+                    _jsonable(first["value"]), first["reason"],
                 )
-            conn.execute(
-                "UPDATE sources SET rows_done = rows_done + ?, rows_inserted = rows_inserted + ?, "
-                "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ?",
-                (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id),
-            )
-            store._touch()
-        result.rows_read += batch.consumed
-        result.rows_inserted += len(prepared.rows)
-        result.rows_rejected += len(prepared.rejects)
-        for r in prepared.rejects[: max(0, 5 - len(result.rejects))]:
-            result.rejects.append({k: _jsonable(v) for k, v in r.items() if k != "index"})
-        pending += len(prepared.rows)
-        if progress is not None:
-            progress(batch.consumed)
-        if pending >= store.merge_rows:
-            store.merge()
-            pending = 0
+            _write_batch(store, source_id, level, batch, prepared, types, new)
+            result.rows_read += batch.consumed
+            result.rows_inserted += len(prepared.rows)
+            result.rows_rejected += len(prepared.rejects)
+            for r in prepared.rejects[: max(0, 5 - len(result.rejects))]:
+                result.rejects.append({k: _jsonable(v) for k, v in r.items() if k != "index"})
+            pending += len(prepared.rows)
+            if progress is not None:
+                progress(batch.consumed)
+            if pending >= store.merge_rows:
+                store.merge()
+                pending = 0
+    finally:
+        work.stop()
     with store._transaction():
         store._merge_pending()
         conn.execute("UPDATE sources SET complete = 1, updated = ? WHERE id = ?", (now(), source_id))
@@ -448,3 +425,117 @@ def run_ingest(
             stacklevel=3,
         )
     return result
+
+
+class _Producer:
+    """Read and prepare batches in a background thread, one or two ahead.
+
+    Parsing, checking and binning (Python and numpy) overlap with SQLite
+    writing, which releases the GIL.  Only the calling thread touches the
+    database; errors in the thread are re-raised in the caller.
+    """
+
+    _DONE = object()
+
+    def __init__(
+        self,
+        batches: Iterator[RawBatch],
+        level: int,
+        existing: dict[str, str],
+        declared: Mapping[str, str],
+        transformer: Any,
+        source_id: int,
+    ) -> None:
+        self._batches = batches
+        self._args = (level, transformer, source_id)
+        self._types = existing  # the same dict the reader sees
+        self._declared = declared
+        self._queue: queue.Queue = queue.Queue(maxsize=2)
+        self._stopped = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="dggs-ingest-reader", daemon=True)
+        self._thread.start()
+
+    def _put(self, item: Any) -> bool:
+        while not self._stopped.is_set():
+            try:
+                self._queue.put(item, timeout=0.1)
+                return True
+            except queue.Full:
+                continue
+        return False
+
+    def _run(self) -> None:
+        level, transformer, source_id = self._args
+        try:
+            for batch in self._batches:
+                new = value_types(batch, self._types, self._declared)
+                self._types.update(new)
+                types = {name: self._types[name] for name in batch.values}
+                prepared = prepare(batch, level, types, transformer, source_id)
+                if not self._put((batch, prepared, types, new)):
+                    return
+            self._put(self._DONE)
+        except BaseException as exc:  # noqa: BLE001 - handed to the caller
+            self._put(exc)
+
+    def __iter__(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
+        while True:
+            item = self._queue.get()
+            if item is self._DONE:
+                return
+            if isinstance(item, BaseException):
+                raise item
+            yield item
+
+    def stop(self) -> None:
+        """Ask the thread to finish and wait for it."""
+        self._stopped.set()
+        self._thread.join(timeout=10)
+
+
+def _write_batch(
+    store: CellStore,
+    source_id: int,
+    level: int,
+    batch: RawBatch,
+    prepared: Prepared,
+    types: Mapping[str, str],
+    new: Mapping[str, str],
+) -> None:
+    """Commit one batch: its rows, its rejects and the source's progress, atomically."""
+    conn = store.conn
+    insert = (
+        f"INSERT INTO points_pending (cell, lat, lng, source_id, row, part"
+        f"{''.join(', ' + quote(c) for c in types)}) VALUES (?, ?, ?, ?, ?, ?{', ?' * len(types)})"
+    )
+    with store._transaction():
+        if new:
+            have = column_types(conn)
+            add_columns(conn, {k: v for k, v in new.items() if k not in have})
+        store._set_level(level)
+        conn.executemany(insert, prepared.rows)
+        if prepared.rejects:
+            conn.executemany(
+                'INSERT INTO rejects (source_id, row, line, "column", value, reason, record) '
+                "VALUES (?, ?, ?, ?, ?, ?, ?)",
+                [
+                    (
+                        source_id,
+                        r["row"],
+                        r["line"],
+                        r["column"],
+                        json.dumps(_jsonable(r["value"]), default=str),
+                        r["reason"],
+                        json.dumps(
+                            {k: _jsonable(v) for k, v in batch.record(r["index"]).items()}, default=str
+                        ),
+                    )
+                    for r in prepared.rejects
+                ],
+            )
+        conn.execute(
+            "UPDATE sources SET rows_done = rows_done + ?, rows_inserted = rows_inserted + ?, "
+            "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ?",
+            (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id),
+        )
+        store._touch()

@@ -50,6 +50,9 @@ class RawBatch:
         Entries already known to be bad: position -> (column, value, reason).
     cells : list or None
         Cell ids already known (polygon cells), ``""`` where not.
+    parts : list or None
+        Index of each entry within its record (points of a MultiPoint,
+        cells of a polygon); None means all 0.
     record : callable
         ``record(i)`` gives entry ``i`` as a dict, for the rejects table.
     """
@@ -64,6 +67,7 @@ class RawBatch:
     record: Callable[[int], dict]
     bad: dict[int, tuple[str | None, Any, str]] = field(default_factory=dict)
     cells: Sequence[str] | None = None
+    parts: Sequence[int] | None = None
 
     def __len__(self) -> int:
         return len(self.rows)
@@ -92,10 +96,16 @@ def csv_batches(
     batch_size: int,
     skip: int = 0,
     delimiter: str = ",",
+    types: Mapping[str, str] | None = None,
 ) -> Iterator[RawBatch]:
-    """Stream a CSV file with a header row as raw text batches.
+    """Stream a CSV file with a header row as batches of column values.
 
-    Blank lines count as consumed records but give no entries.
+    Reads ``batch_size`` records at a time.  A chunk without quote characters
+    whose value columns are all known (in ``types``, a live mapping) to be
+    numeric is parsed by numpy's C reader; any other chunk, or one that numpy
+    refuses, goes through the :mod:`csv` module, which finds the bad rows.
+    Both give the same values.  Blank lines count as consumed records but give
+    no entries.
 
     Raises
     ------
@@ -111,52 +121,128 @@ def csv_batches(
             f"its header is {', '.join(map(repr, header))}"
         )
     index = [header.index(name) for name in wanted]
-    need = max(index) + 1
-    getter = operator.itemgetter(*index)
+    types = types if types is not None else {}
     with open(path, newline="", encoding="utf-8-sig") as fh:
-        reader = csv.reader(fh, delimiter=delimiter)
-        next(reader)
-        _skip(reader, skip)
+        head = csv.reader(fh, delimiter=delimiter)
+        next(head)
+        _skip(head, skip)
+        line = head.line_num  # lines consumed so far
         done = skip
         while True:
-            line_before = reader.line_num
-            try:
-                chunk = list(itertools.islice(reader, batch_size))
-            except csv.Error as exc:
-                raise DggsValueError(f"{path}, near line {reader.line_num + 1}: {exc}") from exc
-            if not chunk:
+            lines = list(itertools.islice(fh, batch_size))
+            if not lines:
                 return
-            consumed = len(chunk)
-            one_line_each = reader.line_num - line_before == consumed
-            rows = range(done + 1, done + consumed + 1)
-            lines = range(line_before + 1, line_before + consumed + 1) if one_line_each else None
-            bad: dict[int, tuple[str | None, Any, str]] = {}
-            if min(map(len, chunk)) < need:
-                keep = [i for i, r in enumerate(chunk) if r]  # drop blank lines
-                rows = [rows[i] for i in keep]
-                lines = [lines[i] for i in keep] if lines is not None else None
-                chunk = [chunk[i] for i in keep]
-                for i, record in enumerate(chunk):
-                    if len(record) < need:
-                        bad[i] = (None, record, f"has {len(record)} fields, expected at least {need}")
-                        chunk[i] = record + [""] * (need - len(record))
-            columns = list(zip(*map(getter, chunk))) if chunk else [()] * len(wanted)
-            done += consumed
+            text = "".join(lines)
+            if '"' in text:
+                while text.count('"') % 2:  # a quoted field runs on: finish it
+                    more = next(fh, None)
+                    if more is None:
+                        break
+                    lines.append(more)
+                    text += more
+            batch = None
+            if '"' not in text and all(types.get(v) in ("INTEGER", "REAL") for v in values):
+                batch = _numeric_chunk(lines, index, header, wanted, types, delimiter, done, line)
+            if batch is None:
+                batch = _csv_chunk(lines, index, header, wanted, delimiter, done, line, path)
+            done += batch.consumed
+            line += len(lines)
+            yield batch
 
-            def record(i: int, _chunk: list[list[str]] = chunk) -> dict:
-                return dict(zip(header, _chunk[i]))
 
-            yield RawBatch(
-                consumed=consumed,
-                rows=rows,
-                lines=lines,
-                lat=columns[0],
-                lng=columns[1],
-                values=dict(zip(values, columns[2:])),
-                text=True,
-                record=record,
-                bad=bad,
-            )
+def _numeric_chunk(
+    lines: list[str],
+    index: list[int],
+    header: list[str],
+    wanted: list[str],
+    types: Mapping[str, str],
+    delimiter: str,
+    done: int,
+    line: int,
+) -> RawBatch | None:
+    """Parse a quote-free, all-numeric chunk with numpy; None if numpy refuses."""
+    dtype = [("lat", "f8"), ("lng", "f8")] + [
+        (f"v{i}", "i8" if types[name] == "INTEGER" else "f8") for i, name in enumerate(wanted[2:])
+    ]
+    try:
+        parsed = np.loadtxt(
+            lines, delimiter=delimiter, usecols=index, dtype=dtype, comments=None, ndmin=1
+        )
+    except (ValueError, IndexError, OverflowError):
+        return None
+    if parsed.shape != (len(lines),):
+        return None  # blank lines were dropped: let the csv path account for them
+
+    def record(i: int, _lines: list[str] = lines) -> dict:
+        return dict(zip(header, _lines[i].rstrip("\r\n").split(delimiter)))
+
+    return RawBatch(
+        consumed=len(lines),
+        rows=range(done + 1, done + len(lines) + 1),
+        lines=range(line + 1, line + len(lines) + 1),
+        lat=parsed["lat"],
+        lng=parsed["lng"],
+        values={name: parsed[f"v{i}"] for i, name in enumerate(wanted[2:])},
+        text=False,
+        record=record,
+    )
+
+
+def _csv_chunk(
+    lines: list[str],
+    index: list[int],
+    header: list[str],
+    wanted: list[str],
+    delimiter: str,
+    done: int,
+    line: int,
+    path: str | Path,
+) -> RawBatch:
+    """Parse a chunk of lines with the csv module, marking malformed rows bad."""
+    reader = csv.reader(lines, delimiter=delimiter)
+    records: list[list[str]] = []
+    rows: list[int] = []
+    line_numbers: list[int] = []
+    consumed = 0
+    try:
+        for record in reader:
+            consumed += 1
+            if record:  # blank lines are not records
+                records.append(record)
+                rows.append(done + consumed)
+                line_numbers.append(line + reader.line_num)
+    except csv.Error as exc:
+        raise DggsValueError(f"{path}, line {line + reader.line_num}: {exc}") from exc
+    need = max(index) + 1
+    bad: dict[int, tuple[str | None, Any, str]] = {}
+    for i, record in enumerate(records):
+        if len(record) < need:
+            bad[i] = (None, record, f"has {len(record)} fields, expected at least {need}")
+            records[i] = record + [""] * (need - len(record))
+    getter = operator.itemgetter(*index)
+    columns = list(zip(*map(getter, records))) if records else [()] * len(wanted)
+
+    def record_of(i: int, _records: list[list[str]] = records) -> dict:
+        return dict(zip(header, _records[i]))
+
+    # Physical line numbers: a record's last line, less the lines it spans.
+    starts = [n - lines_in(r) + 1 for n, r in zip(line_numbers, records)]
+    return RawBatch(
+        consumed=consumed,
+        rows=rows,
+        lines=starts,
+        lat=columns[0],
+        lng=columns[1],
+        values=dict(zip(wanted[2:], columns[2:])),
+        text=True,
+        record=record_of,
+        bad=bad,
+    )
+
+
+def lines_in(record: list[str]) -> int:
+    """Number of physical lines a parsed CSV record spanned (1 + embedded newlines)."""
+    return 1 + sum(field.count("\n") for field in record)
 
 
 def records_batches(
@@ -287,10 +373,12 @@ def geojson_batches(
         lng: list[Any] = []
         cells: list[str] = []
         props: list[dict] = []
+        parts: list[int] = []
         bad: dict[int, tuple[str | None, Any, str]] = {}
 
-        def add(row: int, y: Any, x: Any, cell: str, prop: dict) -> None:
+        def add(row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0) -> None:
             rows.append(row)
+            parts.append(part)
             lat.append(y)
             lng.append(x)
             cells.append(cell)
@@ -307,15 +395,18 @@ def geojson_batches(
                     add(row, coords[1], coords[0], "", prop)
                     continue
                 if kind == "MultiPoint":
-                    for x, y, *_ in coords:
-                        add(row, y, x, "", prop)
+                    for part, (x, y, *_) in enumerate(coords):
+                        add(row, y, x, "", prop, part)
                     continue
                 if kind in ("Polygon", "MultiPolygon"):
                     found = dggs.polygon_to_cells(shape(geometry), level)
                     if len(found):
                         clat, clng = dggs.cell_to_latlng(np.asarray(found))
-                        for cell, y, x in zip(np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()):
-                            add(row, y, x, cell, prop)
+                        triples = zip(
+                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()
+                        )
+                        for part, (cell, y, x) in enumerate(triples):
+                            add(row, y, x, cell, prop, part)
                     else:
                         bad[len(rows)] = (None, kind, f"polygon holds no cell centre at level {level}")
                         add(row, None, None, "", prop)
@@ -338,6 +429,7 @@ def geojson_batches(
             record=lambda i, _p=props, _la=lat, _ln=lng: {"lat": _la[i], "lng": _ln[i], **_p[i]},
             bad=bad,
             cells=cells,
+            parts=parts,
         )
 
 

@@ -15,11 +15,12 @@ Tables
     named stream) with the count of input rows committed so far, used to
     resume an interrupted ingest exactly once.
 ``points``
-    The binned rows, indexed on ``cell`` so that a descendant (prefix) query
-    is a range scan: ``cell >= :c AND cell < :c || '~'``.
+    The binned rows, clustered on ``cell`` (primary key ``cell, source_id,
+    row, part``) so that a descendant (prefix) query is a range scan:
+    ``cell >= :c AND cell < :c || '~'``.
 ``points_pending``
     Rows of recent batches not yet merged into ``points`` (same columns, no
-    index).  Ingest appends each batch here, atomically with the source's
+    index or constraint).  Ingest appends each batch here, atomically with the source's
     progress, and moves rows to ``points`` in large sorted chunks, which is
     much faster than inserting small batches into a big index.  Queries read
     both tables; after a completed ingest it is empty.
@@ -60,7 +61,7 @@ SCHEMA_VERSION = 1
 CRS = "EPSG:4326"
 
 #: Columns every point row has, before any value columns.
-BASE_COLUMNS = ("id", "cell", "lat", "lng", "source_id", "row")
+BASE_COLUMNS = ("cell", "lat", "lng", "source_id", "row", "part")
 
 #: The two tables that hold points: merged (indexed) and pending.
 POINT_TABLES = ("points", "points_pending")
@@ -71,16 +72,12 @@ _PY_TYPES = {int: "INTEGER", float: "REAL", str: "TEXT", bool: "INTEGER"}
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
-_POINTS_COLUMNS = """
-    id INTEGER PRIMARY KEY,
-    cell TEXT NOT NULL,
-    lat REAL NOT NULL,
-    lng REAL NOT NULL,
-    source_id INTEGER NOT NULL REFERENCES sources(id),
-    row INTEGER NOT NULL
-"""
-
-DDL = f"""
+# ``points`` is clustered on the cell id (WITHOUT ROWID, primary key led by
+# ``cell``): a descendant query reads one contiguous key range, a roll-up
+# scans the table in id order, and a row can never be stored twice.
+# ``points_pending`` is a plain append-only table without constraints, so
+# that committing a batch is cheap and emptying it is a one-step truncate.
+DDL = """
 CREATE TABLE meta (
     key TEXT PRIMARY KEY,
     value TEXT NOT NULL
@@ -102,10 +99,23 @@ CREATE TABLE sources (
     started TEXT NOT NULL,
     updated TEXT NOT NULL
 );
-CREATE TABLE points ({_POINTS_COLUMNS});
-CREATE INDEX points_cell ON points(cell);
-CREATE INDEX points_source ON points(source_id, row);
-CREATE TABLE points_pending ({_POINTS_COLUMNS});
+CREATE TABLE points (
+    cell TEXT NOT NULL,
+    lat REAL NOT NULL,
+    lng REAL NOT NULL,
+    source_id INTEGER NOT NULL REFERENCES sources(id),
+    row INTEGER NOT NULL,
+    part INTEGER NOT NULL DEFAULT 0,
+    PRIMARY KEY (cell, source_id, row, part)
+) WITHOUT ROWID;
+CREATE TABLE points_pending (
+    cell TEXT NOT NULL,
+    lat REAL NOT NULL,
+    lng REAL NOT NULL,
+    source_id INTEGER NOT NULL,
+    row INTEGER NOT NULL,
+    part INTEGER NOT NULL DEFAULT 0
+);
 CREATE VIEW all_points AS
     SELECT * FROM points UNION ALL SELECT * FROM points_pending;
 CREATE TABLE rejects (

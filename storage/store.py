@@ -159,6 +159,10 @@ class CellStore:
             conn.execute("PRAGMA journal_mode = WAL")
             conn.execute("PRAGMA synchronous = NORMAL")
         conn.execute("PRAGMA cache_size = -65536")
+        conn.execute("PRAGMA temp_store = MEMORY")
+        if not self.readonly:
+            # Fewer, larger checkpoints: ingest writes tens of MB per merge.
+            conn.execute("PRAGMA wal_autocheckpoint = 16384")
         if not check_schema(conn, self.path):
             if self.readonly:
                 raise StorageError(f"{self.path} is an empty database, not a cell store")
@@ -441,7 +445,9 @@ class CellStore:
             kind="csv",
             name=str(path),
             params=params,
-            batches=lambda skip: readers.csv_batches(file, lat, lng, names, batch_size, skip, delimiter),
+            batches=lambda skip, types=None: readers.csv_batches(
+                file, lat, lng, names, batch_size, skip, delimiter, types
+            ),
             level=level,
             declared=declared,
             crs=crs,
@@ -506,7 +512,7 @@ class CellStore:
             kind="geojson",
             name=str(path),
             params={"format": "geojson", "values": names},
-            batches=lambda skip: readers.geojson_batches(features, names, level, batch_size, skip),
+            batches=lambda skip, types=None: readers.geojson_batches(features, names, level, batch_size, skip),
             level=level,
             declared=declared,
             crs=None,
@@ -555,7 +561,7 @@ class CellStore:
             kind="records",
             name=source if source is not None else "<records>",
             params={"format": "records", "lat": lat, "lng": lng, "values": names},
-            batches=lambda skip: readers.records_batches(records, lat, lng, names, batch_size, skip),
+            batches=lambda skip, types=None: readers.records_batches(records, lat, lng, names, batch_size, skip),
             level=level,
             declared=declared,
             crs=crs,
@@ -613,7 +619,7 @@ class CellStore:
             kind="arrays",
             name=source if source is not None else "<arrays>",
             params={"format": "arrays", "values": list(values)},
-            batches=lambda skip: readers.array_batches(lat, lng, values, batch_size, skip),
+            batches=lambda skip, types=None: readers.array_batches(lat, lng, values, batch_size, skip),
             level=level,
             declared=declared,
             crs=crs,
@@ -667,10 +673,14 @@ class CellStore:
         return int(self.conn.execute("SELECT count(*) FROM points_pending").fetchone()[0])
 
     def _merge_pending(self) -> None:
-        cols = ", ".join(quote(c) for c in (*BASE_COLUMNS[1:], *self.columns))
-        self.conn.execute(
-            f"INSERT INTO points ({cols}) SELECT {cols} FROM points_pending ORDER BY cell"
-        )
+        cols = ", ".join(quote(c) for c in (*BASE_COLUMNS, *self.columns))
+        try:
+            self.conn.execute(
+                f"INSERT INTO points ({cols}) SELECT {cols} FROM points_pending "
+                "ORDER BY cell, source_id, row, part"
+            )
+        except sqlite3.IntegrityError as exc:  # pragma: no cover - would be a bug
+            raise StorageError(f"{self.path}: a row would be stored twice ({exc})") from exc
         self.conn.execute("DELETE FROM points_pending")
 
     def merge(self) -> None:

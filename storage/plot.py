@@ -1,0 +1,170 @@
+"""Draw cells on an equal-area (Mollweide) world map, coloured by value.
+
+Needs matplotlib (the ``plot`` extra); it is imported only when a map is
+drawn.  Uses matplotlib's object API (no pyplot), so it is safe in servers
+and tests.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+import dggs
+from dggs.errors import DggsError
+
+__all__ = ["plot_cells"]
+
+#: The map projection: Mollweide, equal-area like the grid itself.
+PROJECTION = "+proj=moll +lon_0=0 +datum=WGS84 +units=m +no_defs"
+
+def _import_matplotlib() -> Any:
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError as exc:
+        raise DggsError(
+            "drawing maps needs matplotlib: pip install 'dggs[plot]'"
+        ) from exc
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    return Figure, FigureCanvasAgg
+
+def _rings(geometry: Any) -> list[np.ndarray]:
+    polys = getattr(geometry, "geoms", [geometry])
+    return [np.asarray(p.exterior.coords) for p in polys]
+
+def plot_cells(
+    cells: Sequence[str],
+    values: Sequence[float],
+    path: str | os.PathLike[str],
+    *,
+    title: str = "",
+    label: str = "",
+    log: bool | None = None,
+    cmap: str = "viridis",
+    points: tuple[Sequence[float], Sequence[float]] | None = None,
+    dpi: int = 150,
+) -> None:
+    """Draw ``cells`` coloured by ``values`` on a Mollweide world map, save as PNG.
+
+    Parameters
+    ----------
+    cells : sequence of str
+        Cell ids (any levels).
+    values : sequence of float
+        One value per cell (None/NaN cells are drawn grey).
+    path : str or Path
+        PNG file to write.
+    title, label : str
+        Map title and colour-bar label.
+    log : bool, optional
+        Logarithmic colour scale; default: when positive values span more
+        than three orders of magnitude.
+    cmap : str
+        A matplotlib colormap name.
+    points : (lat, lng) arrays, optional
+        Points to draw as faint dots under the cells (e.g. the raw data).
+
+    Raises
+    ------
+    DggsError
+        If matplotlib is missing.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> out = os.path.join(tempfile.mkdtemp(), "map.png")
+    >>> plot_cells(["A0", "B3"], [1.0, 10.0], out, title="two cells")
+    >>> os.path.getsize(out) > 0
+    True
+    """
+    Figure, FigureCanvasAgg = _import_matplotlib()
+    from matplotlib.collections import PolyCollection
+    from matplotlib.colors import LogNorm, Normalize
+    from pyproj import Transformer
+
+    to_map = Transformer.from_crs("EPSG:4326", PROJECTION, always_xy=True)
+    cells = [str(c) for c in cells]
+    vals = np.array([np.nan if v is None else float(v) for v in values], dtype=float)
+    polys: list[np.ndarray] = []
+    poly_vals: list[float] = []
+    if cells:
+        levels = {len(c) - 1 for c in cells}
+        densify = 8 if min(levels) < 4 else 2
+        geoms = dggs.cell_to_polygon(np.asarray(cells), densify=densify)
+        for geometry, value in zip(np.atleast_1d(geoms), vals):
+            for ring in _rings(geometry):
+                x, y = to_map.transform(ring[:, 0], ring[:, 1])
+                polys.append(np.column_stack([x, y]))
+                poly_vals.append(value)
+    pv = np.asarray(poly_vals, dtype=float)
+    finite = pv[np.isfinite(pv)]
+    positive = finite[finite > 0]
+    if log is None:  # skewed, (nearly) all positive values read better on a log scale
+        log = (
+            len(positive) > 1
+            and len(positive) >= 0.95 * len(finite)
+            and positive.max() / positive.min() > 1e3
+        )
+    if len(finite) == 0:
+        norm = Normalize(0, 1)
+    elif log:  # from the 2nd percentile up: a few tiny outliers would wash out the rest
+        norm = LogNorm(max(float(np.percentile(positive, 2)), 1e-12), positive.max(), clip=True)
+    else:
+        norm = Normalize(finite.min(), finite.max() if finite.max() > finite.min() else finite.min() + 1)
+
+    fig = Figure(figsize=(12, 6.6), dpi=dpi)
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0.02, 0.15, 0.96, 0.77))
+    ax.set_aspect("equal")
+    ax.axis("off")
+
+    # Globe outline, ocean and graticule.
+    t = np.linspace(-90, 90, 181)
+    ox, oy = to_map.transform(np.r_[np.full_like(t, -180), np.full_like(t, 180)[::-1]], np.r_[t, t[::-1]])
+    ax.fill(ox, oy, color="#eef3f8", zorder=0)
+    ax.plot(ox, oy, color="#8090a0", lw=0.8, zorder=3)
+    for lon in range(-150, 181, 30):
+        gx, gy = to_map.transform(np.full_like(t, lon), t)
+        ax.plot(gx, gy, color="#c8d2dc", lw=0.4, zorder=1)
+    s = np.linspace(-180, 180, 361)
+    for lat in range(-60, 61, 30):
+        gx, gy = to_map.transform(s, np.full_like(s, lat))
+        ax.plot(gx, gy, color="#c8d2dc", lw=0.4, zorder=1)
+
+    if points is not None and len(points[0]):
+        px, py = to_map.transform(np.asarray(points[1], dtype=float), np.asarray(points[0], dtype=float))
+        ax.scatter(px, py, s=0.2, color="#6b7785", alpha=0.35, linewidths=0, zorder=1.5)
+
+    if polys:
+        collection = PolyCollection(polys, cmap=cmap, norm=norm, edgecolors="face", linewidths=0.15, zorder=2)
+        shown = np.where(np.isfinite(pv), pv, np.nan)
+        if log:  # zero and below: the bottom colour
+            shown = np.where(shown > 0, shown, norm.vmin)
+        collection.set_array(np.ma.masked_invalid(shown))
+        collection.cmap.set_bad("#b0b0b0")
+        ax.add_collection(collection)
+        cax = fig.add_axes((0.3, 0.105, 0.4, 0.025))
+        bar = fig.colorbar(collection, cax=cax, orientation="horizontal")
+        bar.set_label(label + (" (log scale)" if log else ""))
+    pad = 2.0e5
+    ax.set_xlim(min(ox) - pad, max(ox) + pad)
+    ax.set_ylim(min(oy) - pad, max(oy) + pad)
+    if title:
+        fig.suptitle(title, fontsize=13, y=0.97)
+    if cells:
+        level = min(len(c) - 1 for c in cells)
+        area = float(dggs.cell_area(level, unit="km^2"))
+        fig.text(
+            0.5,
+            0.015,
+            f"{len(cells):,} cells, level {level} (each {area:,.0f} km\u00b2, equal area); Mollweide projection",
+            ha="center",
+            fontsize=8,
+            color="#506070",
+        )
+    fig.savefig(path, dpi=dpi)
