@@ -33,6 +33,7 @@ Examples
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
@@ -117,12 +118,90 @@ def level1_digit(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.minimum((az * (3 / math.pi)).astype(np.intp), 5)
 
 
+def _descend(px: np.ndarray, py: np.ndarray, steps: int, digits: np.ndarray, col: int):
+    """Exact per-level descent in the canonical frame: writes ``steps`` digit columns.
+
+    Child 0 (BCD) lies on C's side of BD (``sqrt3 x + y < 1``); child 2 (ADE)
+    on A's side of DE (``sqrt3 x - y > 1``); child 1 (BDE) between them, so
+    it wins both of its internal edges.  Returns the point in the last
+    child's canonical frame.
+    """
+    m00, m01, m10, m11 = _M[:, 0, 0], _M[:, 0, 1], _M[:, 1, 0], _M[:, 1, 1]
+    t0, t1 = _T[:, 0], _T[:, 1]
+    for c_ in range(col, col + steps):
+        sx = SQRT3 * px
+        c = np.where(sx + py < 1.0, 0, np.where(sx - py > 1.0, 2, 1)).astype(np.uint8)
+        digits[:, c_] = c
+        px, py = m00[c] * px + m01[c] * py + t0[c], m10[c] * px + m11[c] * py + t1[c]
+    return px, py
+
+
+# Jump table: K levels in one step.  The canonical triangle's bounding box
+# [0, sqrt3] x [0, 1] is cut into a W x H grid; a grid cell that lies wholly
+# inside one level-K descendant (checked at its corners pushed outwards by
+# _EPS: each descendant's region is convex) stores that descendant's code,
+# the others store _AMBIGUOUS and their points take the exact descent.
+_K = 4
+_GRID_W, _GRID_H = 1024, 592
+_EPS = 1e-9
+_AMBIGUOUS = 255
+
+
+@lru_cache(maxsize=1)
+def _jump_table():
+    k = _K
+    codes = np.indices((3,) * k).reshape(k, -1).T.astype(np.uint8)  # (81, K), base-3 order
+    # composite affine maps p -> A p + t of each K-digit path
+    mats = np.tile(np.eye(2), (len(codes), 1, 1))
+    offs = np.zeros((len(codes), 2))
+    for j in range(k):
+        m, t = _M[codes[:, j]], _T[codes[:, j]]
+        offs = np.einsum("nij,nj->ni", m, offs) + t
+        mats = np.einsum("nij,njk->nik", m, mats)
+    xs = np.arange(_GRID_W + 1) * (SQRT3 / _GRID_W)
+    ys = np.arange(_GRID_H + 1) * (1.0 / _GRID_H)
+    gx, gy = np.meshgrid(xs, ys)  # (H+1, W+1) grid nodes
+
+    def node_codes(sx: float, sy: float) -> np.ndarray:
+        px, py = (gx + sx * _EPS).ravel(), (gy + sy * _EPS).ravel()
+        d = np.empty((px.size, k), dtype=np.uint8)
+        _descend(px, py, k, d, 0)
+        return (d.astype(np.intp) @ (3 ** np.arange(k - 1, -1, -1))).reshape(gx.shape)
+
+    ll, lr = node_codes(-1, -1)[:-1, :-1], node_codes(+1, -1)[:-1, 1:]
+    ul, ur = node_codes(-1, +1)[1:, :-1], node_codes(+1, +1)[1:, 1:]
+    same = (ll == lr) & (ll == ul) & (ll == ur)
+    table = np.where(same, ll, _AMBIGUOUS).astype(np.uint8).ravel()
+    return table, codes, mats[:, 0, 0].copy(), mats[:, 0, 1].copy(), mats[:, 1, 0].copy(), mats[:, 1, 1].copy(), offs[:, 0].copy(), offs[:, 1].copy()
+
+
+def _jump(px: np.ndarray, py: np.ndarray, digits: np.ndarray, col: int):
+    """K levels at once through the jump table; exact descent where it is ambiguous."""
+    table, codes, a00, a01, a10, a11, b0, b1 = _jump_table()
+    ix = np.floor(px * (_GRID_W / SQRT3))
+    iy = np.floor(py * _GRID_H)
+    ok = (ix >= 0) & (ix < _GRID_W) & (iy >= 0) & (iy < _GRID_H)
+    idx = np.where(ok, iy * _GRID_W + ix, 0).astype(np.intp)
+    code = table[idx]
+    code[~ok] = _AMBIGUOUS
+    amb = np.flatnonzero(code == _AMBIGUOUS)
+    if amb.size:
+        sub = np.empty((amb.size, _K), dtype=np.uint8)
+        _descend(px[amb], py[amb], _K, sub, 0)
+        code[amb] = sub.astype(np.intp) @ (3 ** np.arange(_K - 1, -1, -1))
+    digits[:, col : col + _K] = codes[code]
+    return a00[code] * px + a01[code] * py + b0[code], a10[code] * px + a11[code] * py + b1[code]
+
+
 def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     """Digits (N, level) uint8 of the level-``level`` cells holding face-frame points.
 
     Column 0 holds the level-1 digit (0..5), later columns 0..2.  Points on a
     shared edge go to one side by fixed comparisons (child 1 wins its two
-    internal edges), so the same point always gets the same cell.
+    internal edges), so the same point always gets the same cell.  Four
+    levels at a time go through a precomputed jump table that reproduces the
+    per-level comparisons exactly (points near a cell edge take the
+    per-level path).
     """
     n = x.shape[0]
     digits = np.empty((n, max(level, 0)), dtype=np.uint8)
@@ -134,15 +213,27 @@ def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     rows = _L1_ROWS[d]
     px = rows[:, 0, 0] * dx + rows[:, 0, 1] * dy
     py = rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
-    m00, m01, m10, m11 = _M[:, 0, 0], _M[:, 0, 1], _M[:, 1, 0], _M[:, 1, 1]
-    t0, t1 = _T[:, 0], _T[:, 1]
-    for col in range(1, level):
-        sx = SQRT3 * px
-        # Child 0 (BCD) lies on C's side of BD: sqrt3 x + y < 1; child 2 (ADE)
-        # on A's side of DE: sqrt3 x - y > 1; child 1 (BDE) between them.
-        c = np.where(sx + py < 1.0, 0, np.where(sx - py > 1.0, 2, 1)).astype(np.uint8)
-        digits[:, col] = c
-        px, py = m00[c] * px + m01[c] * py + t0[c], m10[c] * px + m11[c] * py + t1[c]
+    col = 1
+    while level - col >= _K:
+        px, py = _jump(px, py, digits, col)
+        col += _K
+    _descend(px, py, level - col, digits, col)
+    return digits
+
+
+def _locate_per_level(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
+    """Reference: :func:`locate` without the jump table (for tests)."""
+    n = x.shape[0]
+    digits = np.empty((n, max(level, 0)), dtype=np.uint8)
+    if level <= 0:
+        return digits
+    d = level1_digit(x, y)
+    digits[:, 0] = d
+    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
+    rows = _L1_ROWS[d]
+    px = rows[:, 0, 0] * dx + rows[:, 0, 1] * dy
+    py = rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
+    _descend(px, py, level - 1, digits, 1)
     return digits
 
 

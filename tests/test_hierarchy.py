@@ -120,3 +120,28 @@ def test_compact_all_children_of_a_face_gives_the_face():
 def test_uncompact_rejects_finer_cells():
     with pytest.raises(LevelMismatchError):
         dggs.uncompact_cells(["C4011"], 3)
+
+
+def test_jump_table_locate_equals_per_level_descent():
+    """The 4-levels-at-once table reproduces the per-level comparisons exactly."""
+    from dggs import snyder
+    from dggs.split26 import _locate_per_level, locate
+
+    rng = np.random.default_rng(21)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 200_000)))
+    lng = rng.uniform(-180, 180, 200_000)
+    _, x, y = snyder.forward(lat, lng)
+    for level in (5, 9, 13, 21, 40):
+        assert np.array_equal(locate(x, y, level), _locate_per_level(x, y, level))
+
+
+def test_locate_nests_for_points_exactly_on_corners_and_edges():
+    """Digits of a level never depend on how deep the lookup goes, even on cell edges."""
+    from dggs.split26 import locate
+
+    corners = _geo.corners(decode(dggs.cell_to_children("C4", 6)))
+    pts = np.concatenate([corners.reshape(-1, 2), 0.5 * (corners + np.roll(corners, 1, axis=1)).reshape(-1, 2)])
+    x, y = pts[:, 0].copy(), pts[:, 1].copy()
+    deepest = locate(x, y, 40)
+    for level in range(1, 40):
+        assert np.array_equal(locate(x, y, level), deepest[:, :level])
