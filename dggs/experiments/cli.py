@@ -108,3 +108,12 @@ def figures(outdir: str, schemes: tuple[str, ...], levels: int | None) -> None:
 
     for path in write_figures(outdir, schemes or None, levels, _progress()):
         click.echo(path)
+
+
+def _register_chapter4() -> None:
+    from dggs.experiments.chapter4 import snyder_command
+
+    experiments.add_command(snyder_command, "snyder")
+
+
+_register_chapter4()
