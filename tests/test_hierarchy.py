@@ -145,3 +145,20 @@ def test_locate_nests_for_points_exactly_on_corners_and_edges():
     deepest = locate(x, y, 40)
     for level in range(1, 40):
         assert np.array_equal(locate(x, y, level), deepest[:, :level])
+
+
+@given(cells(min_level=0, max_level=dggs.MAX_LEVEL - 1))
+def test_children_tile_the_parent_at_any_level(cell):
+    kids = dggs.cell_to_children(cell)
+    tri_p = _geo.corners(decode(np.array([cell])))[0]
+    tri_k = _geo.corners(decode(kids))
+    area_p = planar_area(tri_p[None])[0]
+    area_k = planar_area(tri_k)
+    assert area_k.sum() == pytest.approx(area_p, rel=1e-6)  # deep levels: corners carry ~1e-16 absolute
+    assert np.allclose(area_k, area_k.mean(), rtol=1e-5)
+    size = np.linalg.norm(tri_p[1] - tri_p[0])
+    for j in range(3):
+        p, q = tri_p[j], tri_p[(j + 1) % 3]
+        v = tri_k.reshape(-1, 2) - p
+        cross = (q[0] - p[0]) * v[:, 1] - (q[1] - p[1]) * v[:, 0]
+        assert cross.min() / size > -1e-6 * size
