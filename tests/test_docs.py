@@ -27,6 +27,12 @@ MODULES = [
     "dggs.index.measure",
     "dggs.index.polyfill",
 ]
+try:  # the optional dask extra
+    import dask.dataframe  # noqa: F401
+
+    MODULES.append("dggs.dask")
+except ImportError:
+    pass
 
 
 @pytest.mark.parametrize("name", MODULES)
