@@ -382,6 +382,10 @@ def run_ingest(
     conn = store.conn
     source_id = source["id"]
     pending = store._pending_count()
+    missing = {k: v for k, v in declared.items() if k not in column_types(conn)}
+    if missing:  # declared columns exist even if no row arrives
+        with store._transaction():
+            add_columns(conn, missing)
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = _Producer(batches(source["rows_done"], known), level, known, declared, transformer, source_id)
     try:

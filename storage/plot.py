@@ -141,12 +141,14 @@ def plot_cells(
         ax.scatter(px, py, s=0.2, color="#6b7785", alpha=0.35, linewidths=0, zorder=1.5)
 
     if polys:
-        collection = PolyCollection(polys, cmap=cmap, norm=norm, edgecolors="face", linewidths=0.15, zorder=2)
+        import matplotlib
+
+        colours = matplotlib.colormaps[cmap].with_extremes(bad="#b0b0b0")
+        collection = PolyCollection(polys, cmap=colours, norm=norm, edgecolors="face", linewidths=0.15, zorder=2)
         shown = np.where(np.isfinite(pv), pv, np.nan)
         if log:  # zero and below: the bottom colour
             shown = np.where(shown > 0, shown, norm.vmin)
         collection.set_array(np.ma.masked_invalid(shown))
-        collection.cmap.set_bad("#b0b0b0")
         ax.add_collection(collection)
         cax = fig.add_axes((0.3, 0.105, 0.4, 0.025))
         bar = fig.colorbar(collection, cax=cax, orientation="horizontal")

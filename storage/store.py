@@ -612,7 +612,9 @@ class CellStore:
         values = dict(values or {})
         for name in values:
             check_column_name(name)
-        declared = dict(types or {})
+        declared = {name: _dtype_type(col) for name, col in values.items()}
+        declared = {k: v for k, v in declared.items() if v is not None}
+        declared.update(types or {})
         return run_ingest(
             self,
             key=f"arrays:{source}" if source is not None else f"arrays:{uuid.uuid4().hex}",
@@ -1015,6 +1017,13 @@ class CellStore:
             "rejects": int(self.conn.execute("SELECT count(*) FROM rejects").fetchone()[0]),
             "size_bytes": size,
         }
+
+
+def _dtype_type(column: Any) -> str | None:
+    """SQL type implied by an array's dtype, or None (object arrays, lists)."""
+    kind = getattr(column, "dtype", None)
+    kind = kind.kind if kind is not None else None
+    return {"i": "INTEGER", "u": "INTEGER", "b": "INTEGER", "f": "REAL", "U": "TEXT", "S": "TEXT"}.get(kind or "")
 
 
 def _value_spec(values: Sequence[str] | Mapping[str, Any] | None) -> tuple[list[str], dict[str, Any]]:
