@@ -21,6 +21,110 @@ __all__ = ["edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "gr
 _LETTERS = np.array(list(FACE_LETTERS))
 
 
+# Edge labels of a 30-60-90 cell (A 30, B 60, C 90 degrees): a = BC, b = CA, c = AB.
+_EA, _EB, _EC = 0, 1, 2
+# Children (A', B', C'): 0 = (B, D, C), 1 = (B, D, E), 2 = (A, D, E).  For child
+# digit c and its edge e: the sibling across it (same edge label on both
+# sides), or -1 when the edge lies on the parent's edge _OUTER[c, e].
+_SIBLING = np.array([[-1, -1, 1], [2, -1, 0], [1, -1, -1]], dtype=np.int8)
+_OUTER = np.array([[_EB, _EA, -1], [-1, _EC, -1], [-1, _EC, _EB]], dtype=np.int8)
+# A cell's neighbour across an edge on its parent's edge is the same child of
+# the parent's neighbour there: the neighbour is the mirror image, and mirror
+# images carry the same labels (angles fix them).
+
+
+def _geometric_neighbours(ids: np.ndarray) -> np.ndarray:
+    """(N, 3) neighbours by mirroring centroids in each edge (reference method).
+
+    Columns follow the counter-clockwise corners: edge from corner i to i+1.
+    Used to build the level-1 table and to test :func:`_neighbours`.
+    """
+    geo = _geo.ORIENTATION.geometry
+    sub = decode(ids)
+    pts = _geo.corners(sub)  # (M, 3, 2)
+    centre = pts.mean(axis=1)
+    out = np.empty((len(ids), 3), dtype=ids.dtype)
+    for levels in np.unique(sub.level):
+        sel = np.flatnonzero(sub.level == levels)
+        for i in range(3):
+            p, q = pts[sel, i], pts[sel, (i + 1) % 3]
+            d = q - p
+            t = np.einsum("ij,ij->i", centre[sel] - p, d) / np.einsum("ij,ij->i", d, d)
+            mirror = 2.0 * (p + t[:, None] * d) - centre[sel]
+            face, moved = neighbour_points(sub.face[sel], mirror, geo.face_vertices)
+            out[sel, i] = encode(face, locate(moved[:, 0], moved[:, 1], int(levels)))
+    return out
+
+
+def _column_labels(ccw: np.ndarray) -> np.ndarray:
+    """Edge labels of the corner-order columns: (A, B, C) ccw -> c, a, b; (A, C, B) -> b, a, c."""
+    return np.where(ccw[:, None], np.array([_EC, _EA, _EB]), np.array([_EB, _EA, _EC]))
+
+
+_L1_CCW = None
+_L1_TABLE = None
+
+
+def _level1_tables():
+    """Level-1 orientation (6,) and neighbour table (20, 6, 3) -> (face, digit), from geometry."""
+    global _L1_CCW, _L1_TABLE
+    if _L1_TABLE is None:
+        from dggs.split26 import LEVEL1
+
+        a, b, c = LEVEL1[:, 0], LEVEL1[:, 1], LEVEL1[:, 2]
+        ccw = ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])) > 0
+        cells = np.array([f"{FACE_LETTERS[f]}{d}" for f in range(20) for d in range(6)])
+        nb = _geometric_neighbours(cells).reshape(20, 6, 3)
+        labels = _column_labels(np.tile(ccw, 20)).reshape(20, 6, 3)
+        table = np.empty((20, 6, 3, 2), dtype=np.intp)
+        for f in range(20):
+            for d in range(6):
+                for col in range(3):
+                    other = str(nb[f, d, col])
+                    table[f, d, labels[f, d, col]] = (FACE_LETTERS.index(other[0]), int(other[1]))
+        _L1_CCW, _L1_TABLE = ccw, table
+    return _L1_CCW, _L1_TABLE
+
+
+def _neighbours_fine(dec) -> np.ndarray:
+    """(N, 3) neighbour ids of cells at one level >= 1, from their digits alone."""
+    l1_ccw, l1_table = _level1_tables()
+    n, level = dec.face.shape[0], int(dec.level[0])
+    digits = dec.digits[:, : level - 1]
+    flips = np.count_nonzero((digits == 0) | (digits == 2), axis=1)
+    ccw = l1_ccw[dec.l1] ^ (flips % 2 == 1)  # children 0 and 2 are mirror images
+    labels = _column_labels(ccw)
+    codes = np.empty((n, 3, level), dtype=np.uint8)  # by edge label a, b, c
+    faces = np.empty((n, 3), dtype=np.intp)
+    rows = np.arange(n)
+    for e in (_EA, _EB, _EC):
+        new_digits = digits.copy()
+        face = dec.face.copy()
+        l1 = dec.l1.copy()
+        edge = np.full(n, e, dtype=np.int8)
+        active = rows
+        for pos in range(level - 2, -1, -1):  # walk up from the last digit
+            if active.size == 0:
+                break
+            c = new_digits[active, pos]
+            ea = edge[active]
+            sib = _SIBLING[c, ea]
+            done = sib >= 0
+            new_digits[active[done], pos] = sib[done]
+            edge[active] = np.where(done, ea, _OUTER[c, ea])
+            active = active[~done]
+        if active.size:  # the edge lies on the level-1 triangle's edge
+            nf_nd = l1_table[face[active], l1[active], edge[active]]
+            face[active], l1[active] = nf_nd[:, 0], nf_nd[:, 1]
+        codes[:, e, 0] = l1
+        codes[:, e, 1:] = new_digits
+        faces[:, e] = face
+    # reorder label columns (a, b, c) into the counter-clockwise corner order
+    codes = np.take_along_axis(codes, labels[:, :, None], axis=1)
+    faces = np.take_along_axis(faces, labels, axis=1)
+    return encode(faces.ravel(), codes.reshape(n * 3, level)).reshape(n, 3)
+
+
 def _neighbours(ids: np.ndarray) -> np.ndarray:
     """(N, 3) ids of the cells across each edge (corner i to corner i+1)."""
     dec = decode(ids)
@@ -33,23 +137,14 @@ def _neighbours(ids: np.ndarray) -> np.ndarray:
         # base-cell corners run V2, V1, V0 (counter-clockwise): corner edges 0, 1, 2
         # are face edges 1, 0, 2
         out[base] = _LETTERS[adj[dec.face[base]][:, [1, 0, 2]]]
-    fine = np.flatnonzero(~base)
-    if fine.size == 0:
-        return out
-    sub = decode(ids[fine])
-    pts = _geo.corners(sub)  # (M, 3, 2)
-    centre = pts.mean(axis=1)
-    for levels in np.unique(sub.level):
-        sel = np.flatnonzero(sub.level == levels)
-        for i in range(3):
-            p, q = pts[sel, i], pts[sel, (i + 1) % 3]
-            d = q - p
-            t = np.einsum("ij,ij->i", centre[sel] - p, d) / np.einsum("ij,ij->i", d, d)
-            foot = p + t[:, None] * d
-            mirror = 2.0 * foot - centre[sel]
-            face, moved = neighbour_points(sub.face[sel], mirror, geo.face_vertices)
-            digits = locate(moved[:, 0], moved[:, 1], int(levels))
-            out[fine[sel], i] = encode(face, digits)
+    if n and dec.level.min() == dec.level.max() and dec.level[0] > 0:
+        return _neighbours_fine(dec)  # one level: no regrouping
+    for lv in np.unique(dec.level):
+        if lv == 0:
+            continue
+        sel = np.flatnonzero(dec.level == lv)
+        sub = type(dec)(dec.face[sel], dec.level[sel], dec.l1[sel], dec.digits[sel])
+        out[sel] = _neighbours_fine(sub)
     return out
 
 

@@ -104,3 +104,17 @@ def test_bad_input():
         dggs.grid_disk("C401", -1)
     with pytest.raises(LevelMismatchError):
         dggs.grid_distance("C401", "C40")
+
+
+def test_digit_neighbours_equal_geometric_mirror_neighbours():
+    """The digit-walk neighbours equal the mirror-the-centroid construction (random deep cells)."""
+    from dggs.index.grid import _geometric_neighbours, _neighbours
+
+    rng = np.random.default_rng(9)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 20_000)))
+    lng = rng.uniform(-180, 180, 20_000)
+    for level in (6, 7, 13, 25, dggs.MAX_LEVEL):
+        cells = dggs.latlng_to_cell(lat, lng, level)
+        assert np.array_equal(_neighbours(cells), _geometric_neighbours(cells))
+    mixed = np.concatenate([cells[:30], dggs.cell_to_parent(cells[:30], 4), dggs.cell_to_parent(cells[:30], 0)])
+    assert np.array_equal(_neighbours(mixed)[30:60], _geometric_neighbours(mixed[30:60]))
