@@ -202,16 +202,66 @@ def _rings(cell: str, k: int):
         yield ring
 
 
-def grid_disk(cell: str, k: int = 1) -> np.ndarray:
+def _disks(ids: np.ndarray, k: int) -> np.ndarray:
+    """(N, M) disks of many cells at once, each row sorted, padded with ''.
+
+    Breadth-first over (origin, cell) pairs, all origins together: each ring
+    is the neighbours of the last one, less the pairs already seen.
+    """
+    n = len(ids)
+    if k == 1:  # the 3 neighbours are distinct and differ from the cell
+        return np.sort(np.concatenate([ids[:, None], _neighbours(ids)], axis=1), axis=1)
+    origins = [np.arange(n)]
+    cells = [ids]
+    front_o, front_c = origins[0], ids
+    for _ in range(k):
+        o = np.repeat(front_o, 3)
+        c = _neighbours(front_c).ravel()
+        seen_o, seen_c = np.concatenate(origins), np.concatenate(cells)
+        all_o = np.concatenate([seen_o, o])
+        all_c = np.concatenate([seen_c, c])
+        fresh = np.concatenate([np.zeros(seen_o.size, bool), np.ones(o.size, bool)])
+        order = np.lexsort((fresh, all_c, all_o))  # by origin, cell; seen pairs (False) first
+        all_o, all_c, fresh = all_o[order], all_c[order], fresh[order]
+        first = np.ones(all_o.size, bool)
+        first[1:] = (all_o[1:] != all_o[:-1]) | (all_c[1:] != all_c[:-1])
+        keep = first & fresh
+        front_o, front_c = all_o[keep], all_c[keep]
+        origins.append(front_o)
+        cells.append(front_c)
+    all_o, all_c = np.concatenate(origins), np.concatenate(cells)
+    order = np.lexsort((all_c, all_o))
+    all_o, all_c = all_o[order], all_c[order]
+    counts = np.bincount(all_o, minlength=n)
+    out = np.full((n, int(counts.max()) if n else 0), "", dtype=ids.dtype)
+    starts = np.cumsum(counts) - counts
+    out[all_o, np.arange(all_o.size) - np.repeat(starts, counts)] = all_c
+    return out
+
+
+def grid_disk(cell, k: int = 1) -> np.ndarray:
     """All cells within ``k`` edge steps of ``cell`` (including it), sorted.
+
+    For one cell, a 1-d ``U`` array.  For an array of N cells, an (N, M)
+    array whose row i is the disk of cell i, sorted and padded with ``""``
+    (disks near icosahedron vertices are a little smaller), computed for
+    all cells at once.
 
     Examples
     --------
     >>> len(grid_disk("C401", 1)), len(grid_disk("C401", 2))
     (4, 9)
+    >>> grid_disk(["C401", "C402"], 1).shape
+    (2, 4)
     """
     k = _check_k(k)
-    return np.sort(np.concatenate(list(_rings(cell, k))))
+    ids, scalar = as_id_array(cell)
+    decode(ids)
+    out = _disks(ids, k)
+    if scalar:
+        row = out[0]
+        return row[row != ""]
+    return out
 
 
 def grid_ring(cell: str, k: int = 1) -> np.ndarray:

@@ -7,6 +7,7 @@ from collections import Counter
 import numpy as np
 import pytest
 from hypothesis import given
+from hypothesis import strategies as st
 
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelMismatchError
@@ -118,3 +119,11 @@ def test_digit_neighbours_equal_geometric_mirror_neighbours():
         assert np.array_equal(_neighbours(cells), _geometric_neighbours(cells))
     mixed = np.concatenate([cells[:30], dggs.cell_to_parent(cells[:30], 4), dggs.cell_to_parent(cells[:30], 0)])
     assert np.array_equal(_neighbours(mixed)[30:60], _geometric_neighbours(mixed[30:60]))
+
+
+@given(st.lists(cells(min_level=0, max_level=20), min_size=1, max_size=15), st.integers(0, 3))
+def test_array_disks_equal_single_disks(cell_list, k):
+    out = dggs.grid_disk(np.array(cell_list), k)
+    assert out.shape[0] == len(cell_list)
+    for row, c in zip(out, cell_list):
+        assert [x for x in row.tolist() if x] == dggs.grid_disk(c, k).tolist()
