@@ -76,12 +76,13 @@ def main() -> None:
         gen = time.perf_counter() - t0
         size_mb = csv_path.stat().st_size / 1e6
 
-        t0 = time.perf_counter()
+        load_before = os.getloadavg()[0]
+        t0, c0 = time.perf_counter(), time.process_time()
         with CellStore(db_path) as store:
             result = store.ingest_csv(
                 csv_path, values=["count", "value"], level=args.level, batch_size=args.batch_size
             )
-        ingest = time.perf_counter() - t0
+        ingest, cpu = time.perf_counter() - t0, time.process_time() - c0
         assert result.rows_inserted == args.rows, result
 
         results = [
@@ -95,6 +96,7 @@ def main() -> None:
         db_mb = sum(
             os.path.getsize(str(db_path) + s) for s in ("", "-wal") if os.path.exists(str(db_path) + s)
         ) / 1e6
+        results.append(("  CPU time of the ingest (both threads)", f"load average before: {load_before:.1f}", f"{cpu:.2f} s"))
         results.append(("database size", "", f"{db_mb:.0f} MB"))
 
         with CellStore(db_path, readonly=True) as store:
@@ -119,7 +121,7 @@ def main() -> None:
                 t = timed(lambda: store.disk(k_cell, 2), repeat=5)
                 results.append(("disk(cell, 2) at level 8", f"{len(store.disk(k_cell, 2)):,} rows", f"{t * 1000:.1f} ms"))
 
-    print(f"\n### dggs.storage benchmark ({args.rows:,} points, dggs {dggs.__version__})\n")
+    print(f"\n### dggs.storage benchmark ({args.rows:,} points, dggs {dggs.__version__}, {os.cpu_count()} CPUs)\n")
     print("| operation | size | time |")
     print("|---|---|---|")
     for name, size, value in results:

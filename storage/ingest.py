@@ -293,14 +293,17 @@ def prepare(
         good[list(bad)] = False
     keep = np.flatnonzero(good)
     all_good = len(keep) == n
-    cells = np.empty(n, dtype=object)
     known = np.asarray(batch.cells, dtype=object) if batch.cells is not None else None
-    todo = keep if known is None else keep[known[keep] == ""]
-    if len(todo):
-        cells[todo] = dggs.latlng_to_cell(lat[todo], lng[todo], level)
-    if known is not None:
-        given = keep[known[keep] != ""]
-        cells[given] = known[given]
+    if all_good and known is None:  # the common case: every row good, no cell given
+        cells: Any = dggs.latlng_to_cell(lat, lng, level) if n else np.empty(0, dtype=object)
+    else:
+        cells = np.empty(n, dtype=object)
+        todo = keep if known is None else keep[known[keep] == ""]
+        if len(todo):
+            cells[todo] = dggs.latlng_to_cell(lat[todo], lng[todo], level)
+        if known is not None:
+            given = keep[known[keep] != ""]
+            cells[given] = known[given]
     part_col: Any = repeat(0) if batch.parts is None else batch.parts
     if all_good:
         parts = [cells.tolist(), lat.tolist(), lng.tolist(), repeat(source_id), batch.rows, part_col, *columns]

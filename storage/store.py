@@ -160,6 +160,7 @@ class CellStore:
             conn.execute("PRAGMA synchronous = NORMAL")
         conn.execute("PRAGMA cache_size = -65536")
         conn.execute("PRAGMA temp_store = MEMORY")
+        conn.execute("PRAGMA threads = 2")  # helper thread for the merge's sort
         if not self.readonly:
             # Fewer, larger checkpoints: ingest writes tens of MB per merge.
             conn.execute("PRAGMA wal_autocheckpoint = 16384")
