@@ -23,7 +23,7 @@ import numpy as np
 
 from dggs.errors import InvalidCellError, LevelError
 
-__all__ = ["MAX_LEVEL", "FACE_LETTERS", "encode", "decode", "Decoded", "valid_mask", "as_id_array", "check_level"]
+__all__ = ["MAX_LEVEL", "FACE_LETTERS", "encode", "decode", "levels", "Decoded", "valid_mask", "as_id_array", "check_level"]
 
 #: Deepest level: 40 (cells of about 1 mm^2 on the Earth).  Point location
 #: and cell corners stay consistent to about 1e-6 of a cell's size there.
@@ -84,26 +84,64 @@ def _codes(ids: np.ndarray) -> np.ndarray:
     return np.ascontiguousarray(ids).view(np.uint32).reshape(ids.shape[0], width)
 
 
+def _char_table(width: int) -> np.ndarray:
+    """(width, 129) booleans: may character code c (128 = anything else) stand at position i?"""
+    table = np.zeros((width, 129), dtype=bool)
+    table[0, _ORD_A : _ORD_A + 20] = True  # face letter, never empty
+    if width > 1:
+        table[1, _ORD_0 : _ORD_0 + 6] = True  # level-1 digit
+        table[1, 0] = True  # (or the end)
+    for i in range(2, min(width, MAX_LEVEL + 1)):
+        table[i, _ORD_0 : _ORD_0 + 3] = True
+        table[i, 0] = True
+    for i in range(MAX_LEVEL + 1, width):
+        table[i, 0] = True  # longer than MAX_LEVEL + 1 characters: invalid
+    return table
+
+
 def valid_mask(ids: np.ndarray) -> np.ndarray:
-    """Boolean mask of the well-formed ids in a ``U`` array (never raises)."""
+    """Boolean mask of the well-formed ids in a ``U`` array (never raises).
+
+    One table lookup per character (position x character code) and a check
+    that the characters present form a prefix (no embedded NULs).
+    """
     n = ids.shape[0]
     if n == 0:
         return np.zeros(0, dtype=bool)
     codes = _codes(ids)
     width = codes.shape[1]
-    length = np.count_nonzero(codes, axis=1)
-    ok = (length >= 1) & (length <= MAX_LEVEL + 1)
-    # no embedded NULs: the characters present form a prefix
-    ok &= np.all((codes != 0) | (np.arange(width) >= length[:, None]), axis=1)
-    ok &= (codes[:, 0] >= _ORD_A) & (codes[:, 0] < _ORD_A + 20)
+    small = np.minimum(codes, 128).astype(np.uint8)
+    if width <= MAX_LEVEL + 1 and small.all():
+        # common case, ids of one length: a range check per position
+        lo, hi = _char_bounds(width)
+        return ((small >= lo) & (small <= hi)).all(axis=1)
+    ok = _char_table(width)[np.arange(width), small].all(axis=1)
     if width > 1:
-        c1 = codes[:, 1]
-        ok &= (length < 2) | ((c1 >= _ORD_0) & (c1 <= _ORD_0 + 5))
-    if width > 2:
-        rest = codes[:, 2:]
-        good = ((rest >= _ORD_0) & (rest <= _ORD_0 + 2)) | (rest == 0)
-        ok &= np.all(good, axis=1)
+        nul = small == 0
+        ok &= ~(nul[:, :-1] & ~nul[:, 1:]).any(axis=1)
     return ok
+
+
+def _char_bounds(width: int) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest character code allowed at each position (no NULs)."""
+    lo = np.full(width, _ORD_0, dtype=np.uint8)
+    hi = np.full(width, _ORD_0 + 2, dtype=np.uint8)
+    lo[0], hi[0] = _ORD_A, _ORD_A + 19
+    if width > 1:
+        hi[1] = _ORD_0 + 5
+    return lo, hi
+
+
+def levels(ids: np.ndarray) -> np.ndarray:
+    """Levels of a ``U`` array of ids, checking them; raises :class:`InvalidCellError`."""
+    ok = valid_mask(ids)
+    if not ok.all():
+        decode(ids)  # raises, naming the first bad id
+    width = ids.dtype.itemsize // 4
+    codes = _codes(ids)
+    if ids.size and codes[:, -1].all():  # all full width
+        return np.full(ids.shape[0], width - 1, dtype=np.intp)
+    return np.count_nonzero(codes, axis=1) - 1
 
 
 def decode(ids: np.ndarray) -> Decoded:

@@ -10,7 +10,7 @@ import numpy as np
 
 from dggs.errors import LevelError, LevelMismatchError
 
-from .cellid import FACE_LETTERS, MAX_LEVEL, as_id_array, check_level, decode, valid_mask
+from .cellid import FACE_LETTERS, MAX_LEVEL, as_id_array, check_level, decode, levels, valid_mask
 
 __all__ = [
     "get_level",
@@ -113,21 +113,21 @@ def cell_to_parent(cell, level: int | None = None):
     ('C40', 'C4')
     """
     ids, scalar = as_id_array(cell)
-    dec = decode(ids)
+    lv = levels(ids)
     if level is None:
-        if ids.size and dec.level.min() == 0:
-            i = int(np.argmin(dec.level))
+        if ids.size and lv.min() == 0:
+            i = int(np.argmin(lv))
             raise LevelMismatchError(f"base cell {str(ids[i])!r} has no parent")
-        target = dec.level - 1
-        out = np.array([c[:-1] for c in ids.tolist()]) if len(np.unique(target)) > 1 else ids.astype(
-            f"<U{int(target[0]) + 1 if ids.size else 1}"
-        )
+        if ids.size and lv.min() != lv.max():
+            out = np.array([c[:-1] for c in ids.tolist()])
+        else:
+            out = ids.astype(f"<U{int(lv[0]) if ids.size else 1}")
     else:
         level = check_level(level)
-        if ids.size and dec.level.min() < level:
-            i = int(np.argmin(dec.level))
+        if ids.size and lv.min() < level:
+            i = int(np.argmin(lv))
             raise LevelMismatchError(
-                f"parent level {level} is finer than cell {str(ids[i])!r} at level {int(dec.level[i])}"
+                f"parent level {level} is finer than cell {str(ids[i])!r} at level {int(lv[i])}"
             )
         out = ids.astype(f"<U{level + 1}")
     return str(out[0]) if scalar else out
@@ -160,24 +160,29 @@ def cell_to_children(cell, level: int | None = None) -> np.ndarray:
     18
     """
     ids, _ = as_id_array(cell)
-    dec = decode(ids)
     if ids.size == 0:
         return np.array([], dtype="<U1")
-    levels = np.unique(dec.level)
+    cell_levels = levels(ids)
+    lo, hi = int(cell_levels.min()), int(cell_levels.max())
     if level is None:
-        if len(levels) > 1:
+        if lo != hi:
             raise LevelMismatchError("cells of mixed levels need an explicit child level")
-        level = int(levels[0]) + 1
+        level = lo + 1
     level = check_level(level, "child level")
-    if dec.level.max() > level:
-        i = int(np.argmax(dec.level))
+    if hi > level:
+        i = int(np.argmax(cell_levels))
         raise LevelMismatchError(
-            f"child level {level} is coarser than cell {str(ids[i])!r} at level {int(dec.level[i])}"
+            f"child level {level} is coarser than cell {str(ids[i])!r} at level {int(cell_levels[i])}"
         )
     parts = []
-    order = np.argsort(ids, kind="stable")
-    for lv in levels:
-        sel = order[dec.level[order] == lv]
+    if lo == hi:
+        order = np.arange(len(ids))
+        unique_levels = [lo]
+    else:
+        order = np.argsort(ids, kind="stable")
+        unique_levels = np.unique(cell_levels)
+    for lv in unique_levels:
+        sel = order if lo == hi else order[cell_levels[order] == lv]
         suffix = _suffixes(level - int(lv), lv == 0)
         suffix = suffix + np.uint32(ord("0"))
         base = ids[sel].astype(f"<U{lv + 1}").view(np.uint32).reshape(len(sel), int(lv) + 1)
