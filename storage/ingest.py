@@ -272,20 +272,25 @@ def prepare(
     """
     n = len(batch)
     bad: _Bad = dict(batch.bad)
-    lat = _floats(batch.lat, "lat", bad, batch.text)
-    lng = _floats(batch.lng, "lng", bad, batch.text)
+    lat_bad: _Bad = {}
+    lng_bad: _Bad = {}
+    lat = _floats(batch.lat, "lat", lat_bad, batch.text)
+    lng = _floats(batch.lng, "lng", lng_bad, batch.text)
     if transformer is not None:
         ok = np.isfinite(lat) & np.isfinite(lng)
         x, y = transformer.transform(np.where(ok, lng, 0.0), np.where(ok, lat, 0.0))
         lng, lat = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
         failed = ok & ~(np.isfinite(lat) & np.isfinite(lng))
         for i in np.flatnonzero(failed).tolist():
-            bad.setdefault(i, ("lat", (batch.lat[i], batch.lng[i]), "cannot be transformed to WGS84"))
+            lat_bad.setdefault(i, ("lat", (batch.lat[i], batch.lng[i]), "cannot be transformed to WGS84"))
     with np.errstate(invalid="ignore"):
         for i in np.flatnonzero(np.abs(lat) > 90).tolist():
-            bad.setdefault(i, ("lat", batch.lat[i], "is out of range -90..90"))
+            lat_bad.setdefault(i, ("lat", batch.lat[i], "is out of range -90..90"))
         for i in np.flatnonzero(np.abs(lng) > 180).tolist():
-            bad.setdefault(i, ("lng", batch.lng[i], "is out of range -180..180"))
+            lng_bad.setdefault(i, ("lng", batch.lng[i], "is out of range -180..180"))
+    for found in (lat_bad, lng_bad):  # report the first bad column, left to right
+        for i, problem in found.items():
+            bad.setdefault(i, problem)
     columns = [_convert(batch.values[name], kind, name, bad, batch.text) for name, kind in types.items()]
 
     good = np.ones(n, dtype=bool)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 import warnings
 
 import numpy as np
@@ -273,3 +274,57 @@ def test_not_geojson(store, tmp_path):
 def test_on_error_must_be_known(store):
     with pytest.raises(dggs.DggsValueError, match="on_error"):
         store.ingest_points([1.0], [2.0], 3, on_error="ignore")
+
+
+# -- property: any CSV, either path, agrees with a brute-force parse ----------
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_numbers = st.one_of(
+    st.floats(-200, 200, allow_nan=False).map(lambda x: repr(round(x, 5))),
+    st.integers(-200, 200).map(str),
+)
+_cells = st.one_of(_numbers, st.sampled_from(["", "nan", "inf", "-inf", "abc", "1e400", " 7 "]))
+
+
+def _brute(lat: str, lng: str, v: str):
+    """(stored lat, lng, v) or the bad column, by the documented rules."""
+    def num(s):
+        try:
+            return float(s)
+        except ValueError:
+            return None
+
+    a, b = num(lat), num(lng)
+    if a is None or not math.isfinite(a) or abs(a) > 90:
+        return "lat"
+    if b is None or not math.isfinite(b) or abs(b) > 180:
+        return "lng"
+    if v.strip() == "":
+        return (a, b, None)
+    x = num(v)
+    if x is None or math.isinf(x):
+        return "v"
+    return (a, b, None if math.isnan(x) else x)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(_cells, _cells, _cells), min_size=0, max_size=40), st.integers(1, 9))
+def test_any_csv_matches_brute_force(tmp_path_factory, rows, batch_size):
+    path = write_csv(tmp_path_factory.mktemp("h") / "h.csv", ["lat", "lng", "v"], [list(r) for r in rows])
+    with CellStore(":memory:") as store, warnings.catch_warnings():
+        warnings.simplefilter("ignore", RejectedRowsWarning)
+        result = store.ingest_csv(path, values={"v": float}, level=6, batch_size=batch_size, on_error="skip")
+        stored = {r["row"]: r for r in store.db.query("SELECT * FROM all_points")}
+        rejected = {r["row"]: r["column"] for r in store.rejects()}
+    assert result.rows_read == len(rows)
+    assert len(stored) + len(rejected) == len(rows)
+    for i, (lat, lng, v) in enumerate(rows, start=1):
+        want = _brute(lat, lng, v)
+        if isinstance(want, str):
+            assert rejected.get(i) == want, (i, lat, lng, v)
+        else:
+            got = stored[i]
+            assert (got["lat"], got["lng"], got["v"]) == want, (i, lat, lng, v)
+            assert got["cell"] == dggs.latlng_to_cell(want[0], want[1], 6)
