@@ -237,8 +237,106 @@ def _locate_per_level(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     return digits
 
 
+@lru_cache(maxsize=1)
+def _inverse_blocks():
+    """Inverse (contracting) maps of 1- and K-digit paths: child frame -> parent frame.
+
+    For digits d1..dk (parent to child), ``G = f_d1^-1 o ... o f_dk^-1`` as
+    ``(A, b)`` with ``G(p) = A p + b``; index = digits read as a base-3 number.
+    """
+    inv_m = np.linalg.inv(_M)
+    inv_t = -np.einsum("nij,nj->ni", inv_m, _T)
+    out = {}
+    for k in (1, _K):
+        codes = np.indices((3,) * k).reshape(k, -1).T
+        a = np.tile(np.eye(2), (len(codes), 1, 1))
+        b = np.zeros((len(codes), 2))
+        for j in range(k):  # G = G o g_dj
+            g_m, g_t = inv_m[codes[:, j]], inv_t[codes[:, j]]
+            b = np.einsum("nij,nj->ni", a, g_t) + b
+            a = np.einsum("nij,njk->nik", a, g_m)
+        out[k] = (a, b)
+    return out
+
+
 def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
     """Face-frame corners ``(A, B, C)`` of cells, each an (N, 2) array.
+
+    Parameters
+    ----------
+    l1 : (N,) int array
+        Level-1 digits 0..5.
+    digits : (N, L) int array
+        The later digits (0..2), one column per level from 2 on.
+    levels : (N,) int array, optional
+        Each cell's level, for rows of mixed depth (columns past a row's
+        level are ignored).  Default: every row uses all columns.
+
+    Notes
+    -----
+    The map from the cell's canonical frame back to its level-1 triangle's
+    is composed four digits at a time from precomputed contractions, then the
+    canonical corners (sqrt3, 0), (0, 1), (0, 0) are carried through it.
+    """
+    n = l1.shape[0]
+    if levels is None:
+        levels = np.full(n, digits.shape[1] + 1)
+    blocks = _inverse_blocks()
+    a00, a01, a10, a11 = np.ones(n), np.zeros(n), np.zeros(n), np.ones(n)
+    b0, b1 = np.zeros(n), np.zeros(n)
+    depth = levels - 1  # digits to apply per row
+    col = 0
+    ncols = digits.shape[1]
+    while col < ncols:
+        k = _K if col + _K <= ncols else 1
+        step = blocks[k]
+        code = np.zeros(n, dtype=np.intp)
+        for j in range(k):
+            code = code * 3 + digits[:, col + j]
+        use = depth >= col + k
+        if k == _K:
+            # rows with fewer digits left than a block take them one at a time below
+            partial = (depth > col) & ~use
+        m, t = step[0][code], step[1][code]
+        # G = G o g (only where this row still has these digits)
+        nb0 = a00 * t[:, 0] + a01 * t[:, 1] + b0
+        nb1 = a10 * t[:, 0] + a11 * t[:, 1] + b1
+        n00 = a00 * m[:, 0, 0] + a01 * m[:, 1, 0]
+        n01 = a00 * m[:, 0, 1] + a01 * m[:, 1, 1]
+        n10 = a10 * m[:, 0, 0] + a11 * m[:, 1, 0]
+        n11 = a10 * m[:, 0, 1] + a11 * m[:, 1, 1]
+        a00, a01, a10, a11 = (np.where(use, v, w) for v, w in ((n00, a00), (n01, a01), (n10, a10), (n11, a11)))
+        b0, b1 = np.where(use, nb0, b0), np.where(use, nb1, b1)
+        if k == _K and partial.any():
+            # finish the short rows digit by digit inside this block
+            rows = np.flatnonzero(partial)
+            single_m, single_t = blocks[1]
+            for j in range(_K):
+                sub = rows[depth[rows] > col + j]
+                if sub.size == 0:
+                    break
+                d = digits[sub, col + j]
+                m1, t1 = single_m[d], single_t[d]
+                c00, c01, c10, c11 = a00[sub], a01[sub], a10[sub], a11[sub]
+                b0[sub] = c00 * t1[:, 0] + c01 * t1[:, 1] + b0[sub]
+                b1[sub] = c10 * t1[:, 0] + c11 * t1[:, 1] + b1[sub]
+                a00[sub] = c00 * m1[:, 0, 0] + c01 * m1[:, 1, 0]
+                a01[sub] = c00 * m1[:, 0, 1] + c01 * m1[:, 1, 1]
+                a10[sub] = c10 * m1[:, 0, 0] + c11 * m1[:, 1, 0]
+                a11[sub] = c10 * m1[:, 0, 1] + c11 * m1[:, 1, 1]
+        col += k
+    # canonical corners A = (sqrt3, 0), B = (0, 1), C = (0, 0) -> level-1 canonical frame
+    ca = np.stack([a00 * SQRT3 + b0, a10 * SQRT3 + b1], axis=1)
+    cb = np.stack([a01 + b0, a11 + b1], axis=1)
+    cc = np.stack([b0, b1], axis=1)
+    # level-1 canonical -> face frame: p = C_d + r * rows_d^T p_can
+    rows_t = np.swapaxes(_L1_ROWS[l1], 1, 2) * (FACE_INRADIUS**2)
+    centre = _L1_C[l1]
+    return tuple(centre + np.einsum("nij,nj->ni", rows_t, v) for v in (ca, cb, cc))
+
+
+def _cell_vertices_per_level(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
+    """Reference for :func:`cell_vertices`: midpoints and thirds, level by level.
 
     Parameters
     ----------

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from dggs import snyder
+from dggs._parallel import run_chunks
 from dggs.authalic import WGS84
 from dggs.icosahedron import ISEA, latlng_to_xyz, xyz_to_latlng
 from dggs.split26 import FACE_VERTICES, cell_vertices
@@ -36,9 +37,16 @@ def xyz_to_geodetic(xyz: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def planar_to_geodetic(face: np.ndarray, x: np.ndarray, y: np.ndarray):
-    """Face-frame points -> geodetic (lat, lng) degrees (exact closed-form inverse)."""
-    xyz, _ = snyder.inverse_xyz(face, x, y, ORIENTATION)
-    return xyz_to_geodetic(xyz)
+    """Face-frame points -> geodetic (lat, lng) degrees (exact closed-form inverse), chunked."""
+    n = x.shape[0]
+    lat, lng = np.empty(n), np.empty(n)
+
+    def kernel(sl: slice) -> None:
+        xyz, _ = snyder.inverse_xyz(face[sl], x[sl], y[sl], ORIENTATION)
+        lat[sl], lng[sl] = xyz_to_geodetic(xyz)
+
+    run_chunks(kernel, n)
+    return lat, lng
 
 
 def corners(dec: Decoded) -> np.ndarray:
