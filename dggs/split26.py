@@ -193,6 +193,18 @@ def _jump(px: np.ndarray, py: np.ndarray, digits: np.ndarray, col: int):
     return a00[code] * px + a01[code] * py + b0[code], a10[code] * px + a11[code] * py + b1[code]
 
 
+def _start(x: np.ndarray, y: np.ndarray, level: int):
+    """Digit array with the level-1 digits filled, and the points in their level-1 canonical frame."""
+    digits = np.empty((x.shape[0], max(level, 0)), dtype=np.uint8)
+    if level <= 0:
+        return digits, None, None
+    d = level1_digit(x, y)
+    digits[:, 0] = d
+    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
+    rows = _L1_ROWS[d]
+    return digits, rows[:, 0, 0] * dx + rows[:, 0, 1] * dy, rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
+
+
 def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     """Digits (N, level) uint8 of the level-``level`` cells holding face-frame points.
 
@@ -203,16 +215,9 @@ def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     per-level comparisons exactly (points near a cell edge take the
     per-level path).
     """
-    n = x.shape[0]
-    digits = np.empty((n, max(level, 0)), dtype=np.uint8)
+    digits, px, py = _start(x, y, level)
     if level <= 0:
         return digits
-    d = level1_digit(x, y)
-    digits[:, 0] = d
-    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
-    rows = _L1_ROWS[d]
-    px = rows[:, 0, 0] * dx + rows[:, 0, 1] * dy
-    py = rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
     col = 1
     while level - col >= _K:
         px, py = _jump(px, py, digits, col)
@@ -223,16 +228,9 @@ def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
 
 def _locate_per_level(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     """Reference: :func:`locate` without the jump table (for tests)."""
-    n = x.shape[0]
-    digits = np.empty((n, max(level, 0)), dtype=np.uint8)
+    digits, px, py = _start(x, y, level)
     if level <= 0:
         return digits
-    d = level1_digit(x, y)
-    digits[:, 0] = d
-    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
-    rows = _L1_ROWS[d]
-    px = rows[:, 0, 0] * dx + rows[:, 0, 1] * dy
-    py = rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
     _descend(px, py, level - 1, digits, 1)
     return digits
 
@@ -259,6 +257,34 @@ def _inverse_blocks():
     return out
 
 
+def _compose_contractions(digits: np.ndarray) -> tuple[np.ndarray, ...]:
+    """``G = g_d1 o ... o g_dL`` for rows of equal depth: ``(a00, a01, a10, a11, b0, b1)``.
+
+    Four digits at a time from the precomputed blocks, then one at a time.
+    """
+    n, depth = digits.shape
+    blocks = _inverse_blocks()
+    a00, a01, a10, a11 = np.ones(n), np.zeros(n), np.zeros(n), np.ones(n)
+    b0, b1 = np.zeros(n), np.zeros(n)
+    col = 0
+    while col < depth:
+        k = _K if depth - col >= _K else 1
+        code = np.zeros(n, dtype=np.intp)
+        for j in range(k):
+            code = code * 3 + digits[:, col + j]
+        m, t = blocks[k][0][code], blocks[k][1][code]
+        # G = G o g: b += A t, A = A m
+        b0, b1 = a00 * t[:, 0] + a01 * t[:, 1] + b0, a10 * t[:, 0] + a11 * t[:, 1] + b1
+        a00, a01, a10, a11 = (
+            a00 * m[:, 0, 0] + a01 * m[:, 1, 0],
+            a00 * m[:, 0, 1] + a01 * m[:, 1, 1],
+            a10 * m[:, 0, 0] + a11 * m[:, 1, 0],
+            a10 * m[:, 0, 1] + a11 * m[:, 1, 1],
+        )
+        col += k
+    return a00, a01, a10, a11, b0, b1
+
+
 def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
     """Face-frame corners ``(A, B, C)`` of cells, each an (N, 2) array.
 
@@ -279,52 +305,12 @@ def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None 
     canonical corners (sqrt3, 0), (0, 1), (0, 0) are carried through it.
     """
     n = l1.shape[0]
-    if levels is None:
-        levels = np.full(n, digits.shape[1] + 1)
-    blocks = _inverse_blocks()
-    a00, a01, a10, a11 = np.ones(n), np.zeros(n), np.zeros(n), np.ones(n)
-    b0, b1 = np.zeros(n), np.zeros(n)
-    depth = levels - 1  # digits to apply per row
-    col = 0
-    ncols = digits.shape[1]
-    while col < ncols:
-        k = _K if col + _K <= ncols else 1
-        step = blocks[k]
-        code = np.zeros(n, dtype=np.intp)
-        for j in range(k):
-            code = code * 3 + digits[:, col + j]
-        use = depth >= col + k
-        if k == _K:
-            # rows with fewer digits left than a block take them one at a time below
-            partial = (depth > col) & ~use
-        m, t = step[0][code], step[1][code]
-        # G = G o g (only where this row still has these digits)
-        nb0 = a00 * t[:, 0] + a01 * t[:, 1] + b0
-        nb1 = a10 * t[:, 0] + a11 * t[:, 1] + b1
-        n00 = a00 * m[:, 0, 0] + a01 * m[:, 1, 0]
-        n01 = a00 * m[:, 0, 1] + a01 * m[:, 1, 1]
-        n10 = a10 * m[:, 0, 0] + a11 * m[:, 1, 0]
-        n11 = a10 * m[:, 0, 1] + a11 * m[:, 1, 1]
-        a00, a01, a10, a11 = (np.where(use, v, w) for v, w in ((n00, a00), (n01, a01), (n10, a10), (n11, a11)))
-        b0, b1 = np.where(use, nb0, b0), np.where(use, nb1, b1)
-        if k == _K and partial.any():
-            # finish the short rows digit by digit inside this block
-            rows = np.flatnonzero(partial)
-            single_m, single_t = blocks[1]
-            for j in range(_K):
-                sub = rows[depth[rows] > col + j]
-                if sub.size == 0:
-                    break
-                d = digits[sub, col + j]
-                m1, t1 = single_m[d], single_t[d]
-                c00, c01, c10, c11 = a00[sub], a01[sub], a10[sub], a11[sub]
-                b0[sub] = c00 * t1[:, 0] + c01 * t1[:, 1] + b0[sub]
-                b1[sub] = c10 * t1[:, 0] + c11 * t1[:, 1] + b1[sub]
-                a00[sub] = c00 * m1[:, 0, 0] + c01 * m1[:, 1, 0]
-                a01[sub] = c00 * m1[:, 0, 1] + c01 * m1[:, 1, 1]
-                a10[sub] = c10 * m1[:, 0, 0] + c11 * m1[:, 1, 0]
-                a11[sub] = c10 * m1[:, 0, 1] + c11 * m1[:, 1, 1]
-        col += k
+    depth = np.full(n, digits.shape[1]) if levels is None else levels - 1
+    coef = np.empty((6, n))
+    for d in np.unique(depth):
+        rows = np.flatnonzero(depth == d)
+        coef[:, rows] = _compose_contractions(digits[rows, :d])
+    a00, a01, a10, a11, b0, b1 = coef
     # canonical corners A = (sqrt3, 0), B = (0, 1), C = (0, 0) -> level-1 canonical frame
     ca = np.stack([a00 * SQRT3 + b0, a10 * SQRT3 + b1], axis=1)
     cb = np.stack([a01 + b0, a11 + b1], axis=1)
@@ -336,18 +322,7 @@ def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None 
 
 
 def _cell_vertices_per_level(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
-    """Reference for :func:`cell_vertices`: midpoints and thirds, level by level.
-
-    Parameters
-    ----------
-    l1 : (N,) int array
-        Level-1 digits 0..5.
-    digits : (N, L) int array
-        The later digits (0..2), one column per level from 2 on.
-    levels : (N,) int array, optional
-        Each cell's level, for rows of mixed depth (columns past a row's
-        level are ignored).  Default: every row uses all columns.
-    """
+    """Reference for :func:`cell_vertices`: D and E level by level (thesis §6.1.7)."""
     tri = LEVEL1[l1]
     a, b, c = tri[:, 0].copy(), tri[:, 1].copy(), tri[:, 2].copy()
     for col in range(digits.shape[1]):
