@@ -364,12 +364,15 @@ def run_ingest(
     replace: bool,
     progress: Callable[[int], Any] | None,
     file_info: Mapping[str, Any] | None = None,
+    threaded: bool = True,
 ) -> IngestResult:
     """Ingest batches into ``store`` with per-batch transactions and resume.
 
     ``batches(skip, types)`` must yield the input's batches after its first
     ``skip`` records, the same way on every call; ``types`` is the live
-    mapping of value column types, filled in as they become known.
+    mapping of value column types, filled in as they become known.  With
+    ``threaded``, batches are read in a background thread (not for user
+    iterables, which may be tied to their thread, like sqlite3 cursors).
     """
     if on_error not in ("fail", "skip"):
         raise DggsValueError(f"on_error must be 'fail' or 'skip', not {on_error!r}")
@@ -395,7 +398,9 @@ def run_ingest(
         with store._transaction():
             add_columns(conn, missing)
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
-    work = _Producer(batches(source["rows_done"], known), level, known, declared, transformer, source_id)
+    work = _Producer(
+        batches(source["rows_done"], known), level, known, declared, transformer, source_id, threaded
+    )
     try:
         for batch, prepared, types, new in work:
             if prepared.rejects and on_error == "fail":
@@ -444,7 +449,8 @@ class _Producer:
 
     Parsing, checking and binning (Python and numpy) overlap with SQLite
     writing, which releases the GIL.  Only the calling thread touches the
-    database; errors in the thread are re-raised in the caller.
+    database; errors in the thread are re-raised in the caller.  With
+    ``threaded=False`` the batches are prepared in the caller's thread.
     """
 
     _DONE = object()
@@ -457,15 +463,18 @@ class _Producer:
         declared: Mapping[str, str],
         transformer: Any,
         source_id: int,
+        threaded: bool = True,
     ) -> None:
         self._batches = batches
+        self._threaded = threaded
         self._args = (level, transformer, source_id)
         self._types = existing  # the same dict the reader sees
         self._declared = declared
         self._queue: queue.Queue = queue.Queue(maxsize=2)
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._run, name="dggs-ingest-reader", daemon=True)
-        self._thread.start()
+        if threaded:
+            self._thread.start()
 
     def _put(self, item: Any) -> bool:
         while not self._stopped.is_set():
@@ -476,21 +485,27 @@ class _Producer:
                 continue
         return False
 
-    def _run(self) -> None:
+    def _prepared(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
         level, transformer, source_id = self._args
+        for batch in self._batches:
+            new = value_types(batch, self._types, self._declared)
+            self._types.update(new)
+            types = {name: self._types[name] for name in batch.values}
+            yield batch, prepare(batch, level, types, transformer, source_id), types, new
+
+    def _run(self) -> None:
         try:
-            for batch in self._batches:
-                new = value_types(batch, self._types, self._declared)
-                self._types.update(new)
-                types = {name: self._types[name] for name in batch.values}
-                prepared = prepare(batch, level, types, transformer, source_id)
-                if not self._put((batch, prepared, types, new)):
+            for item in self._prepared():
+                if not self._put(item):
                     return
             self._put(self._DONE)
         except BaseException as exc:  # noqa: BLE001 - handed to the caller
             self._put(exc)
 
     def __iter__(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
+        if not self._threaded:
+            yield from self._prepared()
+            return
         while True:
             item = self._queue.get()
             if item is self._DONE:
@@ -502,7 +517,8 @@ class _Producer:
     def stop(self) -> None:
         """Ask the thread to finish and wait for it."""
         self._stopped.set()
-        self._thread.join(timeout=10)
+        if self._threaded:
+            self._thread.join(timeout=10)
 
 
 def _write_batch(

@@ -263,9 +263,16 @@ def records_batches(
             return
         bad: dict[int, tuple[str | None, Any, str]] = {}
         for i, item in enumerate(chunk):
-            if not isinstance(item, Mapping):
-                bad[i] = (None, item, "is not a mapping (dict)")
-                chunk[i] = {}
+            if isinstance(item, Mapping):
+                continue
+            if hasattr(item, "keys"):  # sqlite3.Row and other dict-likes
+                try:
+                    chunk[i] = {key: item[key] for key in item.keys()}
+                    continue
+                except (TypeError, KeyError, IndexError):
+                    pass
+            bad[i] = (None, item, "is not a mapping (dict)")
+            chunk[i] = {}
         yield RawBatch(
             consumed=len(chunk),
             rows=range(done + 1, done + len(chunk) + 1),

@@ -563,6 +563,7 @@ class CellStore:
             name=source if source is not None else "<records>",
             params={"format": "records", "lat": lat, "lng": lng, "values": names},
             batches=lambda skip, types=None: readers.records_batches(records, lat, lng, names, batch_size, skip),
+            threaded=False,  # the iterable may belong to this thread (a sqlite3 cursor...)
             level=level,
             declared=declared,
             crs=crs,

@@ -328,3 +328,14 @@ def test_any_csv_matches_brute_force(tmp_path_factory, rows, batch_size):
             got = stored[i]
             assert (got["lat"], got["lng"], got["v"]) == want, (i, lat, lng, v)
             assert got["cell"] == dggs.latlng_to_cell(want[0], want[1], 6)
+
+
+def test_records_from_a_sqlite_cursor_of_this_thread(store):
+    import sqlite3
+
+    con = sqlite3.connect(":memory:")
+    con.row_factory = sqlite3.Row
+    con.execute("CREATE TABLE t (lat REAL, lng REAL, v INTEGER)")
+    con.executemany("INSERT INTO t VALUES (?, ?, ?)", [(i / 10, i / 5, i) for i in range(50)])
+    result = store.ingest_records(con.execute("SELECT * FROM t"), values=["v"], level=5, batch_size=7)
+    assert result.rows_inserted == 50
