@@ -22,9 +22,9 @@ import time
 from pathlib import Path
 
 import numpy as np
+from dggs.storage import CellStore
 
 import dggs
-from dggs.storage import CellStore
 
 
 def make_csv(path: Path, rows: int, seed: int = 0) -> None:
@@ -61,6 +61,7 @@ def timed(fn, repeat: int = 5) -> float:
 
 
 def main() -> None:
+    """Generate the CSV, ingest it, time the queries, print a markdown table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rows", type=int, default=1_000_000)
     parser.add_argument("--level", type=int, default=12)

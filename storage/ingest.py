@@ -172,13 +172,13 @@ def _convert(raw: Sequence[Any], kind: str, name: str, bad: _Bad, text: bool) ->
     if kind == "TEXT":
         if text:
             return [value if value != "" else None for value in raw]
-        out = []
+        texts: list[Any] = []
         for value in (raw.tolist() if isinstance(raw, np.ndarray) else raw):
             if value is None or (isinstance(value, float) and math.isnan(value)):
-                out.append(None)
+                texts.append(None)
             else:
-                out.append(value if isinstance(value, str) else str(value))
-        return out
+                texts.append(value if isinstance(value, str) else str(value))
+        return texts
     arr = raw if isinstance(raw, np.ndarray) else None
     if arr is not None and arr.dtype.kind in "iub":
         return arr.tolist()

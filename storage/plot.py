@@ -68,6 +68,8 @@ def plot_cells(
         A matplotlib colormap name.
     points : (lat, lng) arrays, optional
         Points to draw as faint dots under the cells (e.g. the raw data).
+    dpi : int, default 150
+        Resolution of the PNG.
 
     Raises
     ------
@@ -147,7 +149,7 @@ def plot_cells(
         collection = PolyCollection(polys, cmap=colours, norm=norm, edgecolors="face", linewidths=0.15, zorder=2)
         shown = np.where(np.isfinite(pv), pv, np.nan)
         if log:  # zero and below: the bottom colour
-            shown = np.where(shown > 0, shown, norm.vmin)
+            shown = np.where(shown > 0, shown, float(norm.vmin or 0.0))
         collection.set_array(np.ma.masked_invalid(shown))
         ax.add_collection(collection)
         cax = fig.add_axes((0.3, 0.105, 0.4, 0.025))

@@ -13,8 +13,10 @@ import csv
 import itertools
 import json
 import operator
+import os
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +24,9 @@ import numpy as np
 
 import dggs
 from dggs.errors import DggsValueError, StorageError
+
+#: A column of raw values: a list, tuple or numpy array.
+Column = Any
 
 __all__ = ["RawBatch", "csv_batches", "records_batches", "array_batches", "geojson_batches"]
 
@@ -60,9 +65,9 @@ class RawBatch:
     consumed: int
     rows: Sequence[int]
     lines: Sequence[int] | None
-    lat: Sequence[Any]
-    lng: Sequence[Any]
-    values: dict[str, Sequence[Any]]
+    lat: Column
+    lng: Column
+    values: dict[str, Column]
     text: bool
     record: Callable[[int], dict]
     bad: dict[int, tuple[str | None, Any, str]] = field(default_factory=dict)
@@ -71,6 +76,14 @@ class RawBatch:
 
     def __len__(self) -> int:
         return len(self.rows)
+
+
+def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict:
+    return dict(items[i])
+
+
+def _feature_at(props: Sequence[dict], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict:
+    return {"lat": lat[i], "lng": lng[i], **props[i]}
 
 
 def _skip(iterator: Iterator[Any], n: int) -> None:
@@ -241,7 +254,7 @@ def _csv_chunk(
 
 
 def lines_in(record: list[str]) -> int:
-    """Number of physical lines a parsed CSV record spanned (1 + embedded newlines)."""
+    """Count the physical lines a parsed CSV record spanned (1 + embedded newlines)."""
     return 1 + sum(field.count("\n") for field in record)
 
 
@@ -281,7 +294,7 @@ def records_batches(
             lng=[item.get(lng) for item in chunk],
             values={name: [item.get(name) for item in chunk] for name in values},
             text=False,
-            record=lambda i, _chunk=chunk: dict(_chunk[i]),
+            record=partial(_dict_at, chunk),
             bad=bad,
         )
         done += len(chunk)
@@ -393,10 +406,10 @@ def geojson_batches(
 
         for offset, feature in enumerate(chunk):
             row = start + offset + 1
-            geometry = feature.get("geometry") if isinstance(feature, dict) else None
+            geometry: Any = feature.get("geometry") if isinstance(feature, dict) else None
             prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
             kind = geometry.get("type") if isinstance(geometry, dict) else None
-            coords = geometry.get("coordinates") if isinstance(geometry, dict) else None
+            coords: Any = geometry.get("coordinates") if isinstance(geometry, dict) else None
             try:
                 if kind == "Point":
                     add(row, coords[1], coords[0], "", prop)
@@ -433,7 +446,7 @@ def geojson_batches(
             lng=lng,
             values={name: [p.get(name) for p in props] for name in values},
             text=False,
-            record=lambda i, _p=props, _la=lat, _ln=lng: {"lat": _la[i], "lng": _ln[i], **_p[i]},
+            record=partial(_feature_at, props, lat, lng),
             bad=bad,
             cells=cells,
             parts=parts,
@@ -456,7 +469,7 @@ def count_csv_rows(path: str | Path) -> int:
     return max(count - 1, 0)
 
 
-def sniff_kind(path: str | Path) -> str:
+def sniff_kind(path: str | os.PathLike[str]) -> str:
     """Return ``"csv"`` or ``"geojson"`` from a file's name.
 
     Raises

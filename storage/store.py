@@ -27,7 +27,13 @@ from typing import Any
 import sqlite_utils
 
 import dggs
-from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError, StorageError
+from dggs.errors import (
+    DggsValueError,
+    InvalidCellError,
+    LevelError,
+    LevelMismatchError,
+    StorageError,
+)
 
 from . import readers
 from .ingest import MERGE_ROWS, IngestResult, run_ingest
@@ -312,7 +318,7 @@ class CellStore:
         return deleted
 
     def sources(self) -> list[dict[str, Any]]:
-        """The ingested sources with their progress, oldest first."""
+        """List the ingested sources with their progress, oldest first."""
         return list(
             self.db.query(
                 "SELECT id, kind, name, size, sha256, crs, rows_done, rows_inserted, rows_rejected, "
@@ -446,7 +452,7 @@ class CellStore:
             kind="csv",
             name=str(path),
             params=params,
-            batches=lambda skip, types=None: readers.csv_batches(
+            batches=lambda skip, types: readers.csv_batches(
                 file, lat, lng, names, batch_size, skip, delimiter, types
             ),
             level=level,
@@ -513,7 +519,7 @@ class CellStore:
             kind="geojson",
             name=str(path),
             params={"format": "geojson", "values": names},
-            batches=lambda skip, types=None: readers.geojson_batches(features, names, level, batch_size, skip),
+            batches=lambda skip, types: readers.geojson_batches(features, names, level, batch_size, skip),
             level=level,
             declared=declared,
             crs=None,
@@ -562,7 +568,7 @@ class CellStore:
             kind="records",
             name=source if source is not None else "<records>",
             params={"format": "records", "lat": lat, "lng": lng, "values": names},
-            batches=lambda skip, types=None: readers.records_batches(records, lat, lng, names, batch_size, skip),
+            batches=lambda skip, types: readers.records_batches(records, lat, lng, names, batch_size, skip),
             threaded=False,  # the iterable may belong to this thread (a sqlite3 cursor...)
             level=level,
             declared=declared,
@@ -598,8 +604,12 @@ class CellStore:
         values : dict of array_like, optional
             Value columns, each as long as ``lat``; types follow the dtypes
             unless given in ``types``.
+        types : dict, optional
+            SQL types of value columns, overriding the dtypes.
         source : str, optional
             Name that makes the ingest resumable (see :meth:`ingest_records`).
+        crs, batch_size, on_error, replace, progress
+            As in :meth:`ingest_csv` (default batch 100,000 rows).
 
         Examples
         --------
@@ -614,8 +624,11 @@ class CellStore:
         values = dict(values or {})
         for name in values:
             check_column_name(name)
-        declared = {name: _dtype_type(col) for name, col in values.items()}
-        declared = {k: v for k, v in declared.items() if v is not None}
+        declared: dict[str, Any] = {}
+        for name, col in values.items():
+            implied = _dtype_type(col)
+            if implied is not None:
+                declared[name] = implied
         declared.update(types or {})
         return run_ingest(
             self,
@@ -623,7 +636,7 @@ class CellStore:
             kind="arrays",
             name=source if source is not None else "<arrays>",
             params={"format": "arrays", "values": list(values)},
-            batches=lambda skip, types=None: readers.array_batches(lat, lng, values, batch_size, skip),
+            batches=lambda skip, types: readers.array_batches(lat, lng, values, batch_size, skip),
             level=level,
             declared=declared,
             crs=crs,
@@ -834,8 +847,9 @@ class CellStore:
         cell : str, optional
             Only roll up rows under this cell.
         order_by : str, optional
-            A stat to sort by (descending unless ``descending=False``);
-            default the cell id.
+            A stat to sort by; default the cell id.
+        descending : bool, default True
+            Sort ``order_by`` largest first.
         limit : int, optional
             Return at most this many cells.
 
@@ -1022,7 +1036,7 @@ class CellStore:
 
 
 def _dtype_type(column: Any) -> str | None:
-    """SQL type implied by an array's dtype, or None (object arrays, lists)."""
+    """Return the SQL type implied by an array's dtype, or None (object arrays, lists)."""
     kind = getattr(column, "dtype", None)
     kind = kind.kind if kind is not None else None
     return {"i": "INTEGER", "u": "INTEGER", "b": "INTEGER", "f": "REAL", "U": "TEXT", "S": "TEXT"}.get(kind or "")
