@@ -218,8 +218,24 @@ def face_of(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
 
 
 def face_dots(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
-    """Dot products (N, 20) of points with the face centres, tie bias included."""
-    return xyz @ geometry(orientation).centres.T + _BIAS
+    """Dot products (N, 20) of points with the face centres, tie bias included.
+
+    The product runs in blocks of 4,096 rows: small enough that OpenBLAS keeps
+    it on the calling thread (its own threads would fight dggs's thread pool
+    for the cores, which made point location 1.4-2.4x slower).
+    """
+    centres_t = geometry(orientation).centres.T
+    n = xyz.shape[0]
+    out = np.empty((n, NUM_FACES))
+    for start in range(0, n, _BLAS_BLOCK):
+        stop = min(start + _BLAS_BLOCK, n)
+        np.matmul(xyz[start:stop], centres_t, out=out[start:stop])
+    out += _BIAS
+    return out
+
+
+# OpenBLAS multithreads a product once M * N * K exceeds 65536 * 4; 4096 * 20 * 3 does not.
+_BLAS_BLOCK = 4096
 
 
 #: Dot-product step per face index that settles near-ties towards lower faces.
