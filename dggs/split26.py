@@ -118,20 +118,21 @@ def level1_digit(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.minimum((az * (3 / math.pi)).astype(np.intp), 5)
 
 
-def _descend(px: np.ndarray, py: np.ndarray, steps: int, digits: np.ndarray, col: int):
-    """Exact per-level descent in the canonical frame: writes ``steps`` digit columns.
+def _descend(px: np.ndarray, py: np.ndarray, steps: int, rows: np.ndarray, row: int):
+    """Exact per-level descent in the canonical frame: writes digit rows ``row..row+steps-1``.
 
-    Child 0 (BCD) lies on C's side of BD (``sqrt3 x + y < 1``); child 2 (ADE)
-    on A's side of DE (``sqrt3 x - y > 1``); child 1 (BDE) between them, so
-    it wins both of its internal edges.  Returns the point in the last
-    child's canonical frame.
+    ``rows`` holds one row of digits per level (shape (levels, N)).  Child 0
+    (BCD) lies on C's side of BD (``sqrt3 x + y < 1``); child 2 (ADE) on A's
+    side of DE (``sqrt3 x - y > 1``); child 1 (BDE) between them, so it wins
+    both of its internal edges.  Returns the point in the last child's
+    canonical frame.
     """
     m00, m01, m10, m11 = _M[:, 0, 0], _M[:, 0, 1], _M[:, 1, 0], _M[:, 1, 1]
     t0, t1 = _T[:, 0], _T[:, 1]
-    for c_ in range(col, col + steps):
+    for r in range(row, row + steps):
         sx = SQRT3 * px
         c = np.where(sx + py < 1.0, 0, np.where(sx - py > 1.0, 2, 1)).astype(np.uint8)
-        digits[:, c_] = c
+        rows[r] = c
         px, py = m00[c] * px + m01[c] * py + t0[c], m10[c] * px + m11[c] * py + t1[c]
     return px, py
 
@@ -164,45 +165,50 @@ def _jump_table():
 
     def node_codes(sx: float, sy: float) -> np.ndarray:
         px, py = (gx + sx * _EPS).ravel(), (gy + sy * _EPS).ravel()
-        d = np.empty((px.size, k), dtype=np.uint8)
+        d = np.empty((k, px.size), dtype=np.uint8)
         _descend(px, py, k, d, 0)
-        return (d.astype(np.intp) @ (3 ** np.arange(k - 1, -1, -1))).reshape(gx.shape)
+        return (3 ** np.arange(k - 1, -1, -1) @ d.astype(np.intp)).reshape(gx.shape)
 
     ll, lr = node_codes(-1, -1)[:-1, :-1], node_codes(+1, -1)[:-1, 1:]
     ul, ur = node_codes(-1, +1)[1:, :-1], node_codes(+1, +1)[1:, 1:]
     same = (ll == lr) & (ll == ul) & (ll == ur)
-    table = np.where(same, ll, _AMBIGUOUS).astype(np.uint8).ravel()
-    return table, codes, mats[:, 0, 0].copy(), mats[:, 0, 1].copy(), mats[:, 1, 0].copy(), mats[:, 1, 1].copy(), offs[:, 0].copy(), offs[:, 1].copy()
+    # a border of ambiguous cells catches points off the grid (after clipping)
+    table = np.full((_GRID_H + 2, _GRID_W + 2), _AMBIGUOUS, dtype=np.uint8)
+    table[1:-1, 1:-1] = np.where(same, ll, _AMBIGUOUS)
+    digit_rows = tuple(np.ascontiguousarray(codes[:, j]) for j in range(k))
+    coef = tuple(np.ascontiguousarray(v) for v in (mats[:, 0, 0], mats[:, 0, 1], mats[:, 1, 0], mats[:, 1, 1], offs[:, 0], offs[:, 1]))
+    return table.ravel(), digit_rows, coef
 
 
-def _jump(px: np.ndarray, py: np.ndarray, digits: np.ndarray, col: int):
+def _jump(px: np.ndarray, py: np.ndarray, rows: np.ndarray, row: int):
     """K levels at once through the jump table; exact descent where it is ambiguous."""
-    table, codes, a00, a01, a10, a11, b0, b1 = _jump_table()
-    ix = np.floor(px * (_GRID_W / SQRT3))
-    iy = np.floor(py * _GRID_H)
-    ok = (ix >= 0) & (ix < _GRID_W) & (iy >= 0) & (iy < _GRID_H)
-    idx = np.where(ok, iy * _GRID_W + ix, 0).astype(np.intp)
-    code = table[idx]
-    code[~ok] = _AMBIGUOUS
+    table, digit_rows, (a00, a01, a10, a11, b0, b1) = _jump_table()
+    # grid cell + 1 (the border), clipped: off-grid points land on the ambiguous border
+    ix = np.clip(px * (_GRID_W / SQRT3) + 1.0, 0.0, _GRID_W + 1.0).astype(np.intp)
+    iy = np.clip(py * _GRID_H + 1.0, 0.0, _GRID_H + 1.0).astype(np.intp)
+    iy *= _GRID_W + 2
+    iy += ix
+    code = table[iy]
     amb = np.flatnonzero(code == _AMBIGUOUS)
     if amb.size:
-        sub = np.empty((amb.size, _K), dtype=np.uint8)
+        sub = np.empty((_K, amb.size), dtype=np.uint8)
         _descend(px[amb], py[amb], _K, sub, 0)
-        code[amb] = sub.astype(np.intp) @ (3 ** np.arange(_K - 1, -1, -1))
-    digits[:, col : col + _K] = codes[code]
+        code[amb] = 3 ** np.arange(_K - 1, -1, -1) @ sub.astype(np.intp)
+    for j in range(_K):
+        rows[row + j] = digit_rows[j][code]
     return a00[code] * px + a01[code] * py + b0[code], a10[code] * px + a11[code] * py + b1[code]
 
 
 def _start(x: np.ndarray, y: np.ndarray, level: int):
-    """Digit array with the level-1 digits filled, and the points in their level-1 canonical frame."""
-    digits = np.empty((x.shape[0], max(level, 0)), dtype=np.uint8)
+    """Digit rows (level, N) with the level-1 digits filled, and the points in their level-1 canonical frame."""
+    rows = np.empty((max(level, 0), x.shape[0]), dtype=np.uint8)
     if level <= 0:
-        return digits, None, None
+        return rows, None, None
     d = level1_digit(x, y)
-    digits[:, 0] = d
+    rows[0] = d
     dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
-    rows = _L1_ROWS[d]
-    return digits, rows[:, 0, 0] * dx + rows[:, 0, 1] * dy, rows[:, 1, 0] * dx + rows[:, 1, 1] * dy
+    m = _L1_ROWS[d]
+    return rows, m[:, 0, 0] * dx + m[:, 0, 1] * dy, m[:, 1, 0] * dx + m[:, 1, 1] * dy
 
 
 def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
@@ -215,24 +221,24 @@ def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     per-level comparisons exactly (points near a cell edge take the
     per-level path).
     """
-    digits, px, py = _start(x, y, level)
+    rows, px, py = _start(x, y, level)
     if level <= 0:
-        return digits
-    col = 1
-    while level - col >= _K:
-        px, py = _jump(px, py, digits, col)
-        col += _K
-    _descend(px, py, level - col, digits, col)
-    return digits
+        return rows.T
+    row = 1
+    while level - row >= _K:
+        px, py = _jump(px, py, rows, row)
+        row += _K
+    _descend(px, py, level - row, rows, row)
+    return rows.T
 
 
 def _locate_per_level(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
     """Reference: :func:`locate` without the jump table (for tests)."""
-    digits, px, py = _start(x, y, level)
+    rows, px, py = _start(x, y, level)
     if level <= 0:
-        return digits
-    _descend(px, py, level - 1, digits, 1)
-    return digits
+        return rows.T
+    _descend(px, py, level - 1, rows, 1)
+    return rows.T
 
 
 @lru_cache(maxsize=1)

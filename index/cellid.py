@@ -42,11 +42,16 @@ def check_level(level, name: str = "level") -> int:
     return int(level)
 
 
-def encode(face: np.ndarray, digits: np.ndarray) -> np.ndarray:
-    """Ids (``U`` array) of cells given faces (N,) and digits (N, level)."""
+def encode(face: np.ndarray, digits: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+    """Ids (``U`` array) of cells given faces (N,) and digits (N, level).
+
+    With ``out`` (an (N, level + 1) uint32 view of a ``U`` array), the
+    characters are written there instead.
+    """
     n, level = digits.shape
-    codes = np.empty((n, level + 1), dtype=np.uint32)
-    codes[:, 0] = face + _ORD_A
+    codes = np.empty((n, level + 1), dtype=np.uint32) if out is None else out
+    codes[:, 0] = face
+    codes[:, 0] += _ORD_A
     codes[:, 1:] = digits
     codes[:, 1:] += _ORD_0
     return codes.view(f"<U{level + 1}").reshape(n)

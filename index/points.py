@@ -67,11 +67,12 @@ def latlng_to_cell(lat, lng, level: int):
     lat_a, lng_a, scalar = as_latlng(lat, lng)
     n = lat_a.shape[0]
     out = np.empty(n, dtype=f"<U{level + 1}")
+    codes = out.view(np.uint32).reshape(n, level + 1)  # write the characters in place
 
     def kernel(sl: slice) -> None:
         xyz = _geo.geodetic_to_xyz(lat_a[sl], lng_a[sl])
         face, x, y = snyder.forward_xyz(xyz, _geo.ORIENTATION)
-        out[sl] = encode(face, locate(x, y, level))
+        encode(face, locate(x, y, level), out=codes[sl])
 
     run_chunks(kernel, n)
     if scalar:
