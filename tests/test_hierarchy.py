@@ -86,7 +86,7 @@ def test_grandchildren_and_center_child(cell):
     for j in range(3):
         p, q = tri[j], tri[(j + 1) % 3]
         cross = (q[0] - p[0]) * (centroid[1] - p[1]) - (q[1] - p[1]) * (centroid[0] - p[0])
-        assert cross / size >= -1e-7 * size  # rounding: ~1e-16 absolute at any level
+        assert cross / size >= -1e-6 * size  # rounding: ~1e-16 absolute, 1e-6 of a level-40 cell
 
 
 def test_parent_errors():
