@@ -87,7 +87,7 @@ class Ellipsoid:
     Examples
     --------
     >>> Ellipsoid(6378137.0, 1 / 298.257223563, "WGS84").area  # doctest: +ELLIPSIS
-    510065621724088.5...
+    510065621724088...
     """
 
     a: float
