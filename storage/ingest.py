@@ -23,7 +23,6 @@ import time
 import warnings
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from itertools import repeat
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -108,6 +107,7 @@ class Prepared:
 
     rows: list[tuple]
     rejects: list[dict]
+    with_parts: bool = False
 
 
 def make_transformer(crs: Any) -> Any:
@@ -267,8 +267,8 @@ def prepare(
 ) -> Prepared:
     """Convert and check one batch; compute the cells of its good rows.
 
-    Returns the rows to insert (cell, lat, lng, source_id, row, part, then
-    value columns in ``types`` order) and the rejects.
+    Returns the rows to insert (cell, lat, lng, row, [part,] then value
+    columns in ``types`` order) and the rejects.
     """
     n = len(batch)
     bad: _Bad = dict(batch.bad)
@@ -309,20 +309,24 @@ def prepare(
         if known is not None:
             given = keep[known[keep] != ""]
             cells[given] = known[given]
-    part_col: Any = repeat(0) if batch.parts is None else batch.parts
+    # source_id is bound in the SQL text, and part only when there are parts:
+    # fewer parameters per row make executemany faster.
+    with_parts = batch.parts is not None
     if all_good:
-        parts = [cells.tolist(), lat.tolist(), lng.tolist(), repeat(source_id), batch.rows, part_col, *columns]
+        parts = [cells.tolist(), lat.tolist(), lng.tolist(), batch.rows, *columns]
+        if with_parts:
+            parts.insert(4, batch.parts)
     else:
         idx = keep.tolist()
         parts = [
             cells[keep].tolist(),
             lat[keep].tolist(),
             lng[keep].tolist(),
-            repeat(source_id),
             [batch.rows[i] for i in idx],
-            part_col if batch.parts is None else [batch.parts[i] for i in idx],
             *[[col[i] for i in idx] for col in columns],
         ]
+        if with_parts:
+            parts.insert(4, [batch.parts[i] for i in idx])  # type: ignore[index]
     rows = list(zip(*parts))
     rejects = []
     for i in sorted(bad):
@@ -337,7 +341,7 @@ def prepare(
                 "index": i,
             }
         )
-    return Prepared(rows=rows, rejects=rejects)
+    return Prepared(rows=rows, rejects=rejects, with_parts=with_parts)
 
 
 def _jsonable(value: Any) -> Any:
@@ -532,9 +536,11 @@ def _write_batch(
 ) -> None:
     """Commit one batch: its rows, its rejects and the source's progress, atomically."""
     conn = store.conn
+    part = "?" if prepared.with_parts else "0"
     insert = (
         f"INSERT INTO points_pending (cell, lat, lng, source_id, row, part"
-        f"{''.join(', ' + quote(c) for c in types)}) VALUES (?, ?, ?, ?, ?, ?{', ?' * len(types)})"
+        f"{''.join(', ' + quote(c) for c in types)}) "
+        f"VALUES (?, ?, ?, {int(source_id)}, ?, {part}{', ?' * len(types)})"
     )
     with store._transaction():
         if new:
