@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 import dggs
-from dggs.errors import DggsError
+from dggs.errors import DggsError, StorageError
 
 from .store import CellStore
 
@@ -107,10 +107,14 @@ def run_demo(
     )
 
     if db_path.exists() and not fresh:
-        with CellStore(db_path) as old:
-            stale = old.level not in (None, level)
+        try:
+            with CellStore(db_path) as old:
+                stale = old.level not in (None, level)
+            reason = "holds another level"
+        except StorageError as exc:  # e.g. written by an older dggs: the demo owns it
+            stale, reason = True, f"is unusable ({exc})"
         if stale:
-            echo(f"{db_path} holds another level; starting it afresh")
+            echo(f"{db_path} {reason}; starting it afresh")
             fresh = True
     if fresh:
         for suffix in ("", "-wal", "-shm"):
