@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 import dggs
-from dggs.errors import DggsValueError
+from dggs.errors import DggsValueError, StorageError
 
 from .errors import BadRowError, RejectedRowsWarning
 from .readers import RawBatch
@@ -401,6 +401,7 @@ def run_ingest(
     if missing:  # declared columns exist even if no row arrives
         with store._transaction():
             add_columns(conn, missing)
+    done = source["rows_done"]
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = _Producer(
         batches(source["rows_done"], known), level, known, declared, transformer, source_id, threaded
@@ -413,7 +414,8 @@ def run_ingest(
                     name, first["row"], first["line"], first["column"],
                     _jsonable(first["value"]), first["reason"],
                 )
-            _write_batch(store, source_id, level, batch, prepared, types, new)
+            _write_batch(store, source_id, level, batch, prepared, types, new, done, name)
+            done += batch.consumed
             result.rows_read += batch.consumed
             result.rows_inserted += len(prepared.rows)
             result.rows_rejected += len(prepared.rejects)
@@ -533,8 +535,15 @@ def _write_batch(
     prepared: Prepared,
     types: Mapping[str, str],
     new: Mapping[str, str],
+    done: int,
+    name: str,
 ) -> None:
-    """Commit one batch: its rows, its rejects and the source's progress, atomically."""
+    """Commit one batch: its rows, its rejects and the source's progress, atomically.
+
+    The progress update is a compare-and-set on ``rows_done``: if another
+    process is ingesting the same source, this one stops instead of storing
+    rows twice.
+    """
     conn = store.conn
     part = "?" if prepared.with_parts else "0"
     insert = (
@@ -567,9 +576,14 @@ def _write_batch(
                     for r in prepared.rejects
                 ],
             )
-        conn.execute(
+        updated = conn.execute(
             "UPDATE sources SET rows_done = rows_done + ?, rows_inserted = rows_inserted + ?, "
-            "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ?",
-            (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id),
-        )
+            "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ? AND rows_done = ?",
+            (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id, done),
+        ).rowcount
+        if updated != 1:
+            raise StorageError(
+                f"{name} is being ingested into {store.path} by another process too; "
+                "this one stopped (nothing stored twice): let the other finish"
+            )
         store._touch()

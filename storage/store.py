@@ -269,7 +269,7 @@ class CellStore:
             stamp = now()
             with self._transaction():
                 self.conn.execute(
-                    "INSERT INTO sources (key, kind, name, size, mtime, sha256, params, crs, started, updated) "
+                    "INSERT OR IGNORE INTO sources (key, kind, name, size, mtime, sha256, params, crs, started, updated) "
                     "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                     (
                         key,

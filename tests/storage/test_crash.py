@@ -139,3 +139,21 @@ def test_readers_work_while_a_writer_ingests(tmp_path, big_csv):
     assert len(set(counts)) > 2  # the reader saw the store grow
     with CellStore(db, readonly=True) as reader:
         assert reader.count() == N_ROWS
+
+
+def test_two_writers_on_one_source_never_duplicate(tmp_path, big_csv):
+    db = tmp_path / "two.db"
+    with CellStore(db):
+        pass
+    procs = [_start_writer(tmp_path, db, big_csv) for _ in range(2)]
+    for proc in procs:
+        proc.wait(timeout=180)
+    outcomes = sorted(p.returncode for p in procs)
+    stderr = " ".join(p.stderr.read() for p in procs)
+    assert outcomes[0] == 0  # at least one finished
+    if outcomes[1] != 0:
+        assert "by another process too" in stderr
+    with CellStore(db) as store:
+        store.ingest_csv(big_csv, values=["k", "x"], level=10, batch_size=BATCH)  # finish if needed
+        assert store.count() == N_ROWS
+    assert _check_whole(db) == N_ROWS
