@@ -215,10 +215,14 @@ def sql_type(spec: object) -> str:
 def create_schema(conn: sqlite3.Connection, dggs_version: str) -> None:
     """Create every table, index and the metadata in an empty database.
 
-    Runs in one transaction: either the whole schema exists afterwards or none.
+    Runs in one transaction: either the whole schema exists afterwards or
+    none.  Does nothing if another connection created it first.
     """
     stamp = now()
     conn.execute("BEGIN IMMEDIATE")
+    if conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]:
+        conn.execute("ROLLBACK")  # another process created it meanwhile
+        return
     try:
         for statement in DDL.split(";"):
             if statement.strip():

@@ -174,6 +174,7 @@ class CellStore:
             if self.readonly:
                 raise StorageError(f"{self.path} is an empty database, not a cell store")
             create_schema(conn, _dggs_version())
+            check_schema(conn, self.path)  # whoever created it, it must be ours
 
     # -- life cycle ---------------------------------------------------------
 

@@ -109,3 +109,17 @@ def test_delete_source(store):
     assert store.count() == 1 and [s["name"] for s in store.sources()] == ["b"]
     with pytest.raises(dggs.StorageError, match="no source"):
         store.delete_source("a")
+
+
+def test_many_processes_create_one_store_at_once(tmp_path):
+    import subprocess
+    import sys
+
+    db = tmp_path / "race.db"
+    code = "import sys; from dggs.storage import CellStore; CellStore(sys.argv[1]).close()"
+    procs = [subprocess.Popen([sys.executable, "-c", code, str(db)], stderr=subprocess.PIPE, text=True)
+             for _ in range(4)]
+    for proc in procs:
+        assert proc.wait(timeout=60) == 0, proc.stderr.read()
+    with CellStore(db) as store:
+        assert store.meta["schema_version"] == "1"
