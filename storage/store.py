@@ -745,6 +745,23 @@ class CellStore:
             )
         return column
 
+    @contextmanager
+    def _snapshot(self) -> Iterator[str]:
+        """Read in one snapshot; yield the table to read from.
+
+        That is ``points`` alone when nothing is pending (the common case,
+        and a plain clustered scan), else the ``all_points`` view.
+        """
+        own = not self.conn.in_transaction
+        if own:
+            self.conn.execute("BEGIN")
+        try:
+            pending = self.conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone()
+            yield "all_points" if pending else "points"
+        finally:
+            if own:
+                self.conn.execute("COMMIT")
+
     def _select_list(self) -> str:
         return ", ".join(quote(c) for c in ("cell", "lat", "lng", *self.columns, "source_id", "row"))
 
@@ -769,9 +786,10 @@ class CellStore:
             ).fetchone()
             return int(row[0])
         self._cell_level(cell)
-        row = self.conn.execute(
-            "SELECT count(*) FROM all_points WHERE cell >= ?1 AND cell < ?1 || '~'", (cell,)
-        ).fetchone()
+        with self._snapshot() as table:
+            row = self.conn.execute(
+                f"SELECT count(*) FROM {table} WHERE cell >= ?1 AND cell < ?1 || '~'", (cell,)
+            ).fetchone()
         return int(row[0])
 
     def get(self, cell: str) -> list[dict[str, Any]]:
@@ -798,8 +816,9 @@ class CellStore:
                 f"cell {cell!r} is at level {level}, not the stored level {stored}; "
                 "use descendants() for coarser cells"
             )
-        sql = f"SELECT {self._select_list()} FROM all_points WHERE cell = ? ORDER BY source_id, row"
-        return list(self.db.query(sql, (cell,)))
+        with self._snapshot() as table:
+            sql = f"SELECT {self._select_list()} FROM {table} WHERE cell = ? ORDER BY source_id, row"
+            return list(self.db.query(sql, (cell,)))
 
     def descendants(self, cell: str) -> list[dict[str, Any]]:
         """Return the rows in ``cell`` and all its descendants, in id order.
@@ -814,11 +833,12 @@ class CellStore:
         1
         """
         self._cell_level(cell)
-        sql = (
-            f"SELECT {self._select_list()} FROM all_points "
-            "WHERE cell >= ?1 AND cell < ?1 || '~' ORDER BY cell, source_id, row"
-        )
-        return list(self.db.query(sql, (cell,)))
+        with self._snapshot() as table:
+            sql = (
+                f"SELECT {self._select_list()} FROM {table} "
+                "WHERE cell >= ?1 AND cell < ?1 || '~' ORDER BY cell, source_id, row"
+            )
+            return list(self.db.query(sql, (cell,)))
 
     def aggregate(
         self,
@@ -912,16 +932,16 @@ class CellStore:
         order = "1"
         if order_by is not None:
             order = f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
-        sql = (
-            f"SELECT substr(cell, 1, ?1) AS cell_, {exprs} FROM all_points {where} "
-            f"GROUP BY cell_ ORDER BY {order}"
-        )
-        if limit is not None:
-            sql += f" LIMIT {int(limit)}"
         out = []
-        for row in self.db.query(sql, params):
-            row["cell"] = row.pop("cell_")
-            out.append({"cell": row.pop("cell"), **row})
+        with self._snapshot() as table:
+            sql = (
+                f"SELECT substr(cell, 1, ?1) AS cell_, {exprs} FROM {table} {where} "
+                f"GROUP BY cell_ ORDER BY {order}"
+            )
+            if limit is not None:
+                sql += f" LIMIT {int(limit)}"
+            for row in self.db.query(sql, params):
+                out.append({"cell": row.pop("cell_"), **row})
         return out
 
     def _rows_under(self, cells: Sequence[str], level: int) -> list[dict[str, Any]]:
