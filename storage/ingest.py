@@ -41,8 +41,13 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["IngestResult", "prepare", "run_ingest", "make_transformer", "value_types"]
 
-#: Rows of ``points_pending`` that trigger a merge into the indexed table.
-MERGE_ROWS = 1_000_000
+#: Pending rows that trigger a merge into the clustered table (at least; a
+#: store of N merged rows merges every N / 4 rows, so that rewriting the
+#: table's pages stays proportional to the data ingested).
+MERGE_ROWS = 250_000
+
+#: Batches the reader thread may prepare ahead of the writer.
+READ_AHEAD = 8
 
 _Bad = dict[int, tuple[str | None, Any, str]]
 
@@ -399,6 +404,7 @@ def run_ingest(
     conn = store.conn
     source_id = source["id"]
     pending = store._pending_count()
+    merged = int(conn.execute("SELECT count(*) FROM points").fetchone()[0])
     missing = {k: v for k, v in declared.items() if k not in column_types(conn)}
     if missing:  # declared columns exist even if no row arrives
         with store._transaction():
@@ -426,8 +432,9 @@ def run_ingest(
             pending += len(prepared.rows)
             if progress is not None:
                 progress(batch.consumed)
-            if pending >= store.merge_rows:
+            if pending >= max(store.merge_rows, merged // 4):
                 store.merge()
+                merged += pending
                 pending = 0
     finally:
         work.stop()
@@ -453,7 +460,7 @@ def run_ingest(
 
 
 class _Producer:
-    """Read and prepare batches in a background thread, one or two ahead.
+    """Read and prepare batches in a background thread, a few ahead.
 
     Parsing, checking and binning (Python and numpy) overlap with SQLite
     writing, which releases the GIL.  Only the calling thread touches the
@@ -478,7 +485,7 @@ class _Producer:
         self._args = (level, transformer, source_id)
         self._types = existing  # the same dict the reader sees
         self._declared = declared
-        self._queue: queue.Queue = queue.Queue(maxsize=2)
+        self._queue: queue.Queue = queue.Queue(maxsize=READ_AHEAD)
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._run, name="dggs-ingest-reader", daemon=True)
         if threaded:

@@ -101,8 +101,9 @@ class CellStore:
         Open read-only (queries only).
     timeout : float, default 30
         Seconds to wait for a lock held by another connection.
-    merge_rows : int
-        Pending rows that trigger a merge into the indexed table during ingest.
+    merge_rows : int, default 250000
+        Pending rows that trigger a merge into the clustered table during
+        ingest (or a quarter of the rows already merged, if more).
 
     Raises
     ------
