@@ -920,7 +920,7 @@ class CellStore:
         exprs = ", ".join(
             f"{STATS[s].format(c=quote(column) if column else '')} AS {quote(s)}" for s in stats
         )
-        params: list[Any] = [level + 1]
+        params: dict[str, Any] = {"n": level + 1}
         where = ""
         if cell is not None:
             cell_level = self._cell_level(cell)
@@ -928,19 +928,20 @@ class CellStore:
                 raise LevelMismatchError(
                     f"cell {cell!r} is at level {cell_level}, finer than the roll-up level {level}"
                 )
-            where = "WHERE cell >= ?2 AND cell < ?2 || '~'"
-            params.append(cell)
+            where = "WHERE cell >= :cell AND cell < :cell || '~'"
+            params["cell"] = cell
         order = "1"
         if order_by is not None:
             order = f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
         out = []
         with self._snapshot() as table:
             sql = (
-                f"SELECT substr(cell, 1, ?1) AS cell_, {exprs} FROM {table} {where} "
+                f"SELECT substr(cell, 1, :n) AS cell_, {exprs} FROM {table} {where} "
                 f"GROUP BY cell_ ORDER BY {order}"
             )
             if limit is not None:
-                sql += f" LIMIT {int(limit)}"
+                sql += " LIMIT :limit"
+                params["limit"] = int(limit)
             for row in self.db.query(sql, params):
                 out.append({"cell": row.pop("cell_"), **row})
         return out
