@@ -270,7 +270,6 @@ def prepare(
     level: int,
     types: Mapping[str, str],
     transformer: Any,
-    source_id: int,
 ) -> Prepared:
     """Convert and check one batch; compute the cells of its good rows.
 
@@ -317,7 +316,7 @@ def prepare(
             given = keep[known[keep] != ""]
             cells[given] = known[given]
     # source_id is bound in the SQL text, and part only when there are parts:
-    # fewer parameters per row make executemany faster.
+    # fewer parameters per row make the inserts faster.
     with_parts = batch.parts is not None
     if all_good:
         parts = [cells.tolist(), lat.tolist(), lng.tolist(), batch.rows, *columns]
@@ -412,7 +411,7 @@ def run_ingest(
     done = source["rows_done"]
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = _Producer(
-        batches(source["rows_done"], known), level, known, declared, transformer, source_id, threaded
+        batches(source["rows_done"], known), level, known, declared, transformer, threaded
     )
     try:
         for batch, prepared, types, new in work:
@@ -477,12 +476,11 @@ class _Producer:
         existing: dict[str, str],
         declared: Mapping[str, str],
         transformer: Any,
-        source_id: int,
         threaded: bool = True,
     ) -> None:
         self._batches = batches
         self._threaded = threaded
-        self._args = (level, transformer, source_id)
+        self._args = (level, transformer)
         self._types = existing  # the same dict the reader sees
         self._declared = declared
         self._queue: queue.Queue = queue.Queue(maxsize=READ_AHEAD)
@@ -501,12 +499,12 @@ class _Producer:
         return False
 
     def _prepared(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
-        level, transformer, source_id = self._args
+        level, transformer = self._args
         for batch in self._batches:
             new = value_types(batch, self._types, self._declared)
             self._types.update(new)
             types = {name: self._types[name] for name in batch.values}
-            yield batch, prepare(batch, level, types, transformer, source_id), types, new
+            yield batch, prepare(batch, level, types, transformer), types, new
 
     def _run(self) -> None:
         try:
