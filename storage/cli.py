@@ -65,6 +65,7 @@ def format_table(rows: list[dict[str, Any]]) -> str:
 @click.option("--on-error", type=click.Choice(["fail", "skip"]), default="fail", show_default=True,
               help="Stop at the first bad row, or skip bad rows (kept in table rejects).")
 @click.option("--replace", is_flag=True, help="Forget what an earlier ingest of INPUT stored, then ingest it.")
+@click.option("--encoding", default="utf-8", show_default=True, help="Text encoding of a CSV.")
 @click.option("--progress/--no-progress", default=None, help="Progress bar [default: on a terminal].")
 def bin_(
     input_path: str,
@@ -77,6 +78,7 @@ def bin_(
     batch_size: int,
     on_error: str,
     replace: bool,
+    encoding: str,
     progress: bool | None,
 ) -> None:
     """Bin the points of INPUT (CSV or GeoJSON) into cells and store them in DB.
@@ -104,7 +106,9 @@ def bin_(
         )
         try:
             if kind == "csv":
-                result = store.ingest_csv(input_path, lat=lat, lng=lng, values=list(values), crs=crs, **common)
+                result = store.ingest_csv(
+                    input_path, lat=lat, lng=lng, values=list(values), crs=crs, encoding=encoding, **common
+                )
             else:
                 result = store.ingest_geojson(input_path, values=list(values) or None, **common)
         finally:

@@ -90,14 +90,21 @@ def _skip(iterator: Iterator[Any], n: int) -> None:
     collections.deque(itertools.islice(iterator, n), maxlen=0)
 
 
-def csv_header(path: str | Path, delimiter: str = ",") -> list[str]:
+def _codec(encoding: str) -> str:
+    """UTF-8 input may start with a byte-order mark: skip it."""
+    return "utf-8-sig" if encoding.lower().replace("_", "-") in ("utf-8", "utf8") else encoding
+
+
+def csv_header(path: str | Path, delimiter: str = ",", encoding: str = "utf-8") -> list[str]:
     """Return the header of a CSV file (its first row)."""
-    with open(path, newline="", encoding="utf-8-sig") as fh:
+    with open(path, newline="", encoding=_codec(encoding)) as fh:
         try:
             return next(csv.reader(fh, delimiter=delimiter))
         except StopIteration:
             raise DggsValueError(f"{path} is empty (no header row)") from None
-        except (csv.Error, UnicodeDecodeError) as exc:
+        except UnicodeDecodeError as exc:
+            raise _not_text(path, encoding, 0, exc) from exc
+        except csv.Error as exc:
             raise DggsValueError(f"{path} is not a readable CSV file: {exc}") from exc
 
 
@@ -110,6 +117,7 @@ def csv_batches(
     skip: int = 0,
     delimiter: str = ",",
     types: Mapping[str, str] | None = None,
+    encoding: str = "utf-8",
 ) -> Iterator[RawBatch]:
     """Stream a CSV file with a header row as batches of column values.
 
@@ -123,9 +131,10 @@ def csv_batches(
     Raises
     ------
     DggsValueError
-        If a named column is not in the header.
+        If a named column is not in the header, or the text is not in
+        ``encoding``.
     """
-    header = csv_header(path, delimiter)
+    header = csv_header(path, delimiter, encoding)
     wanted = [lat, lng, *values]
     missing = [name for name in wanted if name not in header]
     if missing:
@@ -135,14 +144,21 @@ def csv_batches(
         )
     index = [header.index(name) for name in wanted]
     types = types if types is not None else {}
-    with open(path, newline="", encoding="utf-8-sig") as fh:
+    with open(path, newline="", encoding=_codec(encoding)) as fh:
         head = csv.reader(fh, delimiter=delimiter)
-        next(head)
-        _skip(head, skip)
+        line = 0
+        try:
+            next(head)
+            _skip(head, skip)
+        except UnicodeDecodeError as exc:
+            raise _not_text(path, encoding, head.line_num, exc) from exc
         line = head.line_num  # lines consumed so far
         done = skip
         while True:
-            lines = list(itertools.islice(fh, batch_size))
+            try:
+                lines = list(itertools.islice(fh, batch_size))
+            except UnicodeDecodeError as exc:
+                raise _not_text(path, encoding, line, exc) from exc
             if not lines:
                 return
             text = "".join(lines)
@@ -161,6 +177,13 @@ def csv_batches(
             done += batch.consumed
             line += len(lines)
             yield batch
+
+
+def _not_text(path: str | Path, encoding: str, line: int, exc: UnicodeDecodeError) -> DggsValueError:
+    return DggsValueError(
+        f"{path} is not {encoding} text (after line {line}: {exc.reason}); "
+        "pass the file's encoding, e.g. encoding='latin-1'"
+    )
 
 
 def _numeric_chunk(

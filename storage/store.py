@@ -380,6 +380,7 @@ class CellStore:
         on_error: str = "fail",
         replace: bool = False,
         delimiter: str = ",",
+        encoding: str = "utf-8",
         progress: Progress | None = None,
     ) -> IngestResult:
         """Bin the rows of a CSV file (with a header row), streaming it in batches.
@@ -415,6 +416,8 @@ class CellStore:
             Delete what an earlier ingest of this file stored, then ingest it.
         delimiter : str, default ","
             Field separator.
+        encoding : str, default "utf-8"
+            Text encoding of the file (a UTF-8 byte-order mark is skipped).
         progress : callable, optional
             Called with the number of input rows after each batch.
 
@@ -455,7 +458,7 @@ class CellStore:
             name=str(path),
             params=params,
             batches=lambda skip, types: readers.csv_batches(
-                file, lat, lng, names, batch_size, skip, delimiter, types
+                file, lat, lng, names, batch_size, skip, delimiter, types, encoding
             ),
             level=level,
             declared=declared,

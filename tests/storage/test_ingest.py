@@ -339,3 +339,15 @@ def test_records_from_a_sqlite_cursor_of_this_thread(store):
     con.executemany("INSERT INTO t VALUES (?, ?, ?)", [(i / 10, i / 5, i) for i in range(50)])
     result = store.ingest_records(con.execute("SELECT * FROM t"), values=["v"], level=5, batch_size=7)
     assert result.rows_inserted == 50
+
+
+def test_encodings(store, tmp_path):
+    path = tmp_path / "latin.csv"
+    path.write_bytes("lat,lng,name\n1,2,S\u00e3o Paulo\n".encode("latin-1"))
+    with pytest.raises(dggs.DggsValueError, match="not utf-8 text.*encoding="):
+        store.ingest_csv(path, values=["name"], level=3)
+    store.ingest_csv(path, values=["name"], level=3, encoding="latin-1")
+    assert store.descendants(dggs.latlng_to_cell(1, 2, 0))[0]["name"] == "S\u00e3o Paulo"
+    bom = tmp_path / "bom.csv"
+    bom.write_bytes(b"\xef\xbb\xbflat,lng\n3,4\n")
+    assert store.ingest_csv(bom, level=3).rows_inserted == 1
