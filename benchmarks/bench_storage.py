@@ -94,10 +94,28 @@ def main() -> None:
                 f"{ingest:.2f} s = **{args.rows / ingest:,.0f} rows/s**",
             ),
         ]
+        results.append(("  CPU time of the ingest (both threads)", f"load average before: {load_before:.1f}", f"{cpu:.2f} s"))
+        t0 = time.perf_counter()
+        with CellStore(db_path) as store:
+            again = store.ingest_csv(csv_path, values=["count", "value"], level=args.level)
+        assert again.already_complete
+        results.append(("same ingest again (hash, finds it complete)", "", f"{time.perf_counter() - t0:.2f} s"))
+
+        rng = np.random.default_rng(1)
+        lat = np.degrees(np.arcsin(rng.uniform(-1, 1, args.rows)))
+        lng = rng.uniform(-180, 180, args.rows)
+        value = rng.normal(20, 5, args.rows)
+        t0 = time.perf_counter()
+        with CellStore(Path(tmp) / "arrays.db") as store:
+            store.ingest_points(lat, lng, args.level, {"value": value})
+        t = time.perf_counter() - t0
+        results.append(
+            ("ingest_points from numpy arrays", "batch 100,000", f"{t:.2f} s = **{args.rows / t:,.0f} rows/s**")
+        )
+
         db_mb = sum(
             os.path.getsize(str(db_path) + s) for s in ("", "-wal") if os.path.exists(str(db_path) + s)
         ) / 1e6
-        results.append(("  CPU time of the ingest (both threads)", f"load average before: {load_before:.1f}", f"{cpu:.2f} s"))
         results.append(("database size", "", f"{db_mb:.0f} MB"))
 
         with CellStore(db_path, readonly=True) as store:
