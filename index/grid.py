@@ -14,6 +14,7 @@ from dggs.errors import DggsValueError, LevelMismatchError
 from dggs.split26 import face_adjacency, locate, neighbour_points
 
 from . import _geo
+from . import _scalar
 from .cellid import FACE_LETTERS, as_id_array, decode, encode
 
 __all__ = ["edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "grid_distance"]
@@ -160,6 +161,8 @@ def edge_neighbors(cell) -> np.ndarray:
     >>> edge_neighbors("C401").tolist()
     ['C411', 'C402', 'C400']
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        return np.array(_scalar.neighbours(cell))
     ids, scalar = as_id_array(cell)
     out = _neighbours(ids)
     return out[0] if scalar else out
@@ -255,6 +258,8 @@ def grid_disk(cell, k: int = 1) -> np.ndarray:
     (2, 4)
     """
     k = _check_k(k)
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        return np.array(_scalar.disk(cell, k))
     ids, scalar = as_id_array(cell)
     decode(ids)
     out = _disks(ids, k)

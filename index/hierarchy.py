@@ -10,6 +10,7 @@ import numpy as np
 
 from dggs.errors import LevelError, LevelMismatchError
 
+from . import _scalar
 from .cellid import FACE_LETTERS, MAX_LEVEL, as_id_array, check_level, decode, levels, valid_mask
 
 __all__ = [
@@ -58,7 +59,7 @@ def is_valid_cell(cell) -> bool | np.ndarray:
     (True, False, False)
     """
     if isinstance(cell, str):
-        return bool(valid_mask(np.array([cell]))[0]) if cell else False
+        return _scalar.is_valid(cell)
     try:
         arr = np.asarray(cell)
     except Exception:  # noqa: BLE001 - never raise
@@ -79,6 +80,8 @@ def get_level(cell):
     >>> get_level("C401")
     3
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        return len(cell) - 1
     ids, scalar = as_id_array(cell)
     level = decode(ids).level
     return int(level[0]) if scalar else level
@@ -92,6 +95,8 @@ def get_face(cell):
     >>> get_face("C401")
     2
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        return ord(cell[0]) - 65
     ids, scalar = as_id_array(cell)
     face = decode(ids).face
     return int(face[0]) if scalar else face
@@ -112,6 +117,11 @@ def cell_to_parent(cell, level: int | None = None):
     >>> cell_to_parent("C401"), cell_to_parent("C401", 1)
     ('C40', 'C4')
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell) and len(cell) > 1:
+        if level is None:
+            return cell[:-1]
+        if isinstance(level, (int, np.integer)) and not isinstance(level, bool) and 0 <= level < len(cell):
+            return cell[: level + 1]
     ids, scalar = as_id_array(cell)
     lv = levels(ids)
     if level is None:
@@ -159,6 +169,10 @@ def cell_to_children(cell, level: int | None = None) -> np.ndarray:
     >>> len(cell_to_children("C", 2))
     18
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        target = len(cell) if level is None else level
+        if isinstance(target, (int, np.integer)) and not isinstance(target, bool) and len(cell) <= target <= MAX_LEVEL:
+            return np.array(_scalar.children(cell, int(target)))
     ids, _ = as_id_array(cell)
     if ids.size == 0:
         return np.array([], dtype="<U1")

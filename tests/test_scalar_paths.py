@@ -1,0 +1,36 @@
+"""The pure-Python single-id paths agree exactly with the array paths."""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given
+from hypothesis import strategies as st
+
+import dggs
+
+from .strategies import cells
+
+
+@given(cells())
+def test_single_id_paths_equal_array_paths(cell):
+    arr = np.array([cell])
+    assert dggs.get_level(cell) == int(dggs.get_level(arr)[0])
+    assert dggs.get_face(cell) == int(dggs.get_face(arr)[0])
+    assert dggs.edge_neighbors(cell).tolist() == dggs.edge_neighbors(arr)[0].tolist()
+    if len(cell) > 1:
+        assert dggs.cell_to_parent(cell) == str(dggs.cell_to_parent(arr)[0])
+        assert dggs.cell_to_parent(cell, 0) == str(dggs.cell_to_parent(arr, 0)[0])
+    if len(cell) <= dggs.MAX_LEVEL - 1:
+        assert dggs.cell_to_children(cell).tolist() == dggs.cell_to_children(arr).tolist()
+        assert dggs.cell_to_children(cell, len(cell) + 1).tolist() == dggs.cell_to_children(arr, len(cell) + 1).tolist()
+
+
+@given(cells(max_level=25), st.integers(0, 3))
+def test_single_id_disk_equals_array_disk(cell, k):
+    row = dggs.grid_disk(np.array([cell]), k)[0]
+    assert dggs.grid_disk(cell, k).tolist() == [c for c in row.tolist() if c]
+
+
+@given(st.text(max_size=6))
+def test_validity_agrees(text):
+    assert dggs.is_valid_cell(text) == bool(dggs.is_valid_cell(np.array([text]))[0])
