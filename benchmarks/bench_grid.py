@@ -358,7 +358,7 @@ def report(res: dict[str, Any]) -> str:
     n = res["n_points"]
     out: list[str] = []
     w = out.append
-    w(f"### Grid: point to cell and cell operations (bench_grid.py)\n")
+    w("### Grid: point to cell and cell operations (bench_grid.py)\n")
     w(f"Machine: {m['nproc']} cores ({m['cpu']}), Python {m['python']}, numpy {m['numpy']}, "
       f"dggs {m['dggs']} ({m['dggs_threads']} threads by default), h3 {m['h3']}, h3ronpy {m['h3ronpy']}, "
       f"pya5 {m['pya5']}, pyarrow {m['pyarrow']}; load average at start "
@@ -386,7 +386,7 @@ def report(res: dict[str, Any]) -> str:
             cells += [f"{r['res']} ({r['area']:.3g} km²)", fmt_rate(r["rate"]), ratio]
         w(f"| {impl} | {how} | " + " | ".join(cells) + " |")
     if "a5_res" in res:
-        w(f"\nA5 resolutions are the ones closest in mean area to ours (log scale): "
+        w("\nA5 resolutions are the ones closest in mean area to ours (log scale): "
           + ", ".join(f"res {r} for level {lv}" for lv, r in res["a5_res"].items())
           + ". h3's are res 5 (253 km²) and res 9 (0.105 km²). h3-py has no vectorized point-to-cell; "
           "the loops are what a user writes (`[h3.latlng_to_cell(a, b, r) for a, b in zip(lats, lngs)]`).")
@@ -408,7 +408,7 @@ def report(res: dict[str, Any]) -> str:
             w(f"| {name} | " + " | ".join(cells) + " |")
 
     # scaling
-    w(f"\n#### dggs point to cell: cost per point against the number of points and the level\n")
+    w("\n#### dggs point to cell: cost per point against the number of points and the level\n")
     sp = res["scaling_points"]
     first = next(iter(sp.values()))
     w(f"| level | ns/point at {first['n_small']:,} points | ns/point at {first['n_large']:,} points | ratio |")

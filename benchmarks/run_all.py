@@ -228,12 +228,12 @@ def main() -> None:
         gm = grid["machine"]
         w(f"- **Libraries:** dggs {gm['dggs']} (point to cell on {gm['dggs_threads']} threads by default), "
           f"h3 {gm['h3']}, h3ronpy {gm['h3ronpy']}, pya5 {gm['pya5']}, pyarrow {gm['pyarrow']}.")
-    w(f"- **Command:** `make bench` (that is `.venv-bench/bin/python benchmarks/run_all.py"
+    w("- **Command:** `make bench` (that is `.venv-bench/bin/python benchmarks/run_all.py"
       + (" --quick" if args.quick else "") + "`; the venv has dggs editable plus `benchmarks/requirements.txt`).")
     w(f"- **Code measured:** {code} (the bench venv installs dggs editable, so it runs the working tree).")
     w(f"- **Date:** {started:%Y-%m-%d %H:%M} UTC; the whole run took {total / 60:.1f} minutes.")
-    w(f"- **Noise:** runs vary by +-25% from one run to the next; every number in a table comes from one run "
-      f"(medians of 3 timed repeats), so compare within a table, not across runs or machines.")
+    w("- **Noise:** runs vary by +-25% from one run to the next; every number in a table comes from one run "
+      "(medians of 3 timed repeats), so compare within a table, not across runs or machines.")
     w(f"- **Shared CPU:** other engineers were using this 2-core machine during the run (load average "
       f"{load0[0]:.2f} at the start, {load1[0]:.2f} at the end), which slows multi-threaded code most.")
     if args.quick:

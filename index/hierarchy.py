@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from dggs.errors import LevelError, LevelMismatchError
+from dggs.errors import LevelMismatchError
 
 from . import _scalar
 from .cellid import FACE_LETTERS, MAX_LEVEL, as_id_array, check_level, decode, levels, valid_mask

@@ -10,7 +10,6 @@ import numpy as np
 import pyproj
 import pytest
 from hypothesis import example, given
-from hypothesis import strategies as st
 
 from dggs import snyder
 from dggs.authalic import WGS84, sphere
