@@ -411,10 +411,10 @@ def inverse(
 
     run_chunks(kernel, n)
     if scalar:
-        out = (float(lat[0]), float(lng[0]))
-        return (*out, int(iterations[0])) if return_iterations else out
-    out = (lat.reshape(shape), lng.reshape(shape))
-    return (*out, iterations.reshape(shape)) if return_iterations else out
+        pair = (float(lat[0]), float(lng[0]))
+        return (*pair, int(iterations[0])) if return_iterations else pair
+    arrays = (lat.reshape(shape), lng.reshape(shape))
+    return (*arrays, iterations.reshape(shape)) if return_iterations else arrays
 
 
 # ----------------------------------------------------------------------------

@@ -6,6 +6,8 @@ children are suffixes: string arithmetic on numpy arrays, no geometry.
 
 from __future__ import annotations
 
+from typing import Iterable
+
 import numpy as np
 
 from dggs.errors import LevelMismatchError
@@ -189,6 +191,7 @@ def cell_to_children(cell, level: int | None = None) -> np.ndarray:
             f"child level {level} is coarser than cell {str(ids[i])!r} at level {int(cell_levels[i])}"
         )
     parts = []
+    unique_levels: Iterable[int]
     if lo == hi:
         order = np.arange(len(ids))
         unique_levels = [lo]

@@ -196,7 +196,7 @@ def _ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygo
         piece = poly.intersection(window)
         if not piece.is_empty:
             parts.append(shapely.affinity.translate(piece, xoff=-360.0 * k))
-    geoms = []
+    geoms: list = []
     for p in parts:
         geoms.extend(getattr(p, "geoms", [p]))
     geoms = [g for g in geoms if isinstance(g, Polygon) and g.area > 0]
