@@ -100,24 +100,39 @@ def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
     sin_az, cos_az = np.sin(az), np.cos(az)
     # sin(z/2) without cancellation near the centre: 1 - cos z = sin^2 z / (1 + cos z)
     sin_half_z = np.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
+    sin_p, cos_p = sector_forward(sin_az, cos_az, sin_half_z, NUMPY_OPS)
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
+    x = sin_p * rc + cos_p * rs
+    y = cos_p * rc - sin_p * rs
+    return face, x, y
+
+
+#: (sqrt, hypot, atan2) for arrays and for Python floats: :func:`sector_forward` serves both.
+NUMPY_OPS = (np.sqrt, np.hypot, np.arctan2)
+MATH_OPS = (math.sqrt, math.hypot, math.atan2)
+
+
+def sector_forward(sin_az, cos_az, sin_half_z, ops=NUMPY_OPS):
+    """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')``.
+
+    Takes the reduced azimuth's sine and cosine and ``sin(z/2)``; arrays with
+    :data:`NUMPY_OPS`, Python floats with :data:`MATH_OPS`.
+    """
+    sqrt, hypot, atan2 = ops
     # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
     u = cos_az + sin_az * COT_THETA
-    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
+    sin_half_q = sqrt(0.5 * (1.0 - u / hypot(TAN_G, u)))
     cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
-    sin_h = np.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
-    az_plus_h = np.arctan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
-    az_plus_h += np.where(az_plus_h < 0, 2 * math.pi, 0.0)
+    sin_h = sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
+    az_plus_h = atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
+    az_plus_h = az_plus_h + (az_plus_h < 0) * (2 * math.pi)
     area = az_plus_h + (G - math.pi)  # eq. 7, spherical excess of triangle ABD
     # eq. 8: Az' = atan2(2 A_G, R'^2 tan^2 g - 2 A_G cot theta), kept as sin/cos.
     big_x = _RT2 - 2.0 * area * COT_THETA
     big_y = 2.0 * area
-    # eq. 10 (d') and eqs. 11-12 (rho = d' sin(z/2) / sin(q/2))
+    # eq. 10 (d') and eqs. 11-12 (rho = d' sin(z/2) / sin(q/2)); |(X, Y)| cancels against d'
     rho = (R_PRIME * TAN_G) / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q
-    sin_p, cos_p = big_y, big_x  # r sin Az', r cos Az' (r = |(X, Y)| cancels against d')
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
-    x = rho * (sin_p * rc + cos_p * rs)
-    y = rho * (cos_p * rc - sin_p * rs)
-    return face, x, y
+    return rho * big_y, rho * big_x
 
 
 def forward(lat, lng, orientation: Orientation = ISEA):

@@ -97,3 +97,104 @@ def children(cell: str, level: int) -> list[str]:
         digits = "012345" if lv == 1 else "012"
         out = [c + d for c in out for d in digits]
     return out
+
+
+# ----------------------------------------------------------------------------
+# One point to one cell, in floats (pure Python)
+# ----------------------------------------------------------------------------
+# Python's math and numpy's vector loops may round the last bit differently,
+# so wherever a decision (face, sector, level-1 triangle, child) is closer to
+# a tie than the rounding could move it, this path gives up (returns None)
+# and the caller uses the array path: both paths always agree.
+_TIE = 1e-13  # decision margin at level 1, ~1000x the paths' rounding gap (grows by sqrt 3 per level)
+_point_tables = None
+
+
+def _load_point_tables():
+    global _point_tables
+    if _point_tables is None:
+        from dggs import split26, snyder
+
+        from . import _geo
+
+        geo = _geo.ORIENTATION.geometry
+        _point_tables = (
+            _geo.ELLIPSOID._to_authalic.tolist(),
+            geo.centres.tolist(),
+            geo.frames.tolist(),
+            split26._L1_C.tolist(),
+            split26._L1_ROWS.tolist(),
+            split26._M.tolist(),
+            split26._T.tolist(),
+            snyder._ROT_COS.tolist(),
+            snyder._ROT_SIN.tolist(),
+        )
+    return _point_tables
+
+
+def latlng_to_cell(lat: float, lng: float, level: int) -> str | None:
+    """The cell of one valid point, or None where a decision is too close to call."""
+    import math
+
+    from dggs.snyder import MATH_OPS, sector_forward
+
+    coeffs, centres, frames, l1_c, l1_rows, mats, offs, rot_c, rot_s = _load_point_tables()
+    phi = math.radians(lat)
+    # authalic latitude: Clenshaw sum of Karney's series (dggs.authalic)
+    s2, c2 = math.sin(2 * phi), math.cos(2 * phi)
+    b1 = b2 = 0.0
+    for c in reversed(coeffs):
+        b1, b2 = 2 * c2 * b1 - b2 + c, b1
+    beta = phi + b1 * s2
+    lam = math.radians(lng)
+    cb = math.cos(beta)
+    p = (cb * math.cos(lam), cb * math.sin(lam), math.sin(beta))
+    # face: the nearest centre, unless another is within the tie margin
+    dots = [p[0] * c[0] + p[1] * c[1] + p[2] * c[2] for c in centres]
+    face = max(range(20), key=dots.__getitem__)
+    best = dots[face]
+    if any(best - d < _TIE for i, d in enumerate(dots) if i != face):
+        return None
+    fr = frames[face]
+    c = sum(a * b for a, b in zip(fr[0], p))
+    n = sum(a * b for a, b in zip(fr[1], p))
+    e = sum(a * b for a, b in zip(fr[2], p))
+    # sector (120 degrees, vertex to vertex) and the reduced azimuth
+    az = math.atan2(e, n) % (2 * math.pi)
+    sin_z = math.hypot(n, e)
+    sector = 2 * math.pi / 3
+    k = min(int(az / sector), 2)
+    edge_gap = min(az - k * sector, (k + 1) * sector - az)
+    if sin_z * edge_gap < _TIE:
+        return None
+    az -= k * sector
+    sin_half_z = math.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
+    sp, cp = sector_forward(math.sin(az), math.cos(az), sin_half_z, MATH_OPS)
+    x = sp * rot_c[k] + cp * rot_s[k]
+    y = cp * rot_c[k] - sp * rot_s[k]
+    chars = [FACE_LETTERS[face]]
+    if level == 0:
+        return chars[0]
+    # level-1 triangle: planar azimuth // 60 degrees
+    paz = math.atan2(x, y) % (2 * math.pi)
+    d = min(int(paz * 3 / math.pi), 5)
+    gap = min(paz - d * math.pi / 3, (d + 1) * math.pi / 3 - paz)
+    if math.hypot(x, y) * gap < _TIE:
+        return None
+    chars.append(chr(48 + d))
+    dx, dy = x - l1_c[d][0], y - l1_c[d][1]
+    r = l1_rows[d]
+    px, py = r[0][0] * dx + r[0][1] * dy, r[1][0] * dx + r[1][1] * dy
+    margin = _TIE
+    sqrt3 = math.sqrt(3.0)
+    for _ in range(level - 1):
+        s1 = sqrt3 * px + py - 1.0
+        s2_ = sqrt3 * px - py - 1.0
+        margin *= sqrt3
+        if abs(s1) < margin or abs(s2_) < margin:
+            return None
+        child = 0 if s1 < 0 else (2 if s2_ > 0 else 1)
+        chars.append(chr(48 + child))
+        m, t = mats[child], offs[child]
+        px, py = m[0][0] * px + m[0][1] * py + t[0], m[1][0] * px + m[1][1] * py + t[1]
+    return "".join(chars)

@@ -14,7 +14,7 @@ from dggs._validate import as_latlng
 from dggs import snyder
 from dggs.split26 import locate
 
-from . import _geo
+from . import _geo, _scalar
 from .cellid import as_id_array, check_level, decode, encode
 
 __all__ = [
@@ -64,6 +64,17 @@ def latlng_to_cell(lat, lng, level: int):
     ['C32', 'A50']
     """
     level = check_level(level)
+    if (
+        isinstance(lat, (float, int))
+        and isinstance(lng, (float, int))
+        and not isinstance(lat, bool)
+        and math.isfinite(lat)
+        and math.isfinite(lng)
+        and -90.0 <= lat <= 90.0
+    ):
+        found = _scalar.latlng_to_cell(float(lat), float(lng), level)
+        if found is not None:
+            return found
     lat_a, lng_a, scalar = as_latlng(lat, lng)
     n = lat_a.shape[0]
     out = np.empty(n, dtype=f"<U{level + 1}")

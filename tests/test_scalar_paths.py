@@ -34,3 +34,30 @@ def test_single_id_disk_equals_array_disk(cell, k):
 @given(st.text(max_size=6))
 def test_validity_agrees(text):
     assert dggs.is_valid_cell(text) == bool(dggs.is_valid_cell(np.array([text]))[0])
+
+
+from .strategies import latlngs, levels, special_points  # noqa: E402
+
+
+@given(latlngs(), levels())
+def test_single_point_path_equals_array_path(p, level):
+    lat, lng = p
+    assert dggs.latlng_to_cell(lat, lng, level) == str(dggs.latlng_to_cell(np.array([lat]), np.array([lng]), level)[0])
+
+
+def test_single_point_path_on_edges_corners_and_many_points():
+    from dggs.index import _scalar
+
+    rng = np.random.default_rng(17)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 3000)))
+    lng = rng.uniform(-180, 180, 3000)
+    special = np.array(special_points())
+    corners = dggs.cell_to_boundary(dggs.latlng_to_cell(lat[:200], lng[:200], 9)).reshape(-1, 2)
+    pts = np.concatenate([np.column_stack([lat, lng]), special, corners])
+    for level in (0, 1, 2, 9, 17, 30, dggs.MAX_LEVEL):
+        arr = dggs.latlng_to_cell(pts[:, 0], pts[:, 1], level)
+        one = [dggs.latlng_to_cell(float(a), float(b), level) for a, b in pts]
+        assert one == arr.tolist()
+        # and the fast path itself answers (or declines) without ever disagreeing
+        fast = [_scalar.latlng_to_cell(float(a), float(b), level) for a, b in pts[:3000]]
+        assert sum(f is None for f in fast) < 0.01 * len(fast)
