@@ -216,9 +216,14 @@ def bench_point_to_cell(n: int, res: dict[str, Any], mods: dict[str, Any]) -> No
     dggs.latlng_to_cell(lat[:1000], lng[:1000], 10)  # warm-up: imports, thread pool
     for lv in SCALING_LEVELS:  # 10 and 17 for the main table; all for the level sweep
         cases[("dggs", lv)] = lambda lv=lv: dggs.latlng_to_cell(lat, lng, lv)
+    loop_n = min(100_000, n)  # one point at a time: timed on a subset, rate per point
+    lat_loop, lng_loop = lat_l[:loop_n], lng_l[:loop_n]
     for lv in OUR_LEVELS:  # cost per point at 100k points
         cases[("dggs-small", lv)] = lambda lv=lv: dggs.latlng_to_cell(lat_s, lng_s, lv)
         meta[("dggs", lv)] = dict(impl="dggs (numpy, threaded)", how="vectorized", res=f"level {lv}", area=area[lv])
+        cases[("dggs-loop", lv)] = lambda lv=lv: [dggs.latlng_to_cell(a_, b_, lv) for a_, b_ in zip(lat_loop, lng_loop)]
+        meta[("dggs-loop", lv)] = dict(impl="dggs one point per call", how=f"Python loop ({loop_n:,} points)",
+                                       res=f"level {lv}", area=area[lv], n=loop_n)
 
     h3 = mods.get("h3")
     if h3 is not None:
@@ -261,7 +266,7 @@ def bench_point_to_cell(n: int, res: dict[str, Any], mods: dict[str, Any]) -> No
             return {}
 
     secs = interleaved(cases, extra=threads_round)
-    res["point_to_cell"] = [dict(meta[k], level=k[1], seconds=secs[k], rate=n / secs[k]) for k in meta]
+    res["point_to_cell"] = [dict(meta[k], level=k[1], seconds=secs[k], rate=meta[k].get("n", n) / secs[k]) for k in meta]
     res["level_sweep"] = {str(lv): {"seconds": secs[("dggs", lv)], "ns_per_point": secs[("dggs", lv)] / n * 1e9,
                                     "rate": n / secs[("dggs", lv)]} for lv in SCALING_LEVELS}
     res["scaling_points"] = {
