@@ -46,31 +46,33 @@ def _load_tables():
 
 
 def neighbours(cell: str) -> list[str]:
-    """The 3 edge neighbours of a valid id, in the array code's column order."""
+    """The 3 edge neighbours of a valid id, in the array code's column order.
+
+    Walking up from the last digit, the first digit whose edge is shared
+    with a sibling changes; the digits after it stay (mirror images keep
+    their labels), so each neighbour is the id with one character replaced.
+    """
     sibling, outer, l1_ccw, l1_table, base = _load_tables()
     if len(cell) == 1:
         return list(base[ord(cell) - 65])
-    face = ord(cell[0]) - 65
-    l1 = ord(cell[1]) - 48
-    digits = [ord(ch) - 48 for ch in cell[2:]]
-    flips = sum(1 for d in digits if d != 1)
-    ccw = l1_ccw[l1] ^ (flips % 2 == 1)
-    found = {}
+    tail = cell[2:]
+    flips = tail.count("0") + tail.count("2")
+    ccw = l1_ccw[ord(cell[1]) - 48] ^ (flips % 2 == 1)
+    found = ["", "", ""]
     for label in (0, 1, 2):  # a, b, c
-        new = digits[:]
-        f, d1, edge = face, l1, label
-        pos = len(new) - 1
-        while pos >= 0:
-            c = new[pos]
+        edge = label
+        pos = len(cell) - 1
+        while pos >= 2:
+            c = ord(cell[pos]) - 48
             sib = sibling[c][edge]
             if sib >= 0:
-                new[pos] = sib
+                found[label] = cell[:pos] + chr(48 + sib) + cell[pos + 1 :]
                 break
             edge = outer[c][edge]
             pos -= 1
         else:  # reached the level-1 triangle's edge
-            f, d1 = l1_table[f][d1][edge]
-        found[label] = FACE_LETTERS[f] + chr(48 + d1) + "".join(chr(48 + d) for d in new)
+            f, d1 = l1_table[ord(cell[0]) - 65][ord(cell[1]) - 48][edge]
+            found[label] = FACE_LETTERS[f] + chr(48 + d1) + tail
     order = (2, 0, 1) if ccw else (1, 0, 2)  # corner-order columns: c, a, b or b, a, c
     return [found[i] for i in order]
 
