@@ -45,7 +45,7 @@ def experiments() -> None:
 @click.option("--levels", type=int, default=None,
               help="Deepest level (default: the thesis's depth for the scheme).")
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON list, one object per level.")
-@click.option("--densify", type=int, default=8, show_default=True,
+@click.option("--densify", type=int, default=64, show_default=True,
               help="Boundary points per edge for --scheme dggs.")
 def subdivision(scheme: str, levels: int | None, as_json: bool, densify: int) -> None:
     """Metrics of Tables 6.1-6.7 for one scheme, level by level."""
@@ -92,7 +92,7 @@ def tables(quick: bool, dggs_levels: int) -> None:
 
         click.echo()
         if dggs_grid_available():
-            click.echo(format_dggs_row(dggs_grid_metrics(dggs_levels, 8, _progress()), 8))
+            click.echo(format_dggs_row(dggs_grid_metrics(dggs_levels, 64, _progress()), 64))
         else:
             click.echo("dggs grid row skipped: dggs.cell_to_boundary is not available yet")
 

@@ -114,6 +114,10 @@ def format_dggs_row(rows: Sequence[LevelMetrics], densify: int) -> str:
             f"{r.level:>5}  {r.faces:>5}  {r.area_deviation_pct:>10.2e}   "
             f"{r.max_face_error_pct:>14.3e} ({_fmt('{:.2f}', t):>6})   {r.max_face_error_km2:>12.3g}"
         )
+    lines.append(
+        "  The cells are exactly equal-area; what remains is the boundary sampling (chords between "
+        f"{densify} points per curved edge), which shrinks as 1/densify^2."
+    )
     return "\n".join(lines)
 
 
