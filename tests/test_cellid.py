@@ -67,3 +67,13 @@ def test_ids_sort_depth_first_and_prefix_ranges_hold_descendants():
     lo, hi = "C40", "C40~"
     in_range = everything[(everything >= lo) & (everything < hi)]
     assert set(in_range.tolist()) == set(dggs.cell_to_children("C40", 3).tolist())
+
+
+@given(st.lists(st.one_of(cells(), st.text(max_size=8)), min_size=1, max_size=20))
+def test_all_valid_agrees_with_the_per_row_mask(items):
+    from dggs.index.cellid import all_valid, valid_mask
+
+    arr = np.array(items)
+    assert all_valid(arr) == bool(valid_mask(arr).all())
+    expected = all(dggs.is_valid_cell(x) for x in items)
+    assert all_valid(arr) == expected or any("\x00" in x for x in items)
