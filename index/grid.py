@@ -94,7 +94,6 @@ def _neighbours_fine(dec) -> np.ndarray:
     digits = dec.digits[:, : level - 1]
     flips = np.count_nonzero((digits == 0) | (digits == 2), axis=1)
     ccw = l1_ccw[dec.l1] ^ (flips % 2 == 1)  # children 0 and 2 are mirror images
-    labels = _column_labels(ccw)
     codes = np.empty((n, 3, level), dtype=np.uint8)  # by edge label a, b, c
     faces = np.empty((n, 3), dtype=np.intp)
     rows = np.arange(n)
@@ -121,8 +120,11 @@ def _neighbours_fine(dec) -> np.ndarray:
         codes[:, e, 1:] = new_digits
         faces[:, e] = face
     # reorder label columns (a, b, c) into the counter-clockwise corner order
-    codes = np.take_along_axis(codes, labels[:, :, None], axis=1)
-    faces = np.take_along_axis(faces, labels, axis=1)
+    flip = ~ccw
+    codes[flip] = codes[flip][:, [1, 0, 2]]  # (A, C, B) corners: b, a, c
+    codes[ccw] = codes[ccw][:, [2, 0, 1]]  # (A, B, C) corners: c, a, b
+    faces[flip] = faces[flip][:, [1, 0, 2]]
+    faces[ccw] = faces[ccw][:, [2, 0, 1]]
     return encode(faces.ravel(), codes.reshape(n * 3, level)).reshape(n, 3)
 
 
@@ -212,6 +214,8 @@ def _disks(ids: np.ndarray, k: int) -> np.ndarray:
     is the neighbours of the last one, less the pairs already seen.
     """
     n = len(ids)
+    if k == 0:
+        decode(ids)  # validate
     if k == 1:  # the 3 neighbours are distinct and differ from the cell
         return np.sort(np.concatenate([ids[:, None], _neighbours(ids)], axis=1), axis=1)
     origins = [np.arange(n)]
@@ -261,8 +265,7 @@ def grid_disk(cell, k: int = 1) -> np.ndarray:
     if isinstance(cell, str) and _scalar.is_valid(cell):
         return np.array(_scalar.disk(cell, k))
     ids, scalar = as_id_array(cell)
-    decode(ids)
-    out = _disks(ids, k)
+    out = _disks(ids, k)  # validates the ids
     if scalar:
         row = out[0]
         return row[row != ""]

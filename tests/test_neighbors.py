@@ -127,3 +127,11 @@ def test_array_disks_equal_single_disks(cell_list, k):
     assert out.shape[0] == len(cell_list)
     for row, c in zip(out, cell_list):
         assert [x for x in row.tolist() if x] == dggs.grid_disk(c, k).tolist()
+
+
+def test_disks_reject_bad_ids_at_every_k():
+    for k in (0, 1, 2):
+        with pytest.raises(InvalidCellError, match="'C9'"):
+            dggs.grid_disk(np.array(["C401", "C9"]), k)
+        with pytest.raises(InvalidCellError, match="'C9'"):
+            dggs.grid_disk("C9", k)
