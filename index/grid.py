@@ -29,6 +29,8 @@ _EA, _EB, _EC = 0, 1, 2
 # sides), or -1 when the edge lies on the parent's edge _OUTER[c, e].
 _SIBLING = np.array([[-1, -1, 1], [2, -1, 0], [1, -1, -1]], dtype=np.int8)
 _OUTER = np.array([[_EB, _EA, -1], [-1, _EC, -1], [-1, _EC, _EB]], dtype=np.int8)
+# One lookup per step: the sibling digit (0-2), or 3 + the parent's edge label.
+_STEP = np.where(_SIBLING >= 0, _SIBLING, 3 + _OUTER).astype(np.int8)
 # A cell's neighbour across an edge on its parent's edge is the same child of
 # the parent's neighbour there: the neighbour is the mirror image, and mirror
 # images carry the same labels (angles fix them).
@@ -96,28 +98,34 @@ def _neighbours_fine(dec) -> np.ndarray:
     ccw = l1_ccw[dec.l1] ^ (flips % 2 == 1)  # children 0 and 2 are mirror images
     codes = np.empty((n, 3, level), dtype=np.uint8)  # by edge label a, b, c
     faces = np.empty((n, 3), dtype=np.intp)
-    rows = np.arange(n)
     for e in (_EA, _EB, _EC):
-        new_digits = digits.copy()
+        new_digits = codes[:, e, 1:]  # walk in place
+        new_digits[...] = digits
         face = dec.face.copy()
         l1 = dec.l1.copy()
         edge = np.full(n, e, dtype=np.int8)
-        active = rows
+        active = None  # None: every row (no gather on the first, widest step)
         for pos in range(level - 2, -1, -1):  # walk up from the last digit
+            if active is None:
+                step = _STEP[new_digits[:, pos], edge]
+                done = step < 3
+                new_digits[done, pos] = step[done]
+                edge = np.where(done, edge, step - 3)
+                active = np.flatnonzero(~done)
+                continue
             if active.size == 0:
                 break
-            c = new_digits[active, pos]
-            ea = edge[active]
-            sib = _SIBLING[c, ea]
-            done = sib >= 0
-            new_digits[active[done], pos] = sib[done]
-            edge[active] = np.where(done, ea, _OUTER[c, ea])
+            step = _STEP[new_digits[active, pos], edge[active]]
+            done = step < 3
+            new_digits[active[done], pos] = step[done]
+            edge[active] = np.where(done, edge[active], step - 3)
             active = active[~done]
+        if active is None:
+            active = np.arange(n)
         if active.size:  # the edge lies on the level-1 triangle's edge
             nf_nd = l1_table[face[active], l1[active], edge[active]]
             face[active], l1[active] = nf_nd[:, 0], nf_nd[:, 1]
         codes[:, e, 0] = l1
-        codes[:, e, 1:] = new_digits
         faces[:, e] = face
     # reorder label columns (a, b, c) into the counter-clockwise corner order
     flip = ~ccw
