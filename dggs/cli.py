@@ -29,14 +29,11 @@ def main() -> None:
 def _register() -> None:
     from dggs.cell_cli import cell
     from dggs.experiments.cli import experiments
+    from dggs.storage.cli import register as register_storage
 
     main.add_command(cell)
     main.add_command(experiments)
-    try:
-        from dggs.storage.cli import register as register_storage
-    except ImportError:  # storage commands arrive with the storage layer
-        return
-    register_storage(main)
+    register_storage(main)  # bin, query, export, plot, info, demo
 
 
 _register()
