@@ -107,9 +107,9 @@ def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
     return face, x, y
 
 
-#: (sqrt, hypot, atan2) for arrays and for Python floats: :func:`sector_forward` serves both.
-NUMPY_OPS = (np.sqrt, np.hypot, np.arctan2)
-MATH_OPS = (math.sqrt, math.hypot, math.atan2)
+#: (sqrt, hypot, atan2, sin) for arrays and for Python floats: the sector formulas serve both.
+NUMPY_OPS = (np.sqrt, np.hypot, np.arctan2, np.sin)
+MATH_OPS = (math.sqrt, math.hypot, math.atan2, math.sin)
 
 
 def sector_forward(sin_az, cos_az, sin_half_z, ops=NUMPY_OPS):
@@ -118,7 +118,7 @@ def sector_forward(sin_az, cos_az, sin_half_z, ops=NUMPY_OPS):
     Takes the reduced azimuth's sine and cosine and ``sin(z/2)``; arrays with
     :data:`NUMPY_OPS`, Python floats with :data:`MATH_OPS`.
     """
-    sqrt, hypot, atan2 = ops
+    sqrt, hypot, atan2, _ = ops
     # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
     u = cos_az + sin_az * COT_THETA
     sin_half_q = sqrt(0.5 * (1.0 - u / hypot(TAN_G, u)))
@@ -206,12 +206,27 @@ def _az_closed(area: np.ndarray) -> np.ndarray:
     )
 
 
-def _az_closed_sincos(area: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _az_closed_sincos(area, ops=None):
     """``(sin Az, cos Az)`` of :func:`_az_closed` without the arctangent."""
-    num = 2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area)
-    den = np.sin(G - area) - _SIN_G * _COS_SMALL_G
-    r = np.hypot(num, den)
+    sqrt, hypot, atan2, sin = NUMPY_OPS if ops is None else ops
+    num = 2.0 * sin(G - 0.5 * area) * sin(0.5 * area)
+    den = sin(G - area) - _SIN_G * _COS_SMALL_G
+    r = hypot(num, den)
     return num / r, den / r
+
+
+def sector_distance(sin_az, cos_az, sin_a, cos_a, rho, ops=None):
+    """``(cos z, sin z)`` of a planar point at distance ``rho``, spherical/planar azimuths given.
+
+    Snyder's eqs. 9-12 inverted; arrays with :data:`NUMPY_OPS`, floats with :data:`MATH_OPS`.
+    """
+    sqrt, hypot, atan2, sin = NUMPY_OPS if ops is None else ops
+    u = cos_az + sin_az * COT_THETA  # eq. 9
+    sin_half_q = sqrt(0.5 * (1.0 - u / hypot(TAN_G, u)))
+    d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
+    s = rho / d_prime * sin_half_q  # sin(z/2), eqs. 11-12 inverted
+    s = s - (s > 1.0) * (s - 1.0)  # at most 1 (rounding at face vertices)
+    return 1.0 - 2.0 * s * s, 2.0 * s * sqrt(1.0 - s * s)
 
 
 def _newton(area: np.ndarray, az0: np.ndarray, tol: float, max_iter: int):
@@ -312,12 +327,7 @@ def inverse_xyz(
         else:
             raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
         sin_az, cos_az = np.sin(az), np.cos(az)
-    u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
-    d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
-    s = np.minimum(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
-    cos_z = 1.0 - 2.0 * s * s
-    sin_z = 2.0 * s * np.sqrt(1.0 - s * s)
+    cos_z, sin_z = sector_distance(sin_az, cos_az, sin_a, cos_a, rho)
     ct = cos_az * rc - sin_az * rs  # Az + 120 k
     st = sin_az * rc + cos_az * rs
     frame = geo.frames[np.asarray(face)]  # rows: centre, north, east

@@ -200,3 +200,98 @@ def latlng_to_cell(lat: float, lng: float, level: int) -> str | None:
         m, t = mats[child], offs[child]
         px, py = m[0][0] * px + m[0][1] * py + t[0], m[1][0] * px + m[1][1] * py + t[1]
     return "".join(chars)
+
+
+# ----------------------------------------------------------------------------
+# One cell's centre and corners, in floats (pure Python)
+# ----------------------------------------------------------------------------
+# These agree with the array paths to rounding (about 1e-15 rad, or 1e-7 of a
+# cell at level 40); the centre always maps back to its cell.
+_cell_tables = None
+
+
+def _load_cell_tables():
+    global _cell_tables
+    if _cell_tables is None:
+        from dggs import snyder, split26
+
+        from . import _geo
+
+        geo = _geo.ORIENTATION.geometry
+        _cell_tables = (
+            split26.LEVEL1.tolist(),
+            split26.FACE_VERTICES[::-1].tolist(),
+            geo.frames.tolist(),
+            _geo.ELLIPSOID._to_geodetic.tolist(),
+            snyder._ROT_COS.tolist(),
+            snyder._ROT_SIN.tolist(),
+        )
+    return _cell_tables
+
+
+def _corners(cell: str) -> list[tuple[float, float]]:
+    """Face-frame corners of a valid id, counter-clockwise (thesis §6.1.7: D and E per level)."""
+    level1, base, *_ = _load_cell_tables()
+    if len(cell) == 1:
+        return [tuple(v) for v in base]
+    (ax, ay), (bx, by), (cx, cy) = level1[ord(cell[1]) - 48]
+    for ch in cell[2:]:
+        dx, dy = cx + (ax - cx) / 3.0, cy + (ay - cy) / 3.0  # D: a third of the way from C to A
+        ex, ey = 0.5 * (ax + bx), 0.5 * (ay + by)  # E: the midpoint of AB
+        if ch == "0":  # BCD
+            ax, ay, bx, by = bx, by, dx, dy
+        elif ch == "1":  # BDE
+            ax, ay, bx, by, cx, cy = bx, by, dx, dy, ex, ey
+        else:  # ADE
+            bx, by, cx, cy = dx, dy, ex, ey
+    if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0:
+        return [(ax, ay), (bx, by), (cx, cy)]
+    return [(ax, ay), (cx, cy), (bx, by)]
+
+
+def planar_to_geodetic(face: int, x: float, y: float) -> tuple[float, float]:
+    """Closed-form inverse Snyder of one face-frame point, then authalic -> geodetic latitude."""
+    import math
+
+    from dggs.snyder import MATH_OPS, _area_from_planar, _az_closed_sincos, sector_distance
+
+    *_, frames, coeffs, rot_c, rot_s = _load_cell_tables()
+    rho = math.hypot(x, y)
+    ap = math.atan2(x, y) % (2 * math.pi)
+    k = min(int(ap / (2 * math.pi / 3)), 2)
+    rc, rs = rot_c[k], rot_s[k]
+    if rho > 0:
+        sin_a, cos_a = (x * rc - y * rs) / rho, (y * rc + x * rs) / rho
+    else:
+        sin_a, cos_a = 0.0, 1.0
+    sin_az, cos_az = _az_closed_sincos(_area_from_planar(sin_a, cos_a), MATH_OPS)
+    cos_z, sin_z = sector_distance(sin_az, cos_az, sin_a, cos_a, rho, MATH_OPS)
+    ct, st = cos_az * rc - sin_az * rs, sin_az * rc + cos_az * rs
+    c, n, e = frames[face]
+    a, b, d = cos_z, sin_z * ct, sin_z * st
+    px, py, pz = (a * c[i] + b * n[i] + d * e[i] for i in range(3))
+    beta = math.atan2(pz, math.hypot(px, py))
+    s2, c2 = math.sin(2 * beta), math.cos(2 * beta)
+    b1 = b2 = 0.0
+    for coef in reversed(coeffs):
+        b1, b2 = 2 * c2 * b1 - b2 + coef, b1
+    return math.degrees(beta + b1 * s2), math.degrees(math.atan2(py, px))
+
+
+def cell_to_latlng(cell: str) -> tuple[float, float]:
+    """Centre of a valid id: the image of its planar centroid."""
+    pts = _corners(cell)
+    return planar_to_geodetic(ord(cell[0]) - 65, sum(p[0] for p in pts) / 3.0, sum(p[1] for p in pts) / 3.0)
+
+
+def cell_to_boundary(cell: str, densify: int) -> tuple[tuple[float, float], ...]:
+    """Corners (and ``densify`` points per edge) of a valid id, counter-clockwise."""
+    pts = _corners(cell)
+    face = ord(cell[0]) - 65
+    out = []
+    for i in range(3):
+        (x0, y0), (x1, y1) = pts[i], pts[(i + 1) % 3]
+        for j in range(densify + 1):
+            t = j / (densify + 1)
+            out.append(planar_to_geodetic(face, x0 + t * (x1 - x0), y0 + t * (y1 - y0)))
+    return tuple(out)

@@ -112,6 +112,8 @@ def cell_to_latlng(cell):
     >>> round(lat, 6), round(lng, 6)
     (20.990853, 11.25)
     """
+    if isinstance(cell, str) and _scalar.is_valid(cell):
+        return _scalar.cell_to_latlng(cell)
     ids, scalar = as_id_array(cell)
     dec = decode(ids)
     c = _planar_centres(dec)
@@ -161,6 +163,14 @@ def cell_to_boundary(cell, densify: int = 0):
     >>> len(cell_to_boundary("C401")), len(cell_to_boundary("C401", densify=2))
     (3, 9)
     """
+    if (
+        isinstance(cell, str)
+        and _scalar.is_valid(cell)
+        and isinstance(densify, (int, np.integer))
+        and not isinstance(densify, bool)
+        and 0 <= densify <= 64
+    ):
+        return _scalar.cell_to_boundary(cell, int(densify))
     ids, scalar = as_id_array(cell)
     lat, lng = _boundary_points(ids, densify)
     if scalar:

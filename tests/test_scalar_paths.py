@@ -61,3 +61,18 @@ def test_single_point_path_on_edges_corners_and_many_points():
         # and the fast path itself answers (or declines) without ever disagreeing
         fast = [_scalar.latlng_to_cell(float(a), float(b), level) for a, b in pts[:3000]]
         assert sum(f is None for f in fast) < 0.01 * len(fast)
+
+
+@given(cells())
+def test_single_cell_centre_and_corners_match_array_paths(cell):
+    lat, lng = dggs.cell_to_latlng(cell)
+    alat, alng = dggs.cell_to_latlng(np.array([cell]))
+    assert abs(lat - alat[0]) < 1e-11
+    assert abs((lng - alng[0] + 180) % 360 - 180) * np.cos(np.radians(lat)) < 1e-11
+    assert dggs.latlng_to_cell(lat, lng, len(cell) - 1) == cell
+    one = np.array(dggs.cell_to_boundary(cell, densify=2))
+    arr = dggs.cell_to_boundary(np.array([cell]), densify=2)[0]
+    assert one.shape == arr.shape == (9, 2)
+    assert np.abs(one[:, 0] - arr[:, 0]).max() < 1e-11
+    dlng = np.abs((one[:, 1] - arr[:, 1] + 180) % 360 - 180) * np.cos(np.radians(one[:, 0]))
+    assert dlng.max() < 1e-11
