@@ -62,3 +62,11 @@ def test_readme_example_cell_is_real():
     readme = (ROOT / "README.md").read_text()
     m = re.search(r"dggs.latlng_to_cell\(51.05, -114.07, 9\)\s+# '(\w+)'", readme)
     assert m and m.group(1) == dggs.latlng_to_cell(51.05, -114.07, 9)
+
+
+def test_readme_usage_block_runs():
+    readme = (ROOT / "README.md").read_text()
+    block = readme.split("## Use", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    namespace: dict = {}
+    exec(compile(block, "README.md", "exec"), namespace)  # noqa: S102 - our own README
+    assert len(namespace["cells"]) == 10**6
