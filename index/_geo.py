@@ -1,4 +1,4 @@
-"""Internal glue between cell ids and the geometry: planar corners, projection, chunking."""
+"""Internal glue between cell ids and the geometry: planar corners and projection."""
 
 from __future__ import annotations
 
@@ -15,13 +15,6 @@ from .cellid import Decoded
 #: The default grid: PROJ's ISEA orientation on the WGS84 authalic sphere.
 ORIENTATION = ISEA
 ELLIPSOID = WGS84
-CHUNK = 1 << 16  # points per pass: keeps the per-level arrays in cache
-
-
-def chunks(n: int, size: int = CHUNK):
-    """Slices covering ``range(n)`` in blocks of ``size``."""
-    for start in range(0, n, size):
-        yield slice(start, min(start + size, n))
 
 
 def geodetic_to_xyz(lat_deg: np.ndarray, lng_deg: np.ndarray) -> np.ndarray:

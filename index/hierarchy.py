@@ -237,8 +237,9 @@ def cell_to_center_child(cell, level: int | None = None):
         )
     c = _planar_centres(dec)
     out = encode(dec.face, locate(c[:, 0], c[:, 1], level))
-    # the centre of a base cell is a corner of all six level-1 triangles: keep
-    # the answer a descendant by construction (truncation check)
+    # The centroid lies inside the cell, so it is located in one of its
+    # descendants; a base cell's centre is a corner of all six level-1
+    # triangles and goes to triangle 0 by the level-1 tie rule.
     return str(out[0]) if scalar else out
 
 
