@@ -1,7 +1,7 @@
-"""Benchmark dggs.snyder's forward and inverse against PROJ's ``+proj=isea``.
+"""Benchmark dggs.geometry.snyder's forward and inverse against PROJ's ``+proj=isea``.
 
 N random points uniform on the sphere (unit sphere, degrees in, fixed seed).
-Ours: :func:`dggs.snyder.forward` / :func:`dggs.snyder.inverse` (the public,
+Ours: :func:`dggs.geometry.snyder.forward` / :func:`dggs.geometry.snyder.inverse` (the public,
 checked API) and the unchecked vector cores ``forward_xyz`` / ``inverse_xyz``;
 the inverse runs each method (closed, newton, newton-poly, poly) on our own
 forward output.  PROJ: ``pyproj.Transformer.from_pipeline("+proj=isea +R=1")``
@@ -14,7 +14,7 @@ With ``--threads N`` every run is also split into N chunks run in a
 :class:`~concurrent.futures.ThreadPoolExecutor` (numpy and PROJ release the
 GIL), and the speed-up over one thread is reported.
 
-The library's own chunked thread pool (``dggs._parallel``, used by the public
+The library's own chunked thread pool (``dggs.geometry._parallel``, used by the public
 ``forward``/``inverse``) is switched off here with ``DGGS_THREADS=1``, so the
 "points/s" column is one core and ``--threads`` alone adds threads (the
 public functions still process 2**16-point cache-sized blocks; the ``_xyz``
@@ -40,8 +40,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from dggs import snyder
-from dggs.icosahedron import latlng_to_xyz
+from dggs.geometry import snyder
+from dggs.geometry.icosahedron import latlng_to_xyz
 
 #: thesis §4.1: "a single call of the original Snyder inverse projection can occur within
 #: 1/10,000ths of a second".

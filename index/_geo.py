@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from dggs import snyder
-from dggs._parallel import run_chunks
-from dggs.authalic import WGS84
-from dggs.icosahedron import ISEA, latlng_to_xyz, xyz_to_latlng
-from dggs.split26 import FACE_VERTICES, cell_vertices
+from dggs.geometry import snyder
+from dggs.geometry._parallel import run_chunks
+from dggs.geometry.authalic import WGS84
+from dggs.geometry.icosahedron import ISEA, latlng_to_xyz, xyz_to_latlng
+from dggs.geometry.split26 import FACE_VERTICES, cell_vertices
 
 from .cellid import Decoded
 

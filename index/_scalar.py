@@ -28,7 +28,7 @@ def _load_tables():
     """Plain-list copies of the neighbour tables in :mod:`index.grid`."""
     global _tables
     if _tables is None:
-        from dggs.split26 import face_adjacency
+        from dggs.geometry.split26 import face_adjacency
 
         from . import _geo
         from .grid import _OUTER, _SIBLING, _level1_tables
@@ -115,7 +115,7 @@ _point_tables = None
 def _load_point_tables():
     global _point_tables
     if _point_tables is None:
-        from dggs import split26, snyder
+        from dggs.geometry import split26, snyder
 
         from . import _geo
 
@@ -138,11 +138,11 @@ def latlng_to_cell(lat: float, lng: float, level: int) -> str | None:
     """The cell of one valid point, or None where a decision is too close to call."""
     import math
 
-    from dggs.snyder import MATH_OPS, sector_forward
+    from dggs.geometry.snyder import MATH_OPS, sector_forward
 
     coeffs, centres, frames, l1_c, l1_rows, mats, offs, rot_c, rot_s = _load_point_tables()
     phi = math.radians(lat)
-    # authalic latitude: Clenshaw sum of Karney's series (dggs.authalic)
+    # authalic latitude: Clenshaw sum of Karney's series (dggs.geometry.authalic)
     s2, c2 = math.sin(2 * phi), math.cos(2 * phi)
     b1 = b2 = 0.0
     for c in reversed(coeffs):
@@ -213,7 +213,7 @@ _cell_tables = None
 def _load_cell_tables():
     global _cell_tables
     if _cell_tables is None:
-        from dggs import snyder, split26
+        from dggs.geometry import snyder, split26
 
         from . import _geo
 
@@ -253,7 +253,7 @@ def planar_to_geodetic(face: int, x: float, y: float) -> tuple[float, float]:
     """Closed-form inverse Snyder of one face-frame point, then authalic -> geodetic latitude."""
     import math
 
-    from dggs.snyder import MATH_OPS, _area_from_planar, _az_closed_sincos, sector_distance
+    from dggs.geometry.snyder import MATH_OPS, _area_from_planar, _az_closed_sincos, sector_distance
 
     *_, frames, coeffs, rot_c, rot_s = _load_cell_tables()
     rho = math.hypot(x, y)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from dggs.errors import DggsValueError, LevelMismatchError
-from dggs.split26 import face_adjacency, locate, neighbour_points
+from dggs.geometry.split26 import face_adjacency, locate, neighbour_points
 
 from . import _geo
 from . import _scalar
@@ -72,7 +72,7 @@ def _level1_tables():
     """Level-1 orientation (6,) and neighbour table (20, 6, 3) -> (face, digit), from geometry."""
     global _L1_CCW, _L1_TABLE
     if _L1_TABLE is None:
-        from dggs.split26 import LEVEL1
+        from dggs.geometry.split26 import LEVEL1
 
         a, b, c = LEVEL1[:, 0], LEVEL1[:, 1], LEVEL1[:, 2]
         ccw = ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])) > 0

@@ -222,7 +222,7 @@ def cell_to_center_child(cell, level: int | None = None):
     'C4011'
     """
     from .points import _planar_centres
-    from dggs.split26 import locate
+    from dggs.geometry.split26 import locate
     from .cellid import encode
 
     ids, scalar = as_id_array(cell)

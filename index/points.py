@@ -9,10 +9,10 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon, box, mapping
 
-from dggs._parallel import run_chunks
-from dggs._validate import as_latlng
-from dggs import snyder
-from dggs.split26 import locate
+from dggs.geometry._parallel import run_chunks
+from dggs.geometry._validate import as_latlng
+from dggs.geometry import snyder
+from dggs.geometry.split26 import locate
 
 from . import _geo, _scalar
 from .cellid import as_id_array, check_level, decode, encode

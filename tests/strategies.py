@@ -8,7 +8,7 @@ import numpy as np
 from hypothesis import strategies as st
 
 import dggs
-from dggs.icosahedron import ISEA, xyz_to_latlng
+from dggs.geometry.icosahedron import ISEA, xyz_to_latlng
 
 MAX_LEVEL = dggs.MAX_LEVEL
 
@@ -45,7 +45,7 @@ def cells(draw, level=None, min_level: int = 0, max_level: int = MAX_LEVEL):
 
 def special_points() -> list[tuple[float, float]]:
     """Poles, antimeridian, the 12 icosahedron vertices and face-edge midpoints (geodetic)."""
-    from dggs.authalic import WGS84
+    from dggs.geometry.authalic import WGS84
 
     geo = ISEA.geometry
     pts = [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (0.0, -180.0), (45.0, 180.0), (-45.0, -180.0)]

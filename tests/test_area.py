@@ -10,7 +10,7 @@ import pytest
 from pyproj import Geod
 
 import dggs
-from dggs.authalic import WGS84
+from dggs.geometry.authalic import WGS84
 
 GEOD = Geod(ellps="WGS84")
 # The WGS84 ellipsoid's area, from pyproj.Geod (not from our code): two hemispheres.
@@ -33,8 +33,8 @@ def test_cell_area_is_ellipsoid_area_over_cell_count():
 
 def special_cells(level):
     """Cells touching face centres, icosahedron vertices, poles and the antimeridian."""
-    geo = dggs.icosahedron.ISEA.geometry if hasattr(dggs, "icosahedron") else None
-    from dggs.icosahedron import ISEA, xyz_to_latlng
+    geo = dggs.geometry.icosahedron.ISEA.geometry if hasattr(dggs, "icosahedron") else None
+    from dggs.geometry.icosahedron import ISEA, xyz_to_latlng
 
     geo = ISEA.geometry
     pts = np.concatenate([geo.centres, geo.vertices])
@@ -85,7 +85,7 @@ def test_corners_through_proj_isea_form_congruent_30_60_90_triangles():
     rng = np.random.default_rng(7)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 200)))
     lng = rng.uniform(-180, 180, 200)
-    from dggs.icosahedron import ISEA
+    from dggs.geometry.icosahedron import ISEA
 
     for level in (4, 6, 9, 12):
         cells = dggs.latlng_to_cell(lat, lng, level)

@@ -10,7 +10,7 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 from pyproj import Geod
 
-from dggs.authalic import WGS84, Ellipsoid, sphere
+from dggs.geometry.authalic import WGS84, Ellipsoid, sphere
 
 
 def exact_authalic(phi: np.ndarray) -> np.ndarray:

@@ -124,8 +124,8 @@ def test_uncompact_rejects_finer_cells():
 
 def test_jump_table_locate_equals_per_level_descent():
     """The 4-levels-at-once table reproduces the per-level comparisons exactly."""
-    from dggs import snyder
-    from dggs.split26 import _locate_per_level, locate
+    from dggs.geometry import snyder
+    from dggs.geometry.split26 import _locate_per_level, locate
 
     rng = np.random.default_rng(21)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 200_000)))
@@ -137,7 +137,7 @@ def test_jump_table_locate_equals_per_level_descent():
 
 def test_locate_nests_for_points_exactly_on_corners_and_edges():
     """Digits of a level never depend on how deep the lookup goes, even on cell edges."""
-    from dggs.split26 import locate
+    from dggs.geometry.split26 import locate
 
     corners = _geo.corners(decode(dggs.cell_to_children("C4", 6)))
     pts = np.concatenate([corners.reshape(-1, 2), 0.5 * (corners + np.roll(corners, 1, axis=1)).reshape(-1, 2)])
@@ -166,7 +166,7 @@ def test_children_tile_the_parent_at_any_level(cell):
 
 def test_block_composed_corners_equal_midpoint_construction():
     """Corners composed 4 digits at a time equal the thesis's construction (D at a third, E midpoint)."""
-    from dggs.split26 import _cell_vertices_per_level, cell_vertices
+    from dggs.geometry.split26 import _cell_vertices_per_level, cell_vertices
 
     rng = np.random.default_rng(33)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 5000)))

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from dggs.icosahedron import ISEA, POLE, Orientation, face_of, latlng_to_xyz, xyz_to_latlng
+from dggs.geometry.icosahedron import ISEA, POLE, Orientation, face_of, latlng_to_xyz, xyz_to_latlng
 
 PHI = (1 + math.sqrt(5)) / 2
 

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 import dggs
 from dggs.errors import CoordinateError
-from dggs.authalic import WGS84
+from dggs.geometry.authalic import WGS84
 
 from .strategies import cells, latlngs, levels, special_points
 

@@ -11,10 +11,10 @@ import pyproj
 import pytest
 from hypothesis import example, given
 
-from dggs import snyder
-from dggs.authalic import WGS84, sphere
+from dggs.geometry import snyder
+from dggs.geometry.authalic import WGS84, sphere
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.icosahedron import DOWN_FACES, ISEA, POLE, latlng_to_xyz
+from dggs.geometry.icosahedron import DOWN_FACES, ISEA, POLE, latlng_to_xyz
 
 from .strategies import latlngs, special_points
 
@@ -228,7 +228,7 @@ def test_jacobian_is_constant():
     continuous across their seams, so points whose stencil straddles a seam
     are left out.
     """
-    from dggs.split26 import level1_digit
+    from dggs.geometry.split26 import level1_digit
 
     lat, lng = random_points(20_000, seed=16)
     lat = np.clip(lat, -85.0, 85.0)

@@ -54,9 +54,9 @@ from typing import Any, Callable
 import click
 import numpy as np
 
-from dggs import snyder
-from dggs.icosahedron import ISEA, NUM_FACES, Orientation
-from dggs.split26 import FACE_VERTICES
+from dggs.geometry import snyder
+from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation
+from dggs.geometry.split26 import FACE_VERTICES
 
 __all__ = [
     "THESIS_TABLE_4_1",
@@ -335,7 +335,7 @@ def inverse_with_az(
 ) -> np.ndarray:
     """Inverse Snyder with a caller-supplied ``Az(Az')`` (unit vectors, (N, 3)).
 
-    The same steps as :func:`dggs.snyder.inverse_xyz` (eqs. 8-12 inverted),
+    The same steps as :func:`dggs.geometry.snyder.inverse_xyz` (eqs. 8-12 inverted),
     except that ``Az`` comes from ``az_of`` applied to ``Az'`` reduced to the
     [0, 120) degree sector: lets us evaluate fits that the library does not
     offer (the thesis's full-sector polynomial).
@@ -371,7 +371,7 @@ def spherical_triangle_areas(xyz: np.ndarray, triangles: np.ndarray) -> np.ndarr
 
 
 def _library_poly(degree: int) -> Callable[[np.ndarray], np.ndarray]:
-    """The library's ``method="poly"`` azimuth (:func:`dggs.snyder.polynomial`, mirrored at 60)."""
+    """The library's ``method="poly"`` azimuth (:func:`dggs.geometry.snyder.polynomial`, mirrored at 60)."""
     return lambda ap: snyder._az_poly(ap, degree)
 
 
@@ -384,7 +384,7 @@ def error_rows(qualities=QUALITIES, degrees=(3, 7)) -> list[dict[str, Any]]:
     One face suffices: every face has the same planar frame and the inverse
     differs from face to face only by a rotation.  For each quality and each
     polynomial (``"thesis"``: our full-sector, area-spaced fit of Table 4.1;
-    ``"library"``: :func:`dggs.snyder.polynomial`, 0-60 degrees mirrored):
+    ``"library"``: :func:`dggs.geometry.snyder.polynomial`, 0-60 degrees mirrored):
 
     ``dist_avg``/``dist_max`` are great-circle distances in units of the radius;
     ``area_abs_avg_pct`` the mean of ``|dA| / A`` in %, ``area_signed_avg_pct``
@@ -472,7 +472,7 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
     """Median time of the whole inverse and of the ``Az`` step alone, per method (thesis Table 4.2).
 
     The workload is the quality-``q`` mesh vertices of all 20 faces, inverted
-    in one vectorized call (:func:`dggs.snyder.inverse_xyz`, no input checks).
+    in one vectorized call (:func:`dggs.geometry.snyder.inverse_xyz`, no input checks).
     Methods: O = ``"newton"``, I = ``"newton-poly"`` (cubic), E = ``"poly"``
     (cubic), C = ``"closed"``; the cubic is the library's.  The ``Az`` step
     alone times only the solve for ``Az`` from ``A_G`` (and ``Az'``).  Methods are
@@ -618,7 +618,7 @@ def _format(res: dict[str, Any]) -> str:
     w("  Points exactly on the sector's symmetry rays (Az' = 0, 60 deg) converge in 1 iteration: the")
     w("  thesis's rise of O with quality (Figure 4.3) comes from their shrinking share.")
     w("")
-    w(f"  Speed: all 20 faces, one call of dggs.snyder.inverse_xyz (one pass, one thread), median of"
+    w(f"  Speed: all 20 faces, one call of dggs.geometry.snyder.inverse_xyz (one pass, one thread), median of"
       f" {s['timing_repeats']}")
     w("  (time.perf_counter, methods interleaved); ratio = time / time of O; impr. = 1 - ratio")
     w(f"  {'q':>4} {'m':>2} {'points':>7} {'iter':>5} {'time ms':>8} {'points/s':>10} {'ratio':>6}"
@@ -637,7 +637,7 @@ def _format(res: dict[str, Any]) -> str:
     w("Table 4.3 analogue  Errors of E (polynomial only) against the exact inverse, one face")
     w("  dist: great-circle distance in units of the radius (x 6371 km for metres; the thesis used")
     w("  6369 km); area: relative error of the quality triangles (%).  'thesis' = the full-sector")
-    w("  area-spaced fit of Table 4.1; 'library' = dggs.snyder.polynomial (0-60 deg, mirrored).")
+    w("  area-spaced fit of Table 4.1; 'library' = dggs.geometry.snyder.polynomial (0-60 deg, mirrored).")
     w(f"  {'q':>4} {'deg':>3} {'fit':>8} {'avg dist':>10} {'max dist':>10} {'avg m':>9} {'max m':>9}"
       f" {'avg|dA|%':>10} {'avg dA %':>10} {'max|dA|%':>10}")
     for q in QUALITIES:

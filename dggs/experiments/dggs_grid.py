@@ -89,7 +89,7 @@ def spherical_polygon_areas(points: np.ndarray) -> np.ndarray:
 
 
 def _to_unit_xyz(latlng: np.ndarray) -> np.ndarray:
-    from dggs.authalic import WGS84
+    from dggs.geometry.authalic import WGS84
 
     lat = WGS84.geodetic_to_authalic(np.radians(latlng[..., 0]))
     lng = np.radians(latlng[..., 1])

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from dggs import snyder
+from dggs.geometry import snyder
 from dggs.experiments import chapter4 as c4
 
 # thesis Table 4.1: degree -> (sum of squares of residuals, variance of residuals)

@@ -17,7 +17,7 @@ level), a reflection tiling: the neighbour across any cell edge is the
 cell's mirror image in that edge, across face edges too once the adjacent
 face is unfolded into the plane.
 
-All coordinates are in the face frame of :mod:`dggs.snyder` (unit sphere).
+All coordinates are in the face frame of :mod:`dggs.geometry.snyder` (unit sphere).
 Level-1 digits ``d = 0..5`` number the six triangles clockwise from the face's
 reference vertex: triangle ``d`` spans planar azimuths ``60 d .. 60 (d + 1)``
 degrees.
@@ -37,7 +37,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from dggs.snyder import FACE_CIRCUMRADIUS, FACE_INRADIUS
+from dggs.geometry.snyder import FACE_CIRCUMRADIUS, FACE_INRADIUS
 
 __all__ = [
     "FACE_VERTICES",

@@ -19,7 +19,7 @@ degrees, clockwise.
 
 Examples
 --------
->>> from dggs.icosahedron import ISEA, face_of
+>>> from dggs.geometry.icosahedron import ISEA, face_of
 >>> import numpy as np
 >>> int(face_of(ISEA, np.array([[0.0, 0.0, 1.0]]))[0])  # North Pole: edge 0/4, lowest wins
 0

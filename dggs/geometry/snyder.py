@@ -31,11 +31,11 @@ from functools import lru_cache
 
 import numpy as np
 
-from dggs._parallel import run_chunks
-from dggs._validate import as_latlng
-from dggs.authalic import WGS84, Ellipsoid
+from dggs.geometry._parallel import run_chunks
+from dggs.geometry._validate import as_latlng
+from dggs.geometry.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, latlng_to_xyz, xyz_to_latlng
+from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, latlng_to_xyz, xyz_to_latlng
 
 __all__ = [
     "forward",
@@ -451,9 +451,9 @@ class Projection:
     Parameters
     ----------
     ellipsoid : Ellipsoid
-        Default WGS84; use :func:`dggs.authalic.sphere` for spherical mode.
+        Default WGS84; use :func:`dggs.geometry.authalic.sphere` for spherical mode.
     orientation : Orientation
-        Default :data:`dggs.icosahedron.ISEA`.
+        Default :data:`dggs.geometry.icosahedron.ISEA`.
 
     Examples
     --------

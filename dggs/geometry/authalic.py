@@ -10,7 +10,7 @@ rad, far under float64 rounding.
 
 Examples
 --------
->>> from dggs.authalic import WGS84
+>>> from dggs.geometry.authalic import WGS84
 >>> round(WGS84.authalic_radius, 6)
 6371007.180918
 >>> float(WGS84.geodetic_to_authalic_deg(45.0))  # doctest: +ELLIPSIS
