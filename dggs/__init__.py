@@ -6,8 +6,10 @@ projection on the WGS84 authalic sphere: every cell at a level has exactly
 the same area on the ellipsoid.
 
 Coordinates are (lat, lng) in degrees, geodetic WGS84, as in h3; GeoJSON and
-shapely output is (lng, lat).  Cell ids are strings (``"C401"``): a face
-letter, a level-1 digit 0-5, one digit 0-2 per further level.
+shapely output is (lng, lat).  Cell ids are strings (``"C401"``: a face
+letter, a level-1 digit 0-5, one digit 0-2 per further level) or 64-bit
+integers with the same order; every function takes either, in any container,
+and gives back the kind it was given.
 
 Examples
 --------
@@ -25,10 +27,11 @@ from dggs.errors import (
     LevelError,
     LevelMismatchError,
     StorageError,
+    TooManyCellsError,
 )
 
 # Indexing
-from dggs.index.cellid import MAX_LEVEL
+from dggs.index.cellid import MAX_LEVEL, int_to_str, str_to_int
 from dggs.index.points import (
     cell_to_boundary,
     cell_to_latlng,
@@ -58,7 +61,7 @@ from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_
 from dggs.index.polyfill import polygon_to_cells
 from dggs.index.measure import cell_area, level_table
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 __all__ = [
     # errors
@@ -69,8 +72,11 @@ __all__ = [
     "LevelMismatchError",
     "InvalidCellError",
     "StorageError",
+    "TooManyCellsError",
     # indexing
     "MAX_LEVEL",
+    "str_to_int",
+    "int_to_str",
     "latlng_to_cell",
     "cell_to_latlng",
     "cell_to_boundary",

@@ -42,8 +42,8 @@ def info(cell_id: str, as_json: bool) -> None:
         "centre": {"lat": lat, "lng": lng},
         "area_km2": dggs.cell_area(cell_id, "km^2"),
         "parent": dggs.cell_to_parent(cell_id) if level > 0 else None,
-        "children": dggs.cell_to_children(cell_id).tolist() if level < dggs.MAX_LEVEL else [],
-        "neighbors": dggs.edge_neighbors(cell_id).tolist(),
+        "children": dggs.cell_to_children(cell_id) if level < dggs.MAX_LEVEL else [],
+        "neighbors": dggs.edge_neighbors(cell_id),
     }
     if as_json:
         click.echo(json.dumps(data, indent=2))

@@ -23,6 +23,7 @@ __all__ = [
     "LevelError",
     "LevelMismatchError",
     "InvalidCellError",
+    "TooManyCellsError",
     "StorageError",
 ]
 
@@ -53,3 +54,7 @@ class InvalidCellError(DggsValueError):
 
 class StorageError(DggsError):
     """The SQLite store cannot do what was asked (broken file, bad schema, bad rows)."""
+
+
+class TooManyCellsError(DggsValueError):
+    """An operation would return more cells than its ``max_cells`` limit allows."""

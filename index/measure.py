@@ -9,7 +9,10 @@ import numpy as np
 from dggs.errors import DggsValueError
 
 from . import _geo
-from .cellid import MAX_LEVEL, as_id_array, check_level, decode
+from . import _khier
+from ._bits import MAX_LEVEL
+from ._convert import cells_in
+from .cellid import check_level
 
 __all__ = ["cell_area", "level_table"]
 
@@ -30,7 +33,7 @@ def cell_area(cell_or_level, unit: str = "m^2"):
     Parameters
     ----------
     cell_or_level : str, int, or array_like of them
-        Cell id(s) or level(s).
+        Cell id(s) (strings or 64-bit integers) or level(s) (integers 0..MAX_LEVEL).
     unit : {"m^2", "km^2", "rads^2"}
         Square metres, square kilometres, or steradians (unit sphere).
 
@@ -43,17 +46,32 @@ def cell_area(cell_or_level, unit: str = "m^2"):
     """
     if unit not in (*_UNITS, "rads^2"):
         raise DggsValueError(f"unit {unit!r} is not one of m^2, km^2, rads^2")
-    scalar = np.ndim(cell_or_level) == 0
-    if isinstance(cell_or_level, str) or (
-        not scalar and np.asarray(cell_or_level).dtype.kind in "UO"
-    ):
-        ids, scalar = as_id_array(cell_or_level)
-        level = decode(ids).level
+    if _is_level(cell_or_level):
+        scalar = np.ndim(cell_or_level) == 0
+        level = np.array([check_level(v) for v in np.atleast_1d(np.asarray(cell_or_level, dtype=object)).ravel()])
+        shape = np.shape(cell_or_level)
     else:
-        level = np.array([check_level(int(v) if isinstance(v, (np.integer,)) else v) for v in np.atleast_1d(cell_or_level).ravel()])
+        ids, kind = cells_in(cell_or_level)
+        scalar, shape = kind.scalar, kind.shape
+        level = _khier.levels(ids).astype(np.int64)
     total = 4 * math.pi if unit == "rads^2" else _geo.ELLIPSOID.area * _UNITS[unit]
     area = total / _num_cells(level)
-    return float(area[0]) if scalar else area
+    return float(area[0]) if scalar else area.reshape(shape)
+
+
+def _is_level(value) -> bool:
+    """Small integers are levels; strings, ids (>= 2**62) and containers of them are cells."""
+    if isinstance(value, (bool, np.bool_)):
+        return True  # check_level refuses it with a LevelError
+    if isinstance(value, (int, np.integer)):
+        return int(value) < 2**62
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iu":
+        return bool(value.size) and int(value.max()) < 2**62
+    if isinstance(value, (list, tuple)) and len(value) and all(
+        isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in np.asarray(value, dtype=object).ravel()
+    ):
+        return int(np.max(np.asarray(value, dtype=object))) < 2**62
+    return False
 
 
 def level_table(max_level: int = MAX_LEVEL) -> list[dict]:

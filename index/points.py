@@ -1,21 +1,27 @@
-"""Points and cells: point-to-cell, centres, boundaries, polygons, GeoJSON."""
+"""Points and cells: point-to-cell, centres, boundaries, polygons, GeoJSON.
+
+Every function runs the compiled kernel (:mod:`dggs.index._kpoints`) over
+64-bit ids; ids come in and go out through :mod:`dggs.index._convert`, so a
+str gives a str, an int an int, and any array or column the same kind back.
+"""
 
 from __future__ import annotations
 
-import math
 from typing import Any, Iterable
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiPolygon, Polygon, box, mapping
+from shapely.geometry import MultiPolygon, Polygon, mapping
 
-from dggs.geometry._parallel import run_chunks
-from dggs.geometry._validate import as_latlng
-from dggs.geometry import snyder
-from dggs.geometry.split26 import locate
+from dggs.errors import DggsValueError
+from dggs.geometry._parallel import parallel
 
-from . import _geo, _scalar
-from .cellid import as_id_array, check_level, decode, encode
+from . import _codec, _kpoints
+from ._bits import MAX_LEVEL
+from ._convert import cells_in, scalar_id
+from ._coords import as_coordinates, as_float_scalar, check_densify, check_points, ids_out, raise_bad_point
+from ._polygons import default_densify, rings_to_geometries
+from .cellid import check_level
 
 __all__ = [
     "latlng_to_cell",
@@ -23,30 +29,37 @@ __all__ = [
     "cell_to_boundary",
     "cell_to_polygon",
     "cells_to_geojson",
+    "default_densify",
 ]
 
+_SCALARS = (float, int)
 
-def latlng_to_cell(lat, lng, level: int):
+
+def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
     """The cell at ``level`` holding each point (geodetic WGS84 degrees).
 
     Parameters
     ----------
     lat, lng : float or array_like
-        Latitude and longitude in degrees (WGS84).  Longitudes wrap.
+        Latitude and longitude in degrees (WGS84).  Longitudes wrap (reduced
+        exactly modulo 360).  Arrays of any shape broadcast together; a
+        pandas Series gives a Series with its index.
     level : int
         Subdivision level, 0..MAX_LEVEL.
+    as_int : bool
+        Return 64-bit integer ids (a Python int for one point, a uint64
+        array otherwise) instead of strings.
 
     Returns
     -------
-    str or ndarray of str
-        A cell id for a scalar point; a ``U`` array shaped like the input
-        for arrays.
+    str, int or ndarray
+        One id for a scalar point; an array shaped like the input otherwise.
 
     Raises
     ------
     CoordinateError
-        NaN, infinite or out-of-range coordinates (the message names the
-        first bad value and its index).
+        Non-numeric, NaN, infinite or out-of-range coordinates (the message
+        names the first bad value and its index), or shapes that do not match.
     LevelError
         ``level`` outside 0..MAX_LEVEL.
 
@@ -60,46 +73,42 @@ def latlng_to_cell(lat, lng, level: int):
     --------
     >>> latlng_to_cell(51.05, -114.07, 9)
     'F200021102'
+    >>> latlng_to_cell(51.05, -114.07, 9, as_int=True)
+    5392473139689029632
     >>> latlng_to_cell([0.0, 90.0], [0.0, 0.0], 2).tolist()
     ['C32', 'A50']
     """
+    if type(lat) in _SCALARS and type(lng) in _SCALARS and type(level) is int and 0 <= level <= MAX_LEVEL:
+        cell = _kpoints.one_point(lat, lng, level)  # the single-point path: no numpy
+        if cell:
+            return int(cell) if as_int else _codec.format_int(int(cell))
     level = check_level(level)
-    if (
-        isinstance(lat, (float, int))
-        and isinstance(lng, (float, int))
-        and not isinstance(lat, bool)
-        and math.isfinite(lat)
-        and math.isfinite(lng)
-        and -90.0 <= lat <= 90.0
-    ):
-        found = _scalar.latlng_to_cell(float(lat), float(lng), level)
-        if found is not None:
-            return found
-    lat_a, lng_a, scalar = as_latlng(lat, lng)
-    n = lat_a.shape[0]
-    out = np.empty(n, dtype=f"<U{level + 1}")
-    codes = out.view(np.uint32).reshape(n, level + 1)  # write the characters in place
-
-    def kernel(sl: slice) -> None:
-        xyz = _geo.geodetic_to_xyz(lat_a[sl], lng_a[sl])
-        face, x, y = snyder.forward_xyz(xyz, _geo.ORIENTATION)
-        encode(face, locate(x, y, level), out=codes[sl])
-
-    run_chunks(kernel, n)
-    if scalar:
-        return str(out[0])
-    return out.reshape(np.broadcast(np.asarray(lat), np.asarray(lng)).shape)
-
-
-def _planar_centres(dec) -> np.ndarray:
-    return _geo.corners(dec).mean(axis=1)
+    if np.ndim(lat) == 0 and np.ndim(lng) == 0:
+        a, b = as_float_scalar(lat, "latitude"), as_float_scalar(lng, "longitude")
+        cell = int(_kpoints.one_point(a, b, level))
+        if cell == 0:
+            raise_bad_point(np.array([a]), np.array([b]), 0)
+        return cell if as_int else _codec.format_int(cell)
+    lat_a, lng_a, shape, index = as_coordinates(lat, lng)
+    ids = np.empty(lat_a.shape[0], dtype=np.uint64)
+    if parallel(ids.shape[0]):
+        _kpoints.points_parallel(lat_a, lng_a, level, ids)
+    else:
+        _kpoints.points_serial(lat_a, lng_a, level, ids)
+    check_points(lat_a, lng_a, ids)
+    return ids_out(ids, shape, index, as_int)
 
 
 def cell_to_latlng(cell):
-    """Centre (geodetic lat, lng in degrees) of a cell or an array of cells.
+    """Centre (geodetic lat, lng in degrees) of a cell or of each cell of an array.
 
     The centre is the image of the planar triangle's centroid; it lies in
     the cell, and ``latlng_to_cell(*cell_to_latlng(c), get_level(c)) == c``.
+
+    Returns
+    -------
+    (float, float) or (ndarray, ndarray)
+        For arrays, two float arrays shaped like the input.
 
     Raises
     ------
@@ -112,34 +121,27 @@ def cell_to_latlng(cell):
     >>> round(lat, 6), round(lng, 6)
     (20.990853, 11.25)
     """
-    if isinstance(cell, str) and _scalar.is_valid(cell):
-        return _scalar.cell_to_latlng(cell)
-    ids, scalar = as_id_array(cell)
-    dec = decode(ids)
-    c = _planar_centres(dec)
-    lat, lng = _geo.planar_to_geodetic(dec.face, c[:, 0], c[:, 1])
-    if scalar:
-        return float(lat[0]), float(lng[0])
-    return lat, lng
+    one = scalar_id(cell)
+    if one:
+        return _kpoints.centre_of(one)
+    ids, kind = cells_in(cell)
+    if kind.scalar:
+        return _kpoints.one_centre(ids[0])
+    lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
+    if parallel(ids.shape[0]):
+        _kpoints.centres_parallel(ids, lat, lng)
+    else:
+        _kpoints.centres_serial(ids, lat, lng)
+    return lat.reshape(kind.shape), lng.reshape(kind.shape)
 
 
-def _boundary_points(ids: np.ndarray, densify: int) -> tuple[np.ndarray, np.ndarray]:
-    """(lat, lng) arrays of shape (N, 3 * (densify + 1)): corners then edge points."""
-    if not isinstance(densify, (int, np.integer)) or isinstance(densify, bool) or densify < 0:
-        from dggs.errors import DggsValueError
-
-        raise DggsValueError(f"densify {densify!r} must be a non-negative integer")
-    dec = decode(ids)
-    pts = _geo.corners(dec)  # (N, 3, 2)
-    t = np.arange(densify + 1) / (densify + 1)
-    start = pts
-    end = np.roll(pts, -1, axis=1)
-    ring = start[:, :, None, :] + t[None, None, :, None] * (end - start)[:, :, None, :]
-    ring = ring.reshape(len(ids), -1, 2)
-    m = ring.shape[1]
-    face = np.repeat(dec.face, m)
-    lat, lng = _geo.planar_to_geodetic(face, ring[..., 0].ravel(), ring[..., 1].ravel())
-    return lat.reshape(-1, m), lng.reshape(-1, m)
+def _boundaries(ids: np.ndarray, densify: int) -> np.ndarray:
+    out = np.empty((ids.shape[0], 3 * (densify + 1), 2))
+    if parallel(ids.shape[0] * (densify + 1)):
+        _kpoints.boundaries_parallel(ids, densify, out)
+    else:
+        _kpoints.boundaries_serial(ids, densify, out)
+    return out
 
 
 def cell_to_boundary(cell, densify: int = 0):
@@ -147,7 +149,7 @@ def cell_to_boundary(cell, densify: int = 0):
 
     Parameters
     ----------
-    cell : str or array_like of str
+    cell : str, int or array_like of ids
         Cell id(s).
     densify : int
         Points to add along each (curved) edge; 0 gives the 3 corners.
@@ -156,87 +158,19 @@ def cell_to_boundary(cell, densify: int = 0):
     -------
     tuple of (lat, lng) or ndarray
         For one cell, a tuple of ``3 * (densify + 1)`` (lat, lng) tuples, not
-        closed.  For an array, an ndarray of shape (N, 3 * (densify + 1), 2).
+        closed.  For an array, an ndarray of shape ``input shape + (3 * (densify + 1), 2)``.
 
     Examples
     --------
     >>> len(cell_to_boundary("C401")), len(cell_to_boundary("C401", densify=2))
     (3, 9)
     """
-    if (
-        isinstance(cell, str)
-        and _scalar.is_valid(cell)
-        and isinstance(densify, (int, np.integer))
-        and not isinstance(densify, bool)
-        and 0 <= densify <= 64
-    ):
-        return _scalar.cell_to_boundary(cell, int(densify))
-    ids, scalar = as_id_array(cell)
-    lat, lng = _boundary_points(ids, densify)
-    if scalar:
-        return tuple((float(a), float(b)) for a, b in zip(lat[0], lng[0]))
-    return np.stack([lat, lng], axis=-1)
-
-
-_POLE_TOL = 1e-9  # degrees
-
-
-def _ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygon:
-    """A lng/lat ring on the sphere -> shapely geometry, split at the antimeridian."""
-    pts: list[tuple[float, float]] = []
-    m = len(lat)
-    for i in range(m):
-        if abs(abs(lat[i]) - 90.0) < _POLE_TOL:
-            # A corner at a pole: walk up the incoming meridian, along the
-            # pole, and down the outgoing one.
-            pole = math.copysign(90.0, lat[i])
-            pts.append((float(lng[i - 1]), pole))
-            pts.append((float(lng[(i + 1) % m]), pole))
-        else:
-            pts.append((float(lng[i]), float(lat[i])))
-    xs = np.array([p[0] for p in pts])
-    ys = np.array([p[1] for p in pts])
-    # Unwrap longitudes so that consecutive points are under 180 degrees apart.
-    steps = np.diff(np.concatenate([xs, xs[:1]]))
-    steps = (steps + 180.0) % 360.0 - 180.0
-    xs = xs[0] + np.concatenate([[0.0], np.cumsum(steps[:-1])])
-    winding = float(np.sum(steps))
-    if abs(winding) > 180.0:  # the ring goes round a pole: close it over the pole
-        pole = 90.0 if ys.mean() > 0 else -90.0
-        xs = np.concatenate([xs, [xs[-1], xs[0] + winding, xs[0] + winding]])
-        ys = np.concatenate([ys, [pole, pole, ys[0]]])
-    poly = Polygon(np.column_stack([xs, ys]))
-    if not poly.is_valid:
-        poly = shapely.make_valid(poly)
-    lo, hi = xs.min(), xs.max()
-    if lo >= -180.0 and hi <= 180.0:
-        return poly
-    parts = []
-    for k in range(int(math.floor((lo + 180.0) / 360.0)), int(math.floor((hi + 180.0) / 360.0)) + 1):
-        window = box(-180.0 + 360.0 * k, -90.0, 180.0 + 360.0 * k, 90.0)
-        piece = poly.intersection(window)
-        if not piece.is_empty:
-            parts.append(shapely.affinity.translate(piece, xoff=-360.0 * k))
-    geoms: list = []
-    for p in parts:
-        geoms.extend(getattr(p, "geoms", [p]))
-    geoms = [g for g in geoms if isinstance(g, Polygon) and g.area > 0]
-    return geoms[0] if len(geoms) == 1 else MultiPolygon(geoms)
-
-
-def default_densify(level: int) -> int:
-    """Edge points that keep a polygon's geodesic area within 1e-6 of the cell's.
-
-    Measured with pyproj.Geod on WGS84 over random cells (see
-    tests/test_area.py): level-0 and level-1 edges are nearly geodesics;
-    cells touching an icosahedron vertex bend the same at every level (the
-    projection is self-similar there), which sets the need at levels 2-12.
-    """
-    if level <= 1:
-        return 32
-    if level <= 12:
-        return 256
-    return 64 if level <= 16 else 32
+    densify = check_densify(densify)
+    ids, kind = cells_in(cell)
+    out = _boundaries(ids, densify)
+    if kind.scalar:
+        return tuple((float(a), float(b)) for a, b in out[0])
+    return out.reshape(kind.shape + out.shape[1:])
 
 
 def cell_to_polygon(cell, densify: int | None = None):
@@ -244,7 +178,7 @@ def cell_to_polygon(cell, densify: int | None = None):
 
     Parameters
     ----------
-    cell : str or array_like of str
+    cell : str, int or array_like of ids
         Cell id(s).
     densify : int, optional
         Points added along each curved edge.  By default enough that the
@@ -253,7 +187,8 @@ def cell_to_polygon(cell, densify: int | None = None):
     Returns
     -------
     shapely.Polygon or shapely.MultiPolygon, or an ndarray of them
-        A MultiPolygon only where the cell crosses the antimeridian.
+        A MultiPolygon only where the cell crosses the antimeridian.  All
+        ordinary cells are built in one vectorized shapely call.
 
     Examples
     --------
@@ -261,16 +196,25 @@ def cell_to_polygon(cell, densify: int | None = None):
     >>> poly.geom_type, poly.is_valid
     ('Polygon', True)
     """
-    ids, scalar = as_id_array(cell)
-    dec = decode(ids)
-    out = np.empty(len(ids), dtype=object)
-    for level in np.unique(dec.level):
-        sel = np.flatnonzero(dec.level == level)
-        n = default_densify(int(level)) if densify is None else densify
-        lat, lng = _boundary_points(ids[sel], n)
-        for j, i in enumerate(sel):
-            out[i] = _ring_to_geometry(lat[j], lng[j])
-    return out[0] if scalar else out
+    if densify is not None:
+        densify = check_densify(densify)
+    ids, kind = cells_in(cell)
+    out = np.empty(ids.shape[0], dtype=object)
+    if densify is None:
+        from . import _khier
+
+        lv = _khier.levels(ids)
+        groups = {}
+        for level in np.unique(lv):
+            groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
+        for n, parts in groups.items():
+            sel = np.concatenate(parts)
+            ring = _boundaries(ids[sel], n)
+            out[sel] = rings_to_geometries(ring[..., 0], ring[..., 1])
+    else:
+        ring = _boundaries(ids, densify)
+        out[:] = rings_to_geometries(ring[..., 0], ring[..., 1])
+    return out[0] if kind.scalar else out.reshape(kind.shape)
 
 
 def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) -> dict:
@@ -278,13 +222,19 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
 
     Parameters
     ----------
-    cells : str or array_like of str
-        Cell ids.
+    cells : str, int or array_like of ids
+        Cell ids; the features carry them in the form given (str or int).
     properties : list of dict, or dict of columns, optional
-        Per-cell properties; each feature also gets ``cell`` and ``level``.
+        Per-cell properties (as many as cells); each feature also gets
+        ``cell`` and ``level``.
     densify : int or None
         Points added along each curved edge (default 16, light files); None
         gives :func:`cell_to_polygon`'s area-exact default.
+
+    Raises
+    ------
+    DggsValueError
+        ``properties`` do not give one row per cell.
 
     Examples
     --------
@@ -292,35 +242,46 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     >>> fc["type"], len(fc["features"]), fc["features"][1]["properties"]
     ('FeatureCollection', 2, {'cell': 'C402', 'level': 3, 'n': 2})
     """
-    ids, _ = as_id_array(cells)
-    polys = cell_to_polygon(ids, densify) if len(ids) else []
+    ids, kind = cells_in(cells)
+    ids = ids.reshape(-1)
+    polys = cell_to_polygon(ids, densify).reshape(-1) if ids.size else []
+    n = ids.shape[0]
+    rows: Iterable[dict]
     if properties is None:
-        rows: Iterable[dict] = ({} for _ in ids)
+        rows = ({} for _ in range(n))
     elif isinstance(properties, dict):
-        keys = list(properties)
-        cols = [list(properties[k]) for k in keys]
-        for k, col in zip(keys, cols):
-            if len(col) != len(ids):
-                from dggs.errors import DggsValueError
-
-                raise DggsValueError(f"property {k!r} has {len(col)} values for {len(ids)} cells")
-        rows = ({k: _plain(col[i]) for k, col in zip(keys, cols)} for i in range(len(ids)))
+        cols = {k: list(v) for k, v in properties.items()}
+        for k, col in cols.items():
+            if len(col) != n:
+                raise DggsValueError(f"property {k!r} has {len(col)} values for {n} cells")
+        rows = ({k: _plain(col[i]) for k, col in cols.items()} for i in range(n))
     else:
-        rows = ({k: _plain(v) for k, v in dict(r).items()} for r in properties)
+        listed = list(properties)
+        if len(listed) != n:
+            raise DggsValueError(f"properties has {len(listed)} rows for {n} cells")
+        rows = ({k: _plain(v) for k, v in dict(r).items()} for r in listed)
+    from . import _khier
+
+    lv = _khier.levels(ids)
+    as_str = kind.form == "str"
     features = []
-    for cid, poly, props in zip(ids, polys, rows):
-        cid = str(cid)
+    for cid, level, poly, props in zip(ids.tolist(), lv.tolist(), polys, rows):
+        key = _codec.format_int(cid) if as_str else cid
         features.append(
             {
                 "type": "Feature",
-                "id": cid,
-                "geometry": mapping(shapely.geometry.polygon.orient(poly, 1.0))
-                if isinstance(poly, Polygon)
-                else mapping(MultiPolygon([shapely.geometry.polygon.orient(p, 1.0) for p in poly.geoms])),
-                "properties": {"cell": cid, "level": len(cid) - 1, **props},
+                "id": key,
+                "geometry": mapping(_orient(poly)),
+                "properties": {"cell": key, "level": level, **props},
             }
         )
     return {"type": "FeatureCollection", "features": features}
+
+
+def _orient(poly):
+    if isinstance(poly, Polygon):
+        return shapely.geometry.polygon.orient(poly, 1.0)
+    return MultiPolygon([shapely.geometry.polygon.orient(p, 1.0) for p in poly.geoms])
 
 
 def _plain(v):

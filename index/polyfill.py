@@ -10,9 +10,11 @@ from shapely.geometry import MultiPolygon, Polygon, box
 
 from dggs.errors import DggsValueError
 
+from . import _codec, _khier
 from .cellid import check_level
-from .hierarchy import cell_to_children, get_base_cells
-from .points import _boundary_points, _ring_to_geometry, cell_to_latlng
+from .hierarchy import check_size, get_base_cells
+from .points import _boundaries
+from ._polygons import rings_to_geometries
 
 __all__ = ["polygon_to_cells"]
 
@@ -32,12 +34,22 @@ def _wrap_polygon(poly):
     return shapely.union_all(parts)
 
 
-def _cell_shapes(cells: np.ndarray) -> np.ndarray:
-    lat, lng = _boundary_points(cells, _SCREEN_DENSIFY)
-    return np.array([_ring_to_geometry(lat[i], lng[i]) for i in range(len(cells))], dtype=object)
+def _children(ids: np.ndarray, level: int) -> np.ndarray:
+    total, _ = _khier.count_children(ids, level)
+    out = np.empty(total, dtype=np.uint64)
+    _khier.children(ids, level, out)
+    return out
 
 
-def polygon_to_cells(polygon, level: int) -> np.ndarray:
+def _centres_inside(target, ids: np.ndarray) -> np.ndarray:
+    from . import _kpoints
+
+    lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
+    _kpoints.centres_serial(ids, lat, lng)
+    return shapely.contains_xy(target, lng, lat)
+
+
+def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int | None = None) -> np.ndarray:
     """Cells at ``level`` whose centres lie inside a polygon (lng/lat, WGS84).
 
     Holes are respected.  A polygon that crosses the antimeridian may be given
@@ -52,11 +64,23 @@ def polygon_to_cells(polygon, level: int) -> np.ndarray:
         Coordinates as (lng, lat) degrees.
     level : int
         Level of the cells to return.
+    as_int : bool
+        Return 64-bit integer ids (uint64) instead of strings.
+    max_cells : int, optional
+        Refuse to return more cells than this (default ``dggs.index.hierarchy.MAX_CELLS``);
+        checked level by level before anything large is allocated.
 
     Returns
     -------
-    ndarray of str
+    ndarray of str or uint64
         Sorted cell ids.
+
+    Raises
+    ------
+    DggsValueError
+        Not a (valid) shapely polygon, or latitudes outside -90..90.
+    TooManyCellsError
+        The result would exceed ``max_cells``.
 
     Examples
     --------
@@ -68,38 +92,52 @@ def polygon_to_cells(polygon, level: int) -> np.ndarray:
     level = check_level(level)
     if not isinstance(polygon, (Polygon, MultiPolygon)):
         raise DggsValueError(f"polygon must be a shapely Polygon or MultiPolygon, not {type(polygon).__name__}")
-    if polygon.is_empty:
-        return np.array([], dtype=f"<U{level + 1}")
+    found = _fill(polygon, level, max_cells) if not polygon.is_empty else np.zeros(0, dtype=np.uint64)
+    if as_int:
+        return found
+    codes, _ = _codec.format_u32(found)
+    return codes.view(f"<U{max(codes.shape[1], 1)}").reshape(-1)
+
+
+def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
+    """Sorted uint64 ids of the cells at ``level`` whose centres lie in ``polygon``."""
     if not polygon.is_valid:
         raise DggsValueError(f"polygon is not valid: {shapely.is_valid_reason(polygon)}")
     minx, miny, maxx, maxy = polygon.bounds
+    if not all(math.isfinite(v) for v in polygon.bounds):
+        raise DggsValueError(f"polygon bounds {polygon.bounds} are not finite")
     if miny < -90.0 or maxy > 90.0:
         raise DggsValueError(f"polygon latitudes {miny}..{maxy} are out of range -90..90")
     target = _wrap_polygon(polygon)
     shapely.prepare(target)
-    candidates = get_base_cells()
+    edge = target.boundary
+    shapely.prepare(edge)
+    candidates = get_base_cells(as_int=True)
     accepted: list[np.ndarray] = []
-    current = 0
-    while True:
+    total = 0
+    for current in range(level + 1):
         if current == level:
-            lat, lng = cell_to_latlng(candidates)
-            inside = shapely.contains_xy(target, lng, lat)
-            accepted.append(candidates[inside])
+            accepted.append(candidates[_centres_inside(target, candidates)])
             break
-        shapes = _cell_shapes(candidates)
-        # A margin for the curved edges between densified points.
-        size = np.array([max(s.bounds[2] - s.bounds[0], s.bounds[3] - s.bounds[1]) for s in shapes])
-        grown = shapely.buffer(shapes, 0.05 * size)
-        shrunk = shapely.buffer(shapes, 0.0)
-        hit = shapely.intersects(target, grown)
-        inside = hit & shapely.contains(target, shapely.buffer(shrunk, 0.05 * size))
+        ring = _boundaries(candidates, _SCREEN_DENSIFY)
+        shapes = rings_to_geometries(ring[..., 0], ring[..., 1])
+        bounds = shapely.bounds(shapes)
+        # a margin for the curved edges between densified points
+        margin = 0.05 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
+        hit = shapely.dwithin(target, shapes, margin)
+        inside = hit & shapely.contains(target, shapes) & ~shapely.dwithin(edge, shapes, margin)
         if inside.any():
-            accepted.append(cell_to_children(candidates[inside], level))
+            whole = candidates[inside]
+            count, _ = _khier.count_children(whole, level)
+            total += count
+            check_size(total, max_cells, "polygon_to_cells")
+            accepted.append(_children(whole, level))
         rest = candidates[hit & ~inside]
         if rest.size == 0:
             break
-        current += 1
-        candidates = cell_to_children(rest, current)
+        count, _ = _khier.count_children(rest, current + 1)
+        check_size(total + count, max_cells, "polygon_to_cells")
+        candidates = _children(rest, current + 1)
     if not accepted:
-        return np.array([], dtype=f"<U{level + 1}")
+        return np.zeros(0, dtype=np.uint64)
     return np.sort(np.concatenate(accepted))

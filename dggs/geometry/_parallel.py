@@ -1,44 +1,57 @@
-"""Chunked, threaded evaluation of vectorized kernels.
+"""Threads for the compiled kernel: ``DGGS_THREADS`` and when a loop runs in parallel.
 
-numpy releases the GIL inside its loops, so cache-sized chunks run on
-several threads at once.  Chunks of 2**16 points keep each pass's arrays in
-cache, which by itself more than doubles throughput over one huge pass.
+Every batch operation has a serial loop and a ``prange`` loop over the same
+per-item function.  Inputs below :data:`PARALLEL_MIN` items take the serial
+loop (starting threads costs more than it saves); larger ones use numba's
+thread pool, whose size is ``DGGS_THREADS`` (or ``NUMBA_NUM_THREADS``, or the
+number of cores).
 """
 
 from __future__ import annotations
 
 import os
-from concurrent.futures import ThreadPoolExecutor
-from typing import Callable
 
-CHUNK = 1 << 16
-_POOL: ThreadPoolExecutor | None = None
+_ENV = os.environ.get("DGGS_THREADS")
+if _ENV and _ENV.strip().isdigit() and int(_ENV) > 0:
+    # before numba starts: its thread pool takes this size
+    os.environ.setdefault("NUMBA_NUM_THREADS", _ENV.strip())
+
+import numba  # noqa: E402
+
+from dggs.errors import DggsValueError  # noqa: E402
+
+#: Smallest input that runs on several threads.
+PARALLEL_MIN = 8192
+
+
+def _configure() -> int:
+    env = os.environ.get("DGGS_THREADS")
+    if not env:
+        return int(numba.config.NUMBA_NUM_THREADS)
+    try:
+        wanted = int(env)
+    except ValueError:
+        raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer") from None
+    if wanted < 1:
+        raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer")
+    n = min(wanted, int(numba.config.NUMBA_NUM_THREADS))
+    numba.set_num_threads(n)
+    return n
+
+
+THREADS = _configure()
 
 
 def default_threads() -> int:
-    """Threads used for large inputs: ``DGGS_THREADS`` or the number of cores (at most 8)."""
-    env = os.environ.get("DGGS_THREADS")
-    if env:
-        return max(1, int(env))
-    return max(1, min(os.cpu_count() or 1, 8))
+    """Threads used for large inputs."""
+    return THREADS
 
 
-def _pool() -> ThreadPoolExecutor:
-    global _POOL
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(max_workers=default_threads(), thread_name_prefix="dggs")
-    return _POOL
+def parallel(n: int) -> bool:
+    """Whether a loop over ``n`` items should run on several threads."""
+    return THREADS > 1 and n >= PARALLEL_MIN
 
 
-def run_chunks(kernel: Callable[[slice], None], n: int, chunk: int = CHUNK) -> None:
-    """Call ``kernel(slice)`` over ``range(n)`` in chunks, in parallel when it pays.
-
-    ``kernel`` writes its results into preallocated outputs; chunks never overlap.
-    """
-    slices = [slice(s, min(s + chunk, n)) for s in range(0, n, chunk)]
-    if len(slices) <= 1 or default_threads() == 1:
-        for sl in slices:
-            kernel(sl)
-        return
-    for fut in [_pool().submit(kernel, sl) for sl in slices]:
-        fut.result()
+def run_chunks(kernel, n: int, chunk: int = 1 << 16) -> None:  # legacy numpy paths, going away
+    for s in range(0, n, chunk):
+        kernel(slice(s, min(s + chunk, n)))

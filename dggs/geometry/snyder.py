@@ -31,7 +31,6 @@ from functools import lru_cache
 
 import numpy as np
 
-from dggs.geometry._parallel import run_chunks
 from dggs.geometry._validate import as_latlng
 from dggs.geometry.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
@@ -172,16 +171,18 @@ def forward(lat, lng, orientation: Orientation = ISEA):
 
 
 def _forward_rad(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
-    """Chunked, threaded forward of radian arrays (1-d)."""
+    """Forward of radian arrays (1-d) through the compiled kernel."""
+    from . import kernel
+
+    geo = orientation.geometry
     n = lat.shape[0]
     face = np.empty(n, dtype=np.intp)
     x = np.empty(n)
     y = np.empty(n)
-
-    def kernel(sl: slice) -> None:
-        face[sl], x[sl], y[sl] = forward_xyz(latlng_to_xyz(lat[sl], lng[sl]), orientation)
-
-    run_chunks(kernel, n)
+    kernel.forward_rad(
+        np.ascontiguousarray(lat), np.ascontiguousarray(lng),
+        np.ascontiguousarray(geo.centres), np.ascontiguousarray(geo.frames), face, x, y,
+    )
     return face, x, y
 
 
@@ -424,17 +425,21 @@ def inverse(
             f"point ({float(x_a[i])!r}, {float(y_a[i])!r}) at index {i} is off face {int(face_a[i])}"
         )
     n = face_a.shape[0]
-    lat, lng = np.empty(n), np.empty(n)
-    iterations = np.zeros(n, dtype=np.int64)
+    if method == "closed":
+        from . import kernel
 
-    def kernel(sl: slice) -> None:
-        xyz, iterations[sl] = inverse_xyz(
-            face_a[sl], x_a[sl], y_a[sl], orientation, method, degree=degree, tol=tol, max_iter=max_iter
+        lat, lng = np.empty(n), np.empty(n)
+        iterations = np.zeros(n, dtype=np.int64)
+        kernel.inverse_deg(
+            np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a), np.ascontiguousarray(y_a),
+            np.ascontiguousarray(orientation.geometry.frames), lat, lng,
+        )
+    else:
+        xyz, iterations = inverse_xyz(
+            face_a, x_a, y_a, orientation, method, degree=degree, tol=tol, max_iter=max_iter
         )
         la, lo = xyz_to_latlng(xyz)
-        lat[sl], lng[sl] = np.degrees(la), np.degrees(lo)
-
-    run_chunks(kernel, n)
+        lat, lng = np.degrees(la), np.degrees(lo)
     if scalar:
         pair = (float(lat[0]), float(lng[0]))
         return (*pair, int(iterations[0])) if return_iterations else pair
@@ -477,7 +482,7 @@ class Projection:
         """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
         lat_a, lng_a, scalar = as_latlng(lat, lng)
         beta = self.ellipsoid.geodetic_to_authalic(np.radians(lat_a))
-        face, x, y = forward_xyz(latlng_to_xyz(beta, np.radians(lng_a)), self.orientation)
+        face, x, y = _forward_rad(np.asarray(beta, dtype=np.float64), np.radians(lng_a), self.orientation)
         x, y = x * self.radius, y * self.radius
         if scalar:
             return int(face[0]), float(x[0]), float(y[0])

@@ -1,0 +1,380 @@
+"""The compiled geometry kernel: one point or one planar triangle at a time.
+
+Every function here is a numba ``@njit`` over Python floats and ints, so the
+point-location, centre and boundary loops of :mod:`dggs.index` (and the
+public :func:`dggs.geometry.snyder.forward` / ``inverse``) run one
+implementation for a single point and for a billion.  The formulas are those
+of :mod:`dggs.geometry.snyder` (Snyder 1992, SNYDER.md), :mod:`.authalic`
+(Karney 2023) and :mod:`.split26` (thesis §6.1.7), written per point.
+
+The tables of the standard grid (PROJ's ISEA orientation, WGS84) are module
+constants that numba bakes into the compiled code: a call passes no arrays.
+Functions that take an ``orientation`` take its tables as arrays instead.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from .authalic import WGS84
+from .icosahedron import ISEA, NUM_FACES, TIE_STEP
+from .snyder import (
+    _COS_G,
+    _COS_SMALL_G,
+    _RT2,
+    _SIN_G,
+    COT_THETA,
+    FACE_INRADIUS,
+    G,
+    R_PRIME,
+    TAN_G,
+)
+from .split26 import _AMBIGUOUS, _GRID_H, _GRID_W, _L1_C, _L1_ROWS, _M, _T, FACE_VERTICES, LEVEL1, _jump_table
+
+_TWO_PI = 2.0 * math.pi
+_SECTOR = 2.0 * math.pi / 3.0
+_INV_SECTOR = 1.0 / _SECTOR
+_SQRT3 = math.sqrt(3.0)
+_HALF_SQRT3 = 0.5 * math.sqrt(3.0)
+_ROT_COS = np.cos(_SECTOR * np.arange(3))
+_ROT_SIN = np.sin(_SECTOR * np.arange(3))
+_D_PRIME_NUM = R_PRIME * TAN_G
+_TAN_G2 = TAN_G * TAN_G
+
+# The standard grid's tables, as compile-time constants.
+ISEA_CENTRES = np.ascontiguousarray(ISEA.geometry.centres)
+ISEA_FRAMES = np.ascontiguousarray(ISEA.geometry.frames)
+TIE_BIAS = -TIE_STEP * np.arange(NUM_FACES, dtype=np.float64)
+TO_AUTHALIC = np.ascontiguousarray(WGS84._to_authalic)
+TO_GEODETIC = np.ascontiguousarray(WGS84._to_geodetic)
+L1_C = np.ascontiguousarray(_L1_C)
+L1_ROWS = np.ascontiguousarray(_L1_ROWS)
+CHILD_M = np.ascontiguousarray(_M)
+CHILD_T = np.ascontiguousarray(_T)
+LEVEL1_CORNERS = np.ascontiguousarray(LEVEL1)
+
+
+def _jump_constants():
+    """split26's 4-level jump table as flat constants: cell codes, packed digit codes, maps."""
+    table, digit_rows, coef = _jump_table()
+    # the 4 digit codes (digit + 1) of each path, packed 2 bits each, first level highest
+    packed = np.zeros(81, dtype=np.uint64)
+    for j in range(4):
+        packed = (packed << np.uint64(2)) | (digit_rows[j].astype(np.uint64) + np.uint64(1))
+    return np.ascontiguousarray(table), packed, np.ascontiguousarray(np.stack(coef, axis=1))
+
+
+JUMP_TABLE, JUMP_PACKED, JUMP_MAPS = _jump_constants()
+_JUMP_SX = _GRID_W / math.sqrt(3.0)
+_JUMP_W2 = _GRID_W + 2
+#: A base cell's corners counter-clockwise: the face vertices in reverse (azimuth) order.
+FACE_CORNERS_CCW = np.ascontiguousarray(FACE_VERTICES[::-1])
+
+
+# ----------------------------------------------------------------------------
+# Latitudes and longitudes
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def clenshaw_shift(coeffs: np.ndarray, x: float) -> float:
+    """``sum_l coeffs[l-1] sin(2 l x)`` by Clenshaw summation (Karney 2023, eqs. A19-A20)."""
+    s2 = math.sin(2.0 * x)
+    two_c2 = 2.0 * math.cos(2.0 * x)
+    b1 = 0.0
+    b2 = 0.0
+    for i in range(coeffs.shape[0] - 1, -1, -1):
+        b1, b2 = two_c2 * b1 - b2 + coeffs[i], b1
+    return b1 * s2
+
+
+@njit(cache=True, nogil=True)
+def wrap_degrees(lng: float) -> float:
+    """A longitude reduced exactly to -180..180 (``fmod`` is exact; no radians first)."""
+    lng = np.fmod(lng, 360.0)
+    if lng > 180.0:
+        lng -= 360.0
+    elif lng < -180.0:
+        lng += 360.0
+    return lng
+
+
+@njit(cache=True, nogil=True)
+def geodetic_to_unit(lat_deg: float, lng_deg: float):
+    """Geodetic WGS84 degrees -> unit vector on the authalic sphere."""
+    phi = math.radians(lat_deg)
+    beta = phi + clenshaw_shift(TO_AUTHALIC, phi)
+    lam = math.radians(wrap_degrees(lng_deg))
+    cb = math.cos(beta)
+    return cb * math.cos(lam), cb * math.sin(lam), math.sin(beta)
+
+
+@njit(cache=True, nogil=True)
+def unit_to_geodetic(px: float, py: float, pz: float):
+    """Vector on the authalic sphere (any norm) -> geodetic WGS84 (lat, lng) degrees."""
+    beta = math.atan2(pz, math.hypot(px, py))
+    lat = beta + clenshaw_shift(TO_GEODETIC, beta)
+    return math.degrees(lat), math.degrees(math.atan2(py, px))
+
+
+@njit(cache=True, nogil=True)
+def geodetic_to_unit_fast(lat_deg: float, lng_deg: float):
+    """:func:`geodetic_to_unit` with two sine-cosine pairs instead of four.
+
+    The authalic shift ``d = beta - phi`` (below 0.0023 rad for WGS84) is
+    summed from ``sin 2 phi`` and ``cos 2 phi`` built from ``sin phi`` and
+    ``cos phi``; ``sin d`` and ``cos d`` are their Taylor series to the
+    ninth order (error below 1e-28), and ``beta``'s sine and cosine follow
+    by the angle-sum rule.
+    """
+    phi = math.radians(lat_deg)
+    sp = math.sin(phi)
+    cp = math.cos(phi)
+    s2 = 2.0 * sp * cp
+    two_c2 = 2.0 * ((cp - sp) * (cp + sp))
+    b1 = 0.0
+    b2 = 0.0
+    for i in range(TO_AUTHALIC.shape[0] - 1, -1, -1):
+        b1, b2 = two_c2 * b1 - b2 + TO_AUTHALIC[i], b1
+    d = b1 * s2
+    d2 = d * d
+    sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))))
+    cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)))
+    sb = sp * cd + cp * sd
+    cb = cp * cd - sp * sd
+    lam = math.radians(wrap_degrees(lng_deg))
+    return cb * math.cos(lam), cb * math.sin(lam), sb
+
+
+# ----------------------------------------------------------------------------
+# Snyder forward and inverse (SNYDER.md; Snyder 1992 eqs. 6-14)
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def nearest_face(centres: np.ndarray, px: float, py: float, pz: float) -> int:
+    """The face whose centre is nearest; near-ties go to the lower face (icosahedron.face_of)."""
+    best = 0
+    best_dot = -4.0
+    for f in range(centres.shape[0]):
+        d = px * centres[f, 0] + py * centres[f, 1] + pz * centres[f, 2] + TIE_BIAS[f]
+        if d > best_dot:
+            best_dot = d
+            best = f
+    return best
+
+
+@njit(cache=True, nogil=True)
+def sector_forward(sin_az: float, cos_az: float, sin_half_z: float):
+    """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')``."""
+    u = cos_az + sin_az * COT_THETA  # eq. 9
+    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(_TAN_G2 + u * u)))
+    cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
+    sin_h = math.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees
+    az_plus_h = math.atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
+    if az_plus_h < 0.0:
+        az_plus_h += _TWO_PI
+    area = az_plus_h + (G - math.pi)  # eq. 7
+    big_x = _RT2 - 2.0 * area * COT_THETA  # eq. 8 as (X, Y)
+    big_y = 2.0 * area
+    rho = _D_PRIME_NUM / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q  # eqs. 10-12
+    return rho * big_y, rho * big_x
+
+
+@njit(cache=True, nogil=True)
+def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
+    """Unit vector -> ``(face, x, y)`` in the face frame (unit sphere)."""
+    face = nearest_face(centres, px, py, pz)
+    c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
+    n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
+    e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
+    az = math.atan2(e, n)  # eq. 14, clockwise from the reference vertex
+    if az < 0.0:
+        az += _TWO_PI
+    k = min(int(az * _INV_SECTOR), 2)
+    az -= k * _SECTOR
+    sin_half_z = math.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
+    sp, cp = sector_forward(math.sin(az), math.cos(az), sin_half_z)
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]
+    return face, sp * rc + cp * rs, cp * rc - sp * rs
+
+
+@njit(cache=True, nogil=True)
+def forward_unit_fast(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
+    """:func:`forward_unit` choosing the 120-degree sector by half-planes, not an arctangent.
+
+    The reduced azimuth's sine and cosine come from rotating (east, north)
+    by -120 k degrees, so only the arctangent of ``Az + H`` (eq. 7) remains.
+    """
+    face = nearest_face(centres, px, py, pz)
+    c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
+    n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
+    e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
+    h2 = n * n + e * e
+    if h2 == 0.0:
+        return face, 0.0, 0.0
+    # sector k = azimuth // 120 degrees: sin(Az - 120) < 0 on [0, 120), sin(Az - 240) >= 0 on [240, 360)
+    if e >= 0.0 and -0.5 * e - _HALF_SQRT3 * n < 0.0 and not (e == 0.0 and n < 0.0):
+        k = 0
+    elif e < 0.0 and -0.5 * e + _HALF_SQRT3 * n >= 0.0:
+        k = 2
+    else:
+        k = 1
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]
+    inv_h = 1.0 / math.sqrt(h2)
+    sin_az = (e * rc - n * rs) * inv_h
+    cos_az = (n * rc + e * rs) * inv_h
+    sin_half_z = math.sqrt(0.5 * h2 / (1.0 + c))
+    sp, cp = sector_forward(sin_az, cos_az, sin_half_z)
+    return face, sp * rc + cp * rs, cp * rc - sp * rs
+
+
+@njit(cache=True, nogil=True)
+def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
+    """Face-frame ``(x, y)`` -> unit vector, by the exact closed form (SNYDER.md §4)."""
+    rho = math.hypot(x, y)
+    ap = math.atan2(x, y)
+    if ap < 0.0:
+        ap += _TWO_PI
+    k = min(int(ap * _INV_SECTOR), 2)
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]
+    if rho > 0.0:
+        inv_rho = 1.0 / rho
+        sin_a = (x * rc - y * rs) * inv_rho
+        cos_a = (y * rc + x * rs) * inv_rho
+    else:
+        sin_a, cos_a = 0.0, 1.0
+    area = _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))  # eq. 8 inverted
+    num = 2.0 * math.sin(G - 0.5 * area) * math.sin(0.5 * area)
+    den = math.sin(G - area) - _SIN_G * _COS_SMALL_G
+    r = math.hypot(num, den)
+    sin_az, cos_az = num / r, den / r
+    u = cos_az + sin_az * COT_THETA  # eq. 9
+    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.hypot(TAN_G, u)))
+    d_prime = _D_PRIME_NUM / (cos_a + sin_a * COT_THETA)  # eq. 10
+    s = min(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
+    cos_z = 1.0 - 2.0 * s * s
+    sin_z = 2.0 * s * math.sqrt(1.0 - s * s)
+    ct = (cos_az * rc - sin_az * rs) * sin_z  # Az + 120 k
+    st = (sin_az * rc + cos_az * rs) * sin_z
+    ox = cos_z * frames[face, 0, 0] + ct * frames[face, 1, 0] + st * frames[face, 2, 0]
+    oy = cos_z * frames[face, 0, 1] + ct * frames[face, 1, 1] + st * frames[face, 2, 1]
+    oz = cos_z * frames[face, 0, 2] + ct * frames[face, 1, 2] + st * frames[face, 2, 2]
+    return ox, oy, oz
+
+
+@njit(cache=True, nogil=True)
+def outside_face(x: float, y: float, slack: float) -> bool:
+    """Whether (x, y) lies outside the face triangle by more than ``slack`` (relative)."""
+    s3 = _SQRT3 / 2.0
+    limit = FACE_INRADIUS * (1.0 + slack)
+    return s3 * x + 0.5 * y > limit or -y > limit or -s3 * x + 0.5 * y > limit
+
+
+# ----------------------------------------------------------------------------
+# Split (2:6) on a face plane (thesis §6.1.7; split26.py)
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def level1_digit(x: float, y: float) -> int:
+    """Planar azimuth // 60 degrees (clockwise from +y) by half-planes; the centre gives 0.
+
+    ``sin(Az - t) = (x cos t - y sin t) / rho``: a point on a dividing ray
+    goes to the triangle clockwise of it, as ``int(Az / 60)`` would.
+    """
+    if x > 0.0 or (x == 0.0 and y >= 0.0):
+        if x == 0.0 and y == 0.0:
+            return 0
+        if -0.5 * x - _HALF_SQRT3 * y >= 0.0:  # Az >= 120
+            return 2
+        if 0.5 * x - _HALF_SQRT3 * y >= 0.0:  # Az >= 60
+            return 1
+        return 0
+    if 0.5 * x + _HALF_SQRT3 * y >= 0.0:  # Az >= 300
+        return 5
+    if -0.5 * x + _HALF_SQRT3 * y >= 0.0:  # Az >= 240
+        return 4
+    return 3
+
+
+@njit(cache=True, nogil=True)
+def level1_start(x: float, y: float):
+    """Level-1 digit (planar azimuth // 60 degrees) and the point in that triangle's canonical frame."""
+    d = level1_digit(x, y)
+    dx, dy = x - L1_C[d, 0], y - L1_C[d, 1]
+    m = L1_ROWS[d]
+    return d, m[0, 0] * dx + m[0, 1] * dy, m[1, 0] * dx + m[1, 1] * dy
+
+
+@njit(cache=True, nogil=True)
+def descend(px: float, py: float):
+    """One level down in the canonical frame: child digit and the point in the child's frame.
+
+    Child 0 (BCD) lies on C's side of BD (``sqrt3 x + y < 1``), child 2 (ADE)
+    on A's side of DE (``sqrt3 x - y > 1``), child 1 between them.
+    """
+    sx = _SQRT3 * px
+    # branch-free (the digits of random points are random): 0 wins over 2
+    c = (1 - int(sx + py < 1.0)) * (1 + int(sx - py > 1.0))
+    return (
+        c,
+        CHILD_M[c, 0, 0] * px + CHILD_M[c, 0, 1] * py + CHILD_T[c, 0],
+        CHILD_M[c, 1, 0] * px + CHILD_M[c, 1, 1] * py + CHILD_T[c, 1],
+    )
+
+
+@njit(cache=True, nogil=True)
+def descend4(px: float, py: float):
+    """Four levels down at once: packed digit codes (8 bits, first level highest) and the point.
+
+    One look-up in split26's jump table (a grid over the canonical triangle
+    whose cells lie inside one level-4 descendant); points in ambiguous grid
+    cells, near an edge, take four exact steps of :func:`descend`.
+    """
+    fx = min(max(px * _JUMP_SX + 1.0, 0.0), _GRID_W + 1.0)
+    fy = min(max(py * _GRID_H + 1.0, 0.0), _GRID_H + 1.0)
+    code = JUMP_TABLE[int(fy) * _JUMP_W2 + int(fx)]
+    if code == _AMBIGUOUS:
+        packed = np.uint64(0)
+        for _ in range(4):
+            c, px, py = descend(px, py)
+            packed = (packed << np.uint64(2)) | np.uint64(c + 1)
+        return packed, px, py
+    m = JUMP_MAPS[code]
+    return JUMP_PACKED[code], m[0] * px + m[1] * py + m[4], m[2] * px + m[3] * py + m[5]
+
+
+@njit(cache=True, nogil=True)
+def child_corners(ax, ay, bx, by, cx, cy, digit: int):
+    """Corners (A, B, C) of child ``digit`` of the 30-60-90 triangle (A, B, C).
+
+    D is a third of the way from C to A, E the midpoint of AB; children
+    0 = (B, D, C), 1 = (B, D, E), 2 = (A, D, E).
+    """
+    dx, dy = cx + (ax - cx) / 3.0, cy + (ay - cy) / 3.0
+    if digit == 0:
+        return bx, by, dx, dy, cx, cy
+    ex, ey = 0.5 * (ax + bx), 0.5 * (ay + by)
+    if digit == 1:
+        return bx, by, dx, dy, ex, ey
+    return ax, ay, dx, dy, ex, ey
+
+
+# ----------------------------------------------------------------------------
+# Loops for dggs.geometry.snyder.forward / inverse (any orientation)
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True, parallel=True)
+def forward_rad(lat, lng, centres, frames, face, x, y):
+    """Spherical radians -> face, x, y on the unit sphere."""
+    for i in prange(lat.shape[0]):
+        cl = math.cos(lat[i])
+        face[i], x[i], y[i] = forward_unit(
+            centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i])
+        )
+
+
+@njit(cache=True, nogil=True, parallel=True)
+def inverse_deg(face, x, y, frames, lat, lng):
+    """Face-frame points -> spherical (lat, lng) degrees."""
+    for i in prange(face.shape[0]):
+        px, py, pz = inverse_unit(frames, face[i], x[i], y[i])
+        lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
+        lng[i] = math.degrees(math.atan2(py, px))

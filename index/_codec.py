@@ -1,0 +1,430 @@
+"""String <-> 64-bit integer cell id codec: compiled kernels, container buffers, scalar helpers.
+
+The integer layout is in :mod:`dggs.index._bits`; a string id is a face
+letter ``A``..``T``, a level-1 digit ``0``..``5``, then one digit ``0``..``2``
+per further level (at most 29 characters).  Strings reach the kernels as 2-D
+character codes (a zero-copy ``uint32`` view of a numpy ``U`` array, ``uint8``
+for ``S``; trailing NULs mean a shorter id), as Arrow buffers (data, offsets,
+validity) or NUL-joined.  Parsers write the null id 0 for an invalid entry and
+return the index of the first one (or -1), so callers can raise naming it.
+The scalar helpers are pure Python and table driven (a few hundred ns a call).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from ._bits import FACE_SHIFT, L1_SHIFT, MAX_LEVEL
+
+__all__ = [
+    "MAX_CHARS", "arrow_strings", "check_ints", "format_int", "format_u8", "format_u32", "max_level", "parse_arrow",
+    "parse_arrow_array", "parse_chars", "parse_codes", "parse_joined", "parse_pystrings", "parse_str", "valid_int",
+    "valid_ints",
+]  # fmt: skip
+
+#: Longest string id: a face letter and MAX_LEVEL digits.
+MAX_CHARS = MAX_LEVEL + 1
+_LOW_BITS = (1 << L1_SHIFT) - 1  # the level-2..28 fields
+_DIGIT_LOW = sum(1 << (2 * j) for j in range(MAX_LEVEL - 1))  # low bit of each 2-bit field
+_ORD_A = 65  # "A"
+_ORD_0 = 48  # "0"
+
+_U0 = np.uint64(0)
+_U1 = np.uint64(1)
+_U_LOW_BITS = np.uint64(_LOW_BITS)
+_U_DIGIT_LOW = np.uint64(_DIGIT_LOW)
+
+
+# --------------------------------------------------------------------------
+# Compiled kernels
+# --------------------------------------------------------------------------
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _parse_span(buf, start, end) -> np.uint64:
+    """Id of the characters ``buf[start:end]`` (any integer dtype); 0 if invalid."""
+    n = end - start
+    if n < 1 or n > MAX_CHARS:
+        return _U0
+    face = np.int64(buf[start]) - _ORD_A
+    if face < 0 or face >= 20:
+        return _U0
+    cell = np.uint64(1 << 62) | (np.uint64(face) << np.uint64(FACE_SHIFT))
+    if n == 1:
+        return cell
+    d = np.int64(buf[start + 1]) - _ORD_0
+    if d < 0 or d > 5:
+        return _U0
+    cell |= np.uint64(d + 1) << np.uint64(L1_SHIFT)
+    # levels 2..: accumulate base-4 codes (digit + 1), then shift them into place
+    acc = _U0
+    for j in range(start + 2, end):
+        d = np.int64(buf[j]) - _ORD_0
+        if d < 0 or d > 2:
+            return _U0
+        acc = (acc << np.uint64(2)) | np.uint64(d + 1)
+    return cell | (acc << np.uint64(2 * (MAX_CHARS - n)))
+
+
+@njit(cache=True, nogil=True)
+def parse_codes(codes):
+    """Parse a 2-D array of character codes (one id per row, NUL padded).
+
+    Returns ``(ids, first_bad)``: a uint64 array with 0 for every invalid
+    row, and the index of the first invalid row or -1.  An empty row is
+    invalid; so is a NUL followed by another character.
+    """
+    n, width = codes.shape
+    out = np.empty(n, dtype=np.uint64)
+    bad = -1
+    for i in range(n):
+        row = codes[i]
+        end = width
+        while end > 0 and row[end - 1] == 0:
+            end -= 1
+        v = _parse_span(row, 0, end)
+        out[i] = v
+        if v == _U0 and bad < 0:
+            bad = i
+    return out, bad
+
+
+@njit(cache=True, nogil=True)
+def parse_arrow(data, offsets, validity, offset: int, n: int):
+    """Parse ``n`` Arrow strings starting at element ``offset``.
+
+    ``data`` is the uint8 character buffer, ``offsets`` the int32 or int64
+    offsets buffer and ``validity`` the validity bitmap (an empty array when
+    there are no nulls).  Nulls are invalid.  Returns ``(ids, first_bad)``.
+    """
+    out = np.empty(n, dtype=np.uint64)
+    bad = -1
+    has_validity = validity.shape[0] > 0
+    for i in range(n):
+        j = offset + i
+        if has_validity and not (validity[j >> 3] >> (j & 7)) & 1:
+            v = _U0
+        else:
+            v = _parse_span(data, np.int64(offsets[j]), np.int64(offsets[j + 1]))
+        out[i] = v
+        if v == _U0 and bad < 0:
+            bad = i
+    return out, bad
+
+
+@njit(cache=True, nogil=True)
+def parse_joined(data, n: int):
+    """Parse ``n`` ids joined by NUL codes (``"\\x00".join(strings)``, as codes of any integer dtype).
+
+    Returns ``(ids, first_bad, pieces)``; ``pieces != n`` means an element held a NUL itself
+    (the ids are then meaningless).
+    """
+    out = np.zeros(n, dtype=np.uint64)
+    bad = -1
+    i = 0
+    start = 0
+    m = data.shape[0]
+    for j in range(m + 1):
+        if j == m or data[j] == 0:
+            if i < n:
+                v = _parse_span(data, start, j)
+                out[i] = v
+                if v == _U0 and bad < 0:
+                    bad = i
+            i += 1
+            start = j + 1
+    return out, bad, i
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _ok(cell: np.uint64) -> bool:
+    """Whether a uint64 is a well-formed id (branch-free, so loops over it vectorize)."""
+    l1 = (cell >> np.uint64(L1_SHIFT)) & np.uint64(7)
+    low = cell & _U_LOW_BITS
+    # one bit per non-empty field of levels 2..28: the filled ones must be the top ones
+    m = (low | (low >> _U1)) & _U_DIGIT_LOW
+    lsb = m & (~m + _U1)
+    return (
+        ((cell >> np.uint64(62)) == _U1)  # sign clear, marker set
+        & (((cell >> np.uint64(FACE_SHIFT)) & np.uint64(31)) < np.uint64(20))
+        & (l1 != np.uint64(7))
+        & ((l1 != _U0) | (low == _U0))
+        & (m == (_U_DIGIT_LOW & ~(lsb - _U1)))
+    )
+
+
+@njit(cache=True, nogil=True)
+def check_ints(ids):
+    """Index of the first id of a uint64 array that is not well formed, or -1."""
+    ok = True
+    for i in range(ids.shape[0]):
+        ok &= _ok(ids[i])
+    if ok:
+        return -1
+    for i in range(ids.shape[0]):
+        if not _ok(ids[i]):
+            return i
+    return -1
+
+
+@njit(cache=True, nogil=True)
+def valid_ints(ids):
+    """Boolean mask of the well-formed ids of a uint64 array."""
+    out = np.empty(ids.shape[0], dtype=np.bool_)
+    for i in range(ids.shape[0]):
+        out[i] = _ok(ids[i])
+    return out
+
+
+@njit(cache=True, nogil=True)
+def max_level(ids):
+    """``(deepest level, first bad index)`` of a uint64 array; the null id 0 is allowed.
+
+    The deepest level is -1 when there is no id but nulls.
+    """
+    ok = True
+    none = np.uint64(1 << 63)
+    lowest = none  # the lowest bit of the deepest filled field seen
+    for i in range(ids.shape[0]):
+        c = ids[i]
+        ok &= _ok(c) | (c == _U0)
+        low = c & _U_LOW_BITS
+        m = (low | (low >> _U1)) & _U_DIGIT_LOW
+        bit = m & (~m + _U1)
+        if m == _U0:
+            bit = none if c == _U0 else np.uint64(1 << L1_SHIFT) if (c >> np.uint64(L1_SHIFT)) & np.uint64(7) else np.uint64(1 << FACE_SHIFT)
+        lowest = min(lowest, bit)
+    if not ok:
+        for i in range(ids.shape[0]):
+            if ids[i] != _U0 and not _ok(ids[i]):
+                return -1, i
+    if lowest == none:
+        return -1, -1
+    if lowest == np.uint64(1 << FACE_SHIFT):
+        return 0, -1
+    if lowest == np.uint64(1 << L1_SHIFT):
+        return 1, -1
+    k = MAX_LEVEL
+    while lowest > _U1:
+        lowest >>= np.uint64(2)
+        k -= 1
+    return k, -1
+
+
+@njit(cache=True, nogil=True)
+def _fill_codes(ids, out) -> None:
+    """Characters of valid-or-null ids into the rows of ``out``: an empty field gives a NUL."""
+    width = out.shape[1]
+    for i in range(ids.shape[0]):
+        c = ids[i]
+        row = out[i]
+        row[0] = _ORD_A + np.int64((c >> np.uint64(FACE_SHIFT)) & np.uint64(31)) if c != _U0 else 0
+        if width > 1:
+            code = np.int64((c >> np.uint64(L1_SHIFT)) & np.uint64(7))
+            row[1] = _ORD_0 - 1 + code if code else 0
+        for k in range(2, width):
+            code = np.int64((c >> np.uint64(2 * (MAX_LEVEL - k))) & np.uint64(3))
+            row[k] = _ORD_0 - 1 + code if code else 0
+
+
+def _format(ids: np.ndarray, dtype) -> tuple[np.ndarray, int]:
+    ids = np.ascontiguousarray(ids, dtype=np.uint64).reshape(-1)
+    deepest, bad = max_level(ids)
+    if bad >= 0:
+        return np.zeros((ids.shape[0], 1), dtype=dtype), bad
+    out = np.empty((ids.shape[0], max(deepest + 1, 1)), dtype=dtype)
+    _fill_codes(ids, out)
+    return out, -1
+
+
+def format_u32(ids: np.ndarray) -> tuple[np.ndarray, int]:
+    """Character codes (uint32, ``(N, max level + 1)``) of ids; view as ``U{width}``.
+
+    The null id 0 gives an empty string.  Returns ``(codes, first_bad)``; when
+    an id is not well formed, ``first_bad`` is its index (and codes are zeros).
+    """
+    return _format(ids, np.uint32)
+
+
+def format_u8(ids: np.ndarray) -> tuple[np.ndarray, int]:
+    """Like :func:`format_u32`, as uint8 codes (view as ``S{width}``)."""
+    return _format(ids, np.uint8)
+
+
+# --------------------------------------------------------------------------
+# numpy and Arrow containers
+# --------------------------------------------------------------------------
+
+
+def parse_chars(flat: np.ndarray) -> tuple[np.ndarray, int]:
+    """Parse a 1-d numpy ``U`` or ``S`` array through a zero-copy view of its codes.
+
+    Returns ``(ids, first_bad)`` as :func:`parse_codes`.
+    """
+    n = flat.shape[0]
+    wide = flat.dtype.kind == "U"
+    width = flat.dtype.itemsize // (4 if wide else 1)
+    if width == 0 or n == 0:  # ``U0``: only empty strings
+        return np.zeros(n, dtype=np.uint64), (0 if n else -1)
+    if not flat.dtype.isnative:
+        flat = flat.astype(flat.dtype.newbyteorder("="))
+    codes = np.ascontiguousarray(flat).view(np.uint32 if wide else np.uint8).reshape(n, width)
+    ids, bad = parse_codes(codes)
+    return ids, int(bad)
+
+
+def parse_arrow_array(arr, pa) -> tuple[np.ndarray, int]:
+    """Parse one pyarrow string (or binary) Array from its buffers; nulls are invalid.
+
+    ``pa`` is the pyarrow module.  Returns ``(ids, first_bad)``.
+    """
+    n = len(arr)
+    t = arr.type
+    large = pa.types.is_large_string(t) or pa.types.is_large_binary(t)
+    if n == 0:
+        return np.zeros(0, dtype=np.uint64), -1
+    validity, off_buf, data_buf = arr.buffers()[:3]
+    offsets = np.frombuffer(off_buf, dtype=np.int64 if large else np.int32)
+    data = np.frombuffer(data_buf, dtype=np.uint8) if data_buf is not None else np.zeros(0, dtype=np.uint8)
+    bits = np.frombuffer(validity, dtype=np.uint8) if validity is not None and arr.null_count else np.zeros(0, dtype=np.uint8)
+    ids, bad = parse_arrow(data, offsets, bits, arr.offset, n)
+    return ids, int(bad)
+
+
+def arrow_strings(ids: np.ndarray, pa, large: bool = False):
+    """``(array, first_bad)``: a pyarrow ``string`` (``large_string``) Array of ids, the null id 0 as a null.
+
+    ``pa`` is the pyarrow module; ``array`` is None when an id is not well formed.
+    """
+    ids = np.ascontiguousarray(ids, dtype=np.uint64).reshape(-1)
+    codes, bad = format_u8(ids)
+    if bad >= 0:
+        return None, bad
+    n, width = codes.shape
+    if not large and n * width >= 2**31:
+        raise OverflowError("too many ids for 32-bit Arrow offsets; use large_string")
+    off_type = np.int64 if large else np.int32
+    if codes[:, -1].all():  # ids of one level: the codes are the data buffer as they are
+        data, offsets = codes.reshape(-1), np.arange(0, n * width + 1, width, dtype=off_type)
+    else:
+        data, offsets = codes[codes != 0], np.zeros(n + 1, dtype=off_type)
+        np.cumsum(np.count_nonzero(codes, axis=1), out=offsets[1:])
+    nulls = ids == 0
+    n_null = int(nulls.sum())
+    valid = pa.py_buffer(np.packbits(~nulls, bitorder="little")) if n_null else None
+    buffers = [valid, pa.py_buffer(offsets), pa.py_buffer(data)]
+    return pa.Array.from_buffers(pa.large_string() if large else pa.string(), n, buffers, null_count=n_null), -1
+
+
+def parse_pystrings(items) -> tuple[np.ndarray, int] | None:
+    """Parse a sequence of Python ``str`` (or ``bytes``) in one pass over their NUL-joined codes.
+
+    Returns ``(ids, first_bad)``, or None if an element is of another type.
+    """
+    try:
+        if len(items) and isinstance(items[0], bytes):
+            data = np.frombuffer(b"\x00".join(items), dtype=np.uint8)
+        else:
+            text = "\x00".join(items)
+            wide = not text.isascii()
+            data = np.frombuffer(text.encode("utf-32-le" if wide else "ascii", "surrogatepass"), dtype=np.uint32 if wide else np.uint8)
+    except TypeError:
+        return None
+    ids, bad, pieces = parse_joined(data, len(items))
+    if pieces != len(items):  # an element holds a NUL itself: one by one
+        ids = np.array([parse_str(x if isinstance(x, str) else x.decode("ascii", "replace")) for x in items], dtype=np.uint64)
+        zero = np.flatnonzero(ids == 0)
+        bad = zero[0] if zero.size else -1
+    return ids, int(bad)
+
+
+# --------------------------------------------------------------------------
+# Scalar helpers (pure Python, table driven)
+# --------------------------------------------------------------------------
+
+_FACES = "ABCDEFGHIJKLMNOPQRST"
+#: "C" -> id of face C; "C4" -> id of its level-1 cell 4.
+_HEAD_ID: dict[str, int] = {}
+#: id >> 54 (sign, marker, face, level-1 code) -> the first one or two characters.
+_HEAD_STR: dict[int, str] = {}
+for _f, _letter in enumerate(_FACES):
+    _base = (1 << 62) | (_f << FACE_SHIFT)
+    _HEAD_ID[_letter] = _base
+    _HEAD_STR[_base >> L1_SHIFT] = _letter
+    for _d in range(6):
+        _HEAD_ID[_letter + str(_d)] = _base | ((_d + 1) << L1_SHIFT)
+        _HEAD_STR[(_base >> L1_SHIFT) | (_d + 1)] = _letter + str(_d)
+#: _ONES[m]: m base-4 ones, the code offset (digit -> digit + 1) of m digits.
+_ONES = [(4**m - 1) // 3 for m in range(MAX_LEVEL)]
+#: A hex digit holds two fields: codes 1..3 are digits 0..2, code 0 (no digit) is "?".
+_FIELD_CHARS = "?012"
+_HEX_TO_DIGITS = str.maketrans({f"{v:x}": _FIELD_CHARS[v >> 2] + _FIELD_CHARS[v & 3] for v in range(16)})
+#: Digits after level 1 (up to level 8) <-> their fields in place: one dict look-up each way.
+_TAIL_ID: dict[str, int] = {}
+_TAIL_STR: dict[int, str] = {}
+_codes = {"": 0}
+for _m in range(1, 8):
+    _codes = {t + str(d): (v << 2) | (d + 1) for t, v in _codes.items() for d in range(3)}
+    for _t, _v in _codes.items():
+        _TAIL_ID[_t] = _v << (2 * (MAX_LEVEL - 1 - _m))
+        _TAIL_STR[_TAIL_ID[_t]] = _t
+del _f, _letter, _base, _d, _m, _t, _v, _codes
+
+
+def parse_str(s: str) -> int:
+    """Integer id of a string id, or 0 if it is not valid (never raises for a str)."""
+    head = _HEAD_ID.get(s[:2])
+    if head is None:
+        return 0
+    if len(s) <= 2:
+        return head
+    tail = s[2:]
+    bits = _TAIL_ID.get(tail)
+    if bits is not None:
+        return head | bits
+    m = len(tail)  # a longer tail (or an invalid one)
+    # all characters in "012" (int() alone would accept "_", spaces, signs)
+    if m > MAX_LEVEL - 1 or tail.strip("012"):
+        return 0
+    return head | ((int(tail, 4) + _ONES[m]) << (2 * (MAX_LEVEL - 1 - m)))
+
+
+def format_int(c: int) -> str | None:
+    """String id of an integer id, or None if it is not well formed (never raises for an int)."""
+    head = _HEAD_STR.get(c >> L1_SHIFT)
+    if head is None:  # negative, too big, no marker, face >= 20 or level-1 code 7
+        return None
+    low = c & _LOW_BITS
+    if not low:
+        return head
+    if len(head) == 1:  # digits below an empty level 1
+        return None
+    tail = _TAIL_STR.get(low)
+    if tail is not None:
+        return head + tail
+    tz = ((low & -low).bit_length() - 1) >> 1  # empty fields at the bottom
+    m = MAX_LEVEL - 1 - tz  # digits after level 1
+    fields = low >> (2 * tz)
+    if m & 1:
+        fields <<= 2  # an even number of fields: whole hex digits
+    tail = format(fields, "x").translate(_HEX_TO_DIGITS)
+    if m & 1:
+        tail = tail[:-1]
+    # an empty field above a filled one shows as "?" (or shortens the hex string)
+    if len(tail) != m or "?" in tail:
+        return None
+    return head + tail
+
+
+def valid_int(c: int) -> bool:
+    """Whether a Python int is a well-formed id (never raises for an int)."""
+    if (c >> L1_SHIFT) not in _HEAD_STR:
+        return False
+    low = c & _LOW_BITS
+    if not low:
+        return True
+    if not (c >> L1_SHIFT) & 7:
+        return False
+    m = (low | (low >> 1)) & _DIGIT_LOW
+    return m == _DIGIT_LOW & ~((m & -m) - 1)
