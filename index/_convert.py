@@ -521,7 +521,9 @@ def int_to_str(ids: Any) -> Any:
     Parameters
     ----------
     ids : int, str, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
-        Integer ids (string ids are checked and returned unchanged).
+        Integer ids (string ids are checked and returned unchanged).  In a
+        numpy array the null id 0 (the padding of :func:`dggs.grid_disk` rows)
+        becomes ``""``.
 
     Returns
     -------
@@ -546,6 +548,11 @@ def int_to_str(ids: Any) -> Any:
     """
     if type(ids) is int:  # the fast path
         return _codec.format_int(ids) or _fail(ids, None, "int")
+    if isinstance(ids, np.ndarray) and ids.dtype.kind in "iu" and ids.size and not ids.all():
+        # the null id 0 (the padding of grid_disk rows) becomes ""
+        cells_in(ids[ids != 0])  # raises naming a bad id
+        codes, _ = _codec.format_u32(ids.astype(np.uint64).reshape(-1))
+        return codes.view(f"<U{codes.shape[1]}").reshape(ids.shape)
     arr, kind = cells_in(ids)
     return cells_out(arr, _as_form(kind, "str"))
 
