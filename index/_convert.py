@@ -455,7 +455,8 @@ def cells_out_flat(ids: np.ndarray, kind: Kind) -> Any:
     default index (and keeps its name).
     """
     ids = np.asarray(ids, dtype=np.uint64).reshape(-1)
-    ids = ids[ids != 0]
+    if not ids.all():  # a pass without a copy in the common case
+        ids = ids[ids != 0]
     container = "list" if kind.scalar else kind.container
     return cells_out(ids, replace(kind, container=container, scalar=False, shape=(ids.shape[0],), index=None))
 

@@ -123,33 +123,41 @@ def one_centre(cell: np.uint64):
 
 
 @njit(cache=True, nogil=True)
-def _one_boundary(cell: np.uint64, densify: int, out, i: int) -> None:
-    """Write the corners and ``densify`` points per edge (straight on the face plane) as (lat, lng)."""
-    face, ax, ay, bx, by, cx, cy = corners(cell)
-    xs = (ax, bx, cx)
-    ys = (ay, by, cy)
-    step = densify + 1
-    for e in range(3):
-        x0, y0 = xs[e], ys[e]
-        x1, y1 = xs[(e + 1) % 3], ys[(e + 1) % 3]
-        for j in range(step):
-            t = j / step
-            px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, x0 + t * (x1 - x0), y0 + t * (y1 - y0))
-            lat, lng = gk.unit_to_geodetic(px, py, pz)
-            out[i, e * step + j, 0] = lat
-            out[i, e * step + j, 1] = lng
+def _edge_points(out, i: int, start: int, face: int, x0, y0, x1, y1, step: int, lnglat: bool) -> None:
+    """Write ``step`` points from (x0, y0) towards (x1, y1), straight on the face plane."""
+    dx = (x1 - x0) / step
+    dy = (y1 - y0) / step
+    a, b = (1, 0) if lnglat else (0, 1)
+    for j in range(step):
+        px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, x0 + j * dx, y0 + j * dy)
+        lat, lng = gk.unit_to_geodetic(px, py, pz)
+        out[i, start + j, a] = lat
+        out[i, start + j, b] = lng
 
 
 @njit(cache=True, nogil=True)
-def boundaries_serial(ids, densify, out):
+def _one_boundary(cell: np.uint64, densify: int, out, i: int, lnglat: bool) -> None:
+    """Write the corners and ``densify`` points per edge as (lat, lng), or (lng, lat) closed with ``lnglat``."""
+    face, ax, ay, bx, by, cx, cy = corners(cell)
+    step = densify + 1
+    _edge_points(out, i, 0, face, ax, ay, bx, by, step, lnglat)
+    _edge_points(out, i, step, face, bx, by, cx, cy, step, lnglat)
+    _edge_points(out, i, 2 * step, face, cx, cy, ax, ay, step, lnglat)
+    if lnglat:  # close the ring
+        out[i, 3 * step, 0] = out[i, 0, 0]
+        out[i, 3 * step, 1] = out[i, 0, 1]
+
+
+@njit(cache=True, nogil=True)
+def boundaries_serial(ids, densify, out, lnglat=False):
     for i in range(ids.shape[0]):
-        _one_boundary(ids[i], densify, out, i)
+        _one_boundary(ids[i], densify, out, i, lnglat)
 
 
 @njit(cache=True, nogil=True, parallel=True)
-def boundaries_parallel(ids, densify, out):
+def boundaries_parallel(ids, densify, out, lnglat=False):
     for i in prange(ids.shape[0]):
-        _one_boundary(ids[i], densify, out, i)
+        _one_boundary(ids[i], densify, out, i, lnglat)
 
 
 @njit(cache=True, nogil=True)

@@ -33,25 +33,26 @@ def default_densify(level: int) -> int:
     return 64 if level <= 16 else 32
 
 
-def special_rings(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:
-    """Rows (rings) that cross the antimeridian or touch a pole."""
-    steps = np.abs(np.diff(lng, axis=1, append=lng[:, :1]))
-    return (steps > 180.0).any(axis=1) | (np.abs(lat) > 90.0 - _POLE_TOL).any(axis=1)
+def special_rings(coords: np.ndarray) -> np.ndarray:
+    """Rows of closed (lng, lat) rings (N, M, 2) that cross the antimeridian or touch a pole."""
+    steps = np.abs(np.diff(coords[..., 0], axis=1))
+    return (steps > 180.0).any(axis=1) | (np.abs(coords[..., 1]) > 90.0 - _POLE_TOL).any(axis=1)
 
 
-def rings_to_geometries(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:
-    """Object array of shapely geometries of (N, M) boundary rings."""
-    n = lat.shape[0]
+def rings_to_geometries(coords: np.ndarray) -> np.ndarray:
+    """Object array of shapely geometries of closed (lng, lat) boundary rings (N, M, 2)."""
+    n = coords.shape[0]
     out = np.empty(n, dtype=object)
     if n == 0:
         return out
-    special = special_rings(lat, lng)
-    plain = ~special
-    if plain.any():
-        coords = np.stack([lng[plain], lat[plain]], axis=-1)
-        out[plain] = shapely.polygons(shapely.linearrings(coords))
-    for i in np.flatnonzero(special):
-        out[i] = ring_to_geometry(lat[i], lng[i])
+    special = special_rings(coords)
+    if special.any():
+        plain = ~special
+        out[plain] = shapely.polygons(coords[plain])
+        for i in np.flatnonzero(special):
+            out[i] = ring_to_geometry(coords[i, :-1, 1], coords[i, :-1, 0])
+    else:
+        out[:] = shapely.polygons(coords)
     return out
 
 

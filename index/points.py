@@ -135,12 +135,13 @@ def cell_to_latlng(cell):
     return lat.reshape(kind.shape), lng.reshape(kind.shape)
 
 
-def _boundaries(ids: np.ndarray, densify: int) -> np.ndarray:
-    out = np.empty((ids.shape[0], 3 * (densify + 1), 2))
+def _boundaries(ids: np.ndarray, densify: int, lnglat: bool = False) -> np.ndarray:
+    """(N, 3 (densify + 1), 2) (lat, lng) points, or closed (lng, lat) rings one point longer."""
+    out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
     if parallel(ids.shape[0] * (densify + 1)):
-        _kpoints.boundaries_parallel(ids, densify, out)
+        _kpoints.boundaries_parallel(ids, densify, out, lnglat)
     else:
-        _kpoints.boundaries_serial(ids, densify, out)
+        _kpoints.boundaries_serial(ids, densify, out, lnglat)
     return out
 
 
@@ -209,11 +210,9 @@ def cell_to_polygon(cell, densify: int | None = None):
             groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
         for n, parts in groups.items():
             sel = np.concatenate(parts)
-            ring = _boundaries(ids[sel], n)
-            out[sel] = rings_to_geometries(ring[..., 0], ring[..., 1])
+            out[sel] = rings_to_geometries(_boundaries(ids[sel], n, lnglat=True))
     else:
-        ring = _boundaries(ids, densify)
-        out[:] = rings_to_geometries(ring[..., 0], ring[..., 1])
+        out[:] = rings_to_geometries(_boundaries(ids, densify, lnglat=True))
     return out[0] if kind.scalar else out.reshape(kind.shape)
 
 

@@ -119,8 +119,7 @@ def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
         if current == level:
             accepted.append(candidates[_centres_inside(target, candidates)])
             break
-        ring = _boundaries(candidates, _SCREEN_DENSIFY)
-        shapes = rings_to_geometries(ring[..., 0], ring[..., 1])
+        shapes = rings_to_geometries(_boundaries(candidates, _SCREEN_DENSIFY, lnglat=True))
         bounds = shapely.bounds(shapes)
         # a margin for the curved edges between densified points
         margin = 0.05 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])

@@ -43,6 +43,7 @@ _ROT_COS = np.cos(_SECTOR * np.arange(3))
 _ROT_SIN = np.sin(_SECTOR * np.arange(3))
 _D_PRIME_NUM = R_PRIME * TAN_G
 _TAN_G2 = TAN_G * TAN_G
+_SIN_BIG_G = math.sin(G)
 
 # The standard grid's tables, as compile-time constants.
 ISEA_CENTRES = np.ascontiguousarray(ISEA.geometry.centres)
@@ -112,10 +113,22 @@ def geodetic_to_unit(lat_deg: float, lng_deg: float):
 
 @njit(cache=True, nogil=True)
 def unit_to_geodetic(px: float, py: float, pz: float):
-    """Vector on the authalic sphere (any norm) -> geodetic WGS84 (lat, lng) degrees."""
-    beta = math.atan2(pz, math.hypot(px, py))
-    lat = beta + clenshaw_shift(TO_GEODETIC, beta)
-    return math.degrees(lat), math.degrees(math.atan2(py, px))
+    """Vector on the authalic sphere (any norm) -> geodetic WGS84 (lat, lng) degrees.
+
+    ``sin 2 beta`` and ``cos 2 beta`` for the series come from the vector
+    itself, so only the two arctangents remain.
+    """
+    h2 = px * px + py * py
+    h = math.sqrt(h2)
+    beta = math.atan2(pz, h)
+    r2 = h2 + pz * pz
+    s2 = 2.0 * pz * h / r2
+    two_c2 = 2.0 * (h2 - pz * pz) / r2
+    b1 = 0.0
+    b2 = 0.0
+    for i in range(TO_GEODETIC.shape[0] - 1, -1, -1):
+        b1, b2 = two_c2 * b1 - b2 + TO_GEODETIC[i], b1
+    return math.degrees(beta + b1 * s2), math.degrees(math.atan2(py, px))
 
 
 @njit(cache=True, nogil=True)
@@ -229,13 +242,25 @@ def forward_unit_fast(centres: np.ndarray, frames: np.ndarray, px: float, py: fl
 
 
 @njit(cache=True, nogil=True)
+def sector_of(x: float, y: float) -> int:
+    """120-degree sector (planar azimuth // 120, clockwise from +y) by half-planes, no arctangent."""
+    if x > 0.0 or (x == 0.0 and y >= 0.0):  # azimuth in [0, 180]
+        if x == 0.0 and y == 0.0:
+            return 0
+        return 1 if -0.5 * x - _HALF_SQRT3 * y >= 0.0 else 0  # azimuth >= 120
+    return 2 if -0.5 * x + _HALF_SQRT3 * y >= 0.0 else 1  # azimuth >= 240
+
+
+@njit(cache=True, nogil=True)
 def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
-    """Face-frame ``(x, y)`` -> unit vector, by the exact closed form (SNYDER.md §4)."""
+    """Face-frame ``(x, y)`` -> unit vector, by the exact closed form (SNYDER.md §4).
+
+    Two sines and cosines in all: the sector comes from half-planes, and
+    ``sin(G - A/2)``, ``sin(G - A)`` from ``sin(A/2)``, ``cos(A/2)`` by the
+    angle-sum rules.
+    """
     rho = math.hypot(x, y)
-    ap = math.atan2(x, y)
-    if ap < 0.0:
-        ap += _TWO_PI
-    k = min(int(ap * _INV_SECTOR), 2)
+    k = sector_of(x, y)
     rc, rs = _ROT_COS[k], _ROT_SIN[k]
     if rho > 0.0:
         inv_rho = 1.0 / rho
@@ -244,12 +269,16 @@ def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
     else:
         sin_a, cos_a = 0.0, 1.0
     area = _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))  # eq. 8 inverted
-    num = 2.0 * math.sin(G - 0.5 * area) * math.sin(0.5 * area)
-    den = math.sin(G - area) - _SIN_G * _COS_SMALL_G
-    r = math.hypot(num, den)
+    sh = math.sin(0.5 * area)
+    ch = math.cos(0.5 * area)
+    sin_g_half = _SIN_BIG_G * ch - _COS_G * sh  # sin(G - A/2)
+    sin_g_full = _SIN_BIG_G * (ch * ch - sh * sh) - _COS_G * (2.0 * sh * ch)  # sin(G - A)
+    num = 2.0 * sin_g_half * sh
+    den = sin_g_full - _SIN_G * _COS_SMALL_G
+    r = math.sqrt(num * num + den * den)
     sin_az, cos_az = num / r, den / r
     u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.hypot(TAN_G, u)))
+    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(_TAN_G2 + u * u)))
     d_prime = _D_PRIME_NUM / (cos_a + sin_a * COT_THETA)  # eq. 10
     s = min(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
     cos_z = 1.0 - 2.0 * s * s
