@@ -10,16 +10,12 @@ from shapely.geometry import MultiPolygon, Polygon, box
 
 from dggs.errors import DggsValueError
 
-from . import _codec, _khier
+from . import _codec, _khier, _kpoints
 from .cellid import check_level
 from .hierarchy import check_size, get_base_cells
 from .points import _boundaries
-from ._polygons import rings_to_geometries
 
 __all__ = ["polygon_to_cells"]
-
-_SCREEN_DENSIFY = 8
-
 
 def _wrap_polygon(poly):
     """Fold parts of a lng/lat polygon beyond +-180 back into -180..180."""
@@ -34,6 +30,44 @@ def _wrap_polygon(poly):
     return shapely.union_all(parts)
 
 
+#: Levels whose cells are too large for the circle test: always descended.
+_COARSE = 3
+#: Footprint radius over the largest centre-corner distance (curved edges bulge a little).
+_BULGE = 1.5
+
+
+def _classify(target, edge, cells: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
+    """Which cells may hold a centre in ``target`` (hit), and which lie wholly inside it.
+
+    Each cell's lng/lat footprint lies in a circle around its centre whose
+    radius is 1.5x its largest centre-to-corner distance.  A circle that
+    reaches the target is a hit; one inside it, clear of its boundary, is
+    inside.  A circle across the antimeridian is also tested 360 degrees
+    over; cells at a pole and the coarse levels are hits, never inside.
+    """
+    n = cells.shape[0]
+    if level < _COARSE:
+        return np.ones(n, dtype=bool), np.zeros(n, dtype=bool)
+    lat, lng = np.empty(n), np.empty(n)
+    _kpoints.centres_serial(cells, lat, lng)
+    corners = _boundaries(cells, 0)  # (N, 3, 2) lat, lng
+    dlat = corners[..., 0] - lat[:, None]
+    dlng = (corners[..., 1] - lng[:, None] + 180.0) % 360.0 - 180.0
+    radius = _BULGE * np.sqrt((dlat * dlat + dlng * dlng).max(axis=1))
+    pts = shapely.points(lng, lat)
+    hit = shapely.dwithin(target, pts, radius)
+    polar = np.abs(lat) + radius >= 90.0
+    across = ~polar & (np.abs(lng) + radius > 180.0)
+    if across.any():
+        moved = shapely.points(lng[across] - np.copysign(360.0, lng[across]), lat[across])
+        hit[across] |= shapely.dwithin(target, moved, radius[across])
+    if polar.any():
+        _, miny, _, maxy = target.bounds
+        hit[polar] = np.where(lat[polar] > 0, maxy >= lat[polar] - radius[polar], miny <= lat[polar] + radius[polar])
+    inside = hit & ~polar & ~across & shapely.contains_xy(target, lng, lat) & ~shapely.dwithin(edge, pts, radius)
+    return hit, inside
+
+
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
     total, _ = _khier.count_children(ids, level)
     out = np.empty(total, dtype=np.uint64)
@@ -42,8 +76,6 @@ def _children(ids: np.ndarray, level: int) -> np.ndarray:
 
 
 def _centres_inside(target, ids: np.ndarray) -> np.ndarray:
-    from . import _kpoints
-
     lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
     _kpoints.centres_serial(ids, lat, lng)
     return shapely.contains_xy(target, lng, lat)
@@ -119,12 +151,7 @@ def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
         if current == level:
             accepted.append(candidates[_centres_inside(target, candidates)])
             break
-        shapes = rings_to_geometries(_boundaries(candidates, _SCREEN_DENSIFY, lnglat=True))
-        bounds = shapely.bounds(shapes)
-        # a margin for the curved edges between densified points
-        margin = 0.05 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
-        hit = shapely.dwithin(target, shapes, margin)
-        inside = hit & shapely.contains(target, shapes) & ~shapely.dwithin(edge, shapes, margin)
+        hit, inside = _classify(target, edge, candidates, current)
         if inside.any():
             whole = candidates[inside]
             count, _ = _khier.count_children(whole, level)
