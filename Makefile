@@ -20,9 +20,13 @@ demo: $(STAMP)
 	$(VENV)/bin/dggs demo
 
 test: $(STAMP)
+	$(PY) -m ruff check dggs index storage tests examples
+	$(PY) -m mypy
 	$(PY) -m pytest -q
 
 test-all: $(STAMP)
+	$(PY) -m ruff check dggs index storage tests examples
+	$(PY) -m mypy
 	$(PY) -m pytest -q -m ''
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.

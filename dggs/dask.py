@@ -28,7 +28,7 @@ Examples
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -48,7 +48,7 @@ _STATS = ("count", "sum", "mean", "min", "max")
 _STRING = "string"  # pandas' string dtype: what Dask and Parquet carry natively
 
 
-def cells_partition(df: "pd.DataFrame", level: int, lat: str, lng: str, column: str) -> "pd.DataFrame":
+def cells_partition(df: pd.DataFrame, level: int, lat: str, lng: str, column: str) -> pd.DataFrame:
     """Add a ``column`` of cell ids to one pandas partition (vectorized)."""
     out = df.copy()
     ids = latlng_to_cell(df[lat].to_numpy(np.float64), df[lng].to_numpy(np.float64), level) if len(df) else []
@@ -56,7 +56,7 @@ def cells_partition(df: "pd.DataFrame", level: int, lat: str, lng: str, column: 
     return out
 
 
-def add_cells(ddf: "dd.DataFrame", level: int, lat: str = "lat", lng: str = "lng", column: str = "cell") -> "dd.DataFrame":
+def add_cells(ddf: dd.DataFrame, level: int, lat: str = "lat", lng: str = "lng", column: str = "cell") -> dd.DataFrame:
     """A dask DataFrame with a cell-id column for each row's (lat, lng) at ``level``.
 
     Raises
@@ -74,12 +74,12 @@ def add_cells(ddf: "dd.DataFrame", level: int, lat: str = "lat", lng: str = "lng
 
 
 def aggregate(
-    ddf: "dd.DataFrame",
+    ddf: dd.DataFrame,
     level: int,
     column: str | None = None,
     stats: Sequence[str] = _STATS,
     cell: str = "cell",
-) -> "dd.DataFrame":
+) -> dd.DataFrame:
     """Roll rows up to cells at a coarser ``level`` (id prefixes) with summary stats.
 
     Parameters
@@ -113,14 +113,14 @@ def aggregate(
     return out
 
 
-def to_parquet(ddf: "dd.DataFrame", path: str, cell: str = "cell", **kwargs) -> None:
+def to_parquet(ddf: dd.DataFrame, path: str, cell: str = "cell", **kwargs) -> None:
     """Write Parquet partitioned by base cell (``face=A`` ... ``face=T`` folders)."""
     if cell not in ddf.columns:
         raise DggsValueError(f"column {cell!r} is not in the dataframe")
     ddf.assign(face=ddf[cell].str.slice(0, 1)).to_parquet(path, partition_on=["face"], **kwargs)
 
 
-def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs) -> "dd.DataFrame":
+def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs) -> dd.DataFrame:
     """Read what :func:`to_parquet` wrote, optionally only some base cells (faces)."""
     filters = [("face", "in", list(faces))] if faces else None
     return dd.read_parquet(path, filters=filters, **kwargs)

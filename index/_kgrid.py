@@ -84,7 +84,7 @@ def level_of(cell: np.uint64) -> int:
     """Level of a valid id: its lowest filled field (as ``_bits.level_of``, by one trailing-zero count)."""
     low = cell & _LOW54
     if low:
-        return MAX_LEVEL - np.int64(_cttz(low)) // 2
+        return int(MAX_LEVEL - np.int64(_cttz(low)) // 2)  # type: ignore[call-arg]
     return 1 if (cell >> np.uint64(54)) & np.uint64(7) else 0
 
 
@@ -120,7 +120,7 @@ def _across(cell: np.uint64, level: int, label: int) -> np.uint64:
 def _is_ccw(cell: np.uint64) -> int:
     """1 if the cell's corners A, B, C run counter-clockwise: level-1 orientation XOR parity of digits 0 and 2."""
     d1 = np.int64((cell >> np.uint64(54)) & np.uint64(7)) - 1
-    return _L1_CCW[d1] ^ np.int64(_popcount(cell & DIGIT_LOW_BITS) & np.uint64(1))
+    return int(_L1_CCW[d1] ^ np.int64(_popcount(cell & DIGIT_LOW_BITS) & np.uint64(1)))  # type: ignore[call-arg]
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -229,7 +229,7 @@ def _next_ring(cur: np.ndarray, prev: np.ndarray, dest: np.ndarray, cand: np.nda
 
 @njit(cache=True, nogil=True, inline="always")
 def _slot(x: np.uint64, mask: int) -> int:
-    return np.int64((x * np.uint64(0x9E3779B97F4A7C15)) >> np.uint64(40)) & mask
+    return int(np.int64((x * np.uint64(0x9E3779B97F4A7C15)) >> np.uint64(40)) & mask)
 
 
 @njit(cache=True, nogil=True)

@@ -313,7 +313,7 @@ def _separating_lines(px: float, py: float, qx: float, qy: float, level: int) ->
         else:  # median families: through the face centre
             h = _SPACING[level, 1]
             tp, tq = (px * nx + py * ny) / h, (qx * nx + qy * ny) / h
-        total += abs(np.int64(math.floor(tp)) - np.int64(math.floor(tq)))
+        total += int(abs(np.int64(math.floor(tp)) - np.int64(math.floor(tq))))
     return total
 
 

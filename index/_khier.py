@@ -457,4 +457,4 @@ def parent_of(cell: int, level: int) -> int:
         level = lv - 1
     if level < 0 or level > lv:
         return 0
-    return np.int64(parent_at(c, level))
+    return int(np.int64(parent_at(c, level)))

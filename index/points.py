@@ -7,7 +7,8 @@ str gives a str, an int an int, and any array or column the same kind back.
 
 from __future__ import annotations
 
-from typing import Any, Iterable
+from typing import Any
+from collections.abc import Iterable
 
 import numpy as np
 import shapely
@@ -79,9 +80,9 @@ def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
     ['C32', 'A50']
     """
     if type(lat) in _SCALARS and type(lng) in _SCALARS and type(level) is int and 0 <= level <= MAX_LEVEL:
-        cell = _kpoints.one_point(lat, lng, level)  # the single-point path: no numpy
-        if cell:
-            return int(cell) if as_int else _codec.format_int(int(cell))
+        found = int(_kpoints.one_point(lat, lng, level))  # the single-point path: no numpy
+        if found:
+            return found if as_int else _codec.format_int(found)
     level = check_level(level)
     if np.ndim(lat) == 0 and np.ndim(lng) == 0:
         a, b = as_float_scalar(lat, "latitude"), as_float_scalar(lng, "longitude")
@@ -205,7 +206,7 @@ def cell_to_polygon(cell, densify: int | None = None):
         from . import _khier
 
         lv = _khier.levels(ids)
-        groups = {}
+        groups: dict[int, list[np.ndarray]] = {}
         for level in np.unique(lv):
             groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
         for n, parts in groups.items():

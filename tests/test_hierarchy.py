@@ -45,8 +45,8 @@ def test_children_tile_the_parent_exhaustively(level):
     assert len(kids) == n * len(parents)
     assert np.all(dggs.cell_to_parent(kids) == np.repeat(parents, n))
     assert np.all(dggs.cell_to_parent(dggs.str_to_int(kids)) == dggs.str_to_int(np.repeat(parents, n)))
-    tri_p = planar_corners((parents))
-    tri_k = planar_corners((kids)).reshape(len(parents), n, 3, 2)
+    tri_p = planar_corners(parents)
+    tri_k = planar_corners(kids).reshape(len(parents), n, 3, 2)
     # areas add up, every child is congruent (same area) and lies inside its parent
     area_p = planar_area(tri_p)
     area_k = planar_area(tri_k.reshape(-1, 3, 2)).reshape(len(parents), n)
@@ -63,7 +63,7 @@ def test_children_tile_the_parent_exhaustively(level):
 
 @pytest.mark.parametrize("level", range(2, 5))
 def test_cells_are_30_60_90_triangles(level):
-    tri = planar_corners((all_cells(level)))
+    tri = planar_corners(all_cells(level))
     sides = np.sort(np.linalg.norm(tri - np.roll(tri, -1, axis=1), axis=2), axis=1)
     assert np.allclose(sides[:, 1] / sides[:, 0], np.sqrt(3), rtol=1e-12)
     assert np.allclose(sides[:, 2] / sides[:, 0], 2.0, rtol=1e-12)
@@ -149,7 +149,7 @@ def test_locate_nests_for_points_exactly_on_corners_and_edges():
     """Digits of a level never depend on how deep the lookup goes, even on cell edges."""
     from dggs.geometry.split26 import locate
 
-    corners = planar_corners((dggs.cell_to_children("C4", 6)))
+    corners = planar_corners(dggs.cell_to_children("C4", 6))
     pts = np.concatenate([corners.reshape(-1, 2), 0.5 * (corners + np.roll(corners, 1, axis=1)).reshape(-1, 2)])
     x, y = pts[:, 0].copy(), pts[:, 1].copy()
     deepest = locate(x, y, dggs.MAX_LEVEL)
@@ -163,7 +163,7 @@ def test_children_tile_the_parent_at_any_level(cell):
     assert kids == [cell + d for d in ("012345" if len(cell) == 1 else "012")]
     assert dggs.cell_to_children(dggs.str_to_int(cell)) == dggs.str_to_int(kids)
     tri_p = planar_corners([cell])[0]
-    tri_k = planar_corners((kids))
+    tri_k = planar_corners(kids)
     area_p = planar_area(tri_p[None])[0]
     area_k = planar_area(tri_k)
     assert area_k.sum() == pytest.approx(area_p, rel=1e-6)  # deep levels: corners carry ~1e-16 absolute

@@ -49,7 +49,8 @@ import statistics
 import time
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any, Callable
+from typing import Any
+from collections.abc import Callable
 
 import click
 import numpy as np

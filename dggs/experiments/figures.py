@@ -95,7 +95,7 @@ def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20
         p = mesh.vertices[block]
         p = p / np.linalg.norm(p, axis=2, keepdims=True)
         verts += list(np.stack([p @ east, p @ north], axis=-1))
-        depth.append((p.mean(axis=1) @ centre))
+        depth.append(p.mean(axis=1) @ centre)
         start += len(block)
     depth_a = np.concatenate(depth)
     front = np.flatnonzero(depth_a > 0.05)

@@ -67,7 +67,7 @@ class Mesh:
         """Number of vertices."""
         return int(len(self.vertices))
 
-    def with_vertices(self, vertices: np.ndarray) -> "Mesh":
+    def with_vertices(self, vertices: np.ndarray) -> Mesh:
         """Return the same connectivity on new vertex positions."""
         return Mesh(np.asarray(vertices, dtype=np.float64), self.faces)
 

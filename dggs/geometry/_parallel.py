@@ -27,14 +27,14 @@ PARALLEL_MIN = 8192
 def _configure() -> int:
     env = os.environ.get("DGGS_THREADS")
     if not env:
-        return int(numba.config.NUMBA_NUM_THREADS)
+        return int(getattr(numba.config, "NUMBA_NUM_THREADS"))
     try:
         wanted = int(env)
     except ValueError:
         raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer") from None
     if wanted < 1:
         raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer")
-    n = min(wanted, int(numba.config.NUMBA_NUM_THREADS))
+    n = min(wanted, int(getattr(numba.config, "NUMBA_NUM_THREADS")))
     numba.set_num_threads(n)
     return n
 

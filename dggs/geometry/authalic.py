@@ -51,11 +51,11 @@ _C_PHI_XI = (
 def _series_coefficients(table: tuple[tuple[float, ...], ...], n: float) -> np.ndarray:
     """Evaluate the polynomial in ``n`` for each harmonic (Horner, high order first)."""
     out = []
-    for l, row in enumerate(table, start=1):
+    for order, row in enumerate(table, start=1):
         acc = 0.0
         for c in reversed(row):
             acc = acc * n + c
-        out.append(acc * n**l)
+        out.append(acc * n**order)
     return np.array(out)
 
 

@@ -104,7 +104,7 @@ class Orientation:
             raise ValueError(f"orientation lat {self.lat!r} is out of range -90..90")
 
     @property
-    def geometry(self) -> "Geometry":
+    def geometry(self) -> Geometry:
         """The derived face and vertex geometry (computed once, cached)."""
         return geometry(self)
 

@@ -34,7 +34,7 @@ import numpy as np
 from dggs.geometry._validate import as_latlng
 from dggs.geometry.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, latlng_to_xyz, xyz_to_latlng
+from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, xyz_to_latlng
 
 __all__ = [
     "forward",
