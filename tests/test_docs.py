@@ -69,4 +69,7 @@ def test_readme_usage_block_runs():
     block = readme.split("## Use", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace: dict = {}
     exec(compile(block, "README.md", "exec"), namespace)  # noqa: S102 - our own README
-    assert len(namespace["cells"]) == 10**6
+    assert len(namespace["ids"]) == 10**6 and namespace["ids"].dtype == "uint64"
+    assert (namespace["parents"] == dggs.str_to_int(dggs.cell_to_parent(dggs.int_to_str(namespace["ids"]), 6))).all()
+    m = re.search(r"dggs.str_to_int\(cell\)\s+# (\d+)", readme)
+    assert m and int(m.group(1)) == dggs.str_to_int(dggs.latlng_to_cell(51.05, -114.07, 9))
