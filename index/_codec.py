@@ -355,39 +355,56 @@ for _f, _letter in enumerate(_FACES):
     for _d in range(6):
         _HEAD_ID[_letter + str(_d)] = _base | ((_d + 1) << L1_SHIFT)
         _HEAD_STR[(_base >> L1_SHIFT) | (_d + 1)] = _letter + str(_d)
-#: _ONES[m]: m base-4 ones, the code offset (digit -> digit + 1) of m digits.
-_ONES = [(4**m - 1) // 3 for m in range(MAX_LEVEL)]
-#: A hex digit holds two fields: codes 1..3 are digits 0..2, code 0 (no digit) is "?".
-_FIELD_CHARS = "?012"
-_HEX_TO_DIGITS = str.maketrans({f"{v:x}": _FIELD_CHARS[v >> 2] + _FIELD_CHARS[v & 3] for v in range(16)})
-#: Digits after level 1 (up to level 8) <-> their fields in place: one dict look-up each way.
-_TAIL_ID: dict[str, int] = {}
-_TAIL_STR: dict[int, str] = {}
-_codes = {"": 0}
-for _m in range(1, 8):
-    _codes = {t + str(d): (v << 2) | (d + 1) for t, v in _codes.items() for d in range(3)}
-    for _t, _v in _codes.items():
-        _TAIL_ID[_t] = _v << (2 * (MAX_LEVEL - 1 - _m))
-        _TAIL_STR[_TAIL_ID[_t]] = _t
-del _f, _letter, _base, _d, _m, _t, _v, _codes
+#: The 27 two-bit fields of levels 2..28 in four chunks, from the top: 7, 7, 7 and 6 fields.  Per chunk,
+#: a list from its bits to its digits ("" for no digit; None where a filled field follows an empty one)
+#: and a dict back, so one id is a few look-ups each way.
+_CHUNK_WIDTHS = (7, 7, 7, 6)
+
+
+def _chunk_tables(width: int) -> tuple[list[str | None], dict[str, int]]:
+    to_str: list[str | None] = [None] * (1 << (2 * width))
+    to_bits: dict[str, int] = {"": 0}
+    to_str[0] = ""
+    for m in range(1, width + 1):
+        for prefix in [t for t in to_bits if len(t) == m - 1]:
+            for d in range(3):
+                t = prefix + str(d)
+                bits = to_bits[prefix] | ((d + 1) << (2 * (width - m)))
+                to_bits[t], to_str[bits] = bits, t
+    return to_str, to_bits
+
+
+(_S0, _B0), (_S1, _B1), (_S2, _B2), (_S3, _B3) = (_chunk_tables(w) for w in _CHUNK_WIDTHS)
+del _f, _letter, _base, _d
 
 
 def parse_str(s: str) -> int:
-    """Integer id of a string id, or 0 if it is not valid (never raises for a str)."""
+    """Integer id of a string id, or 0 if it is not valid (never raises for a str).
+
+    Seven digits at a time through dict look-ups (which only hold valid digit
+    strings, so any other character, a space or a NUL gives 0).
+    """
     head = _HEAD_ID.get(s[:2])
     if head is None:
         return 0
-    if len(s) <= 2:
+    n = len(s)
+    if n <= 2:
         return head
-    tail = s[2:]
-    bits = _TAIL_ID.get(tail)
-    if bits is not None:
-        return head | bits
-    m = len(tail)  # a longer tail (or an invalid one)
-    # all characters in "012" (int() alone would accept "_", spaces, signs)
-    if m > MAX_LEVEL - 1 or tail.strip("012"):
+    a = _B0.get(s[2:9])
+    if a is None:
         return 0
-    return head | ((int(tail, 4) + _ONES[m]) << (2 * (MAX_LEVEL - 1 - m)))
+    if n <= 9:
+        return head | (a << 40)
+    b = _B1.get(s[9:16])
+    if b is None:
+        return 0
+    if n <= 16:
+        return head | (a << 40) | (b << 26)
+    c = _B2.get(s[16:23])
+    d = _B3.get(s[23:])
+    if c is None or d is None:
+        return 0
+    return head | (a << 40) | (b << 26) | (c << 12) | d
 
 
 def format_int(c: int) -> str | None:
@@ -400,21 +417,26 @@ def format_int(c: int) -> str | None:
         return head
     if len(head) == 1:  # digits below an empty level 1
         return None
-    tail = _TAIL_STR.get(low)
-    if tail is not None:
-        return head + tail
-    tz = ((low & -low).bit_length() - 1) >> 1  # empty fields at the bottom
-    m = MAX_LEVEL - 1 - tz  # digits after level 1
-    fields = low >> (2 * tz)
-    if m & 1:
-        fields <<= 2  # an even number of fields: whole hex digits
-    tail = format(fields, "x").translate(_HEX_TO_DIGITS)
-    if m & 1:
-        tail = tail[:-1]
-    # an empty field above a filled one shows as "?" (or shortens the hex string)
-    if len(tail) != m or "?" in tail:
+    a = _S0[low >> 40]
+    rest = low & 0xFF_FFFF_FFFF
+    if not rest:
+        return None if a is None else head + a
+    b = _S1[rest >> 26]
+    if a is None or b is None or len(a) < 7:  # a hole: an empty field above a filled one
         return None
-    return head + tail
+    rest &= 0x3FF_FFFF
+    if not rest:
+        return head + a + b
+    c2 = _S2[rest >> 12]
+    if c2 is None or len(b) < 7:
+        return None
+    rest &= 0xFFF
+    if not rest:
+        return head + a + b + c2
+    d = _S3[rest]
+    if d is None or len(c2) < 7:
+        return None
+    return head + a + b + c2 + d
 
 
 def valid_int(c: int) -> bool:

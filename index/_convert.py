@@ -558,14 +558,19 @@ def int_to_str(ids: Any) -> Any:
     return cells_out(arr, _as_form(kind, "str"))
 
 
+_INT64_END = 1 << 63
+
+
 def scalar_id(obj: Any) -> int:
-    """The id of a plain ``str`` or ``int`` that is a valid id, else 0 (the caller takes the general path).
+    """The id of a plain ``str`` that is a valid id, or a plain positive int64 (not yet validated), else 0.
+
+    The caller passes it to a scalar kernel that validates ints, or takes the general path.
 
     The single-id fast path: a few hundred nanoseconds, no numpy.
     """
     t = type(obj)
     if t is str:
         return _codec.parse_str(obj)
-    if t is int and _codec.valid_int(obj):
+    if t is int and 0 < obj < _INT64_END:  # validated by the kernel that takes it
         return obj
     return 0

@@ -31,6 +31,7 @@ from numba.extending import intrinsic
 
 from . import _kgrid_tables as _t
 from ._bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL
+from ._bits import is_valid as _bits_is_valid
 from ._kgrid_tables import chart_distance, disk_size_bound, ring_size_bound
 
 __all__ = [
@@ -454,7 +455,9 @@ distances_serial = njit(cache=True, nogil=True)(_distances_impl)
 
 @njit(cache=True, nogil=True)
 def disk_of(cell: int, k: int) -> np.ndarray:
-    """The disk of one id (int64), sorted (the scalar call path)."""
+    """The disk of one id (int64), sorted (the scalar call path); empty if it is no id."""
+    if not _bits_is_valid(np.uint64(cell)):
+        return np.empty(0, dtype=np.uint64)
     out = np.empty((1, disk_size_bound(k)), dtype=np.uint64)
     counts = np.empty(1, dtype=np.int64)
     ids = np.empty(1, dtype=np.uint64)

@@ -450,8 +450,10 @@ def uncompact(ids: np.ndarray, level: int) -> tuple[np.ndarray, int]:
 
 @njit(cache=True, nogil=True)
 def parent_of(cell: int, level: int) -> int:
-    """Ancestor of one id (int64) at ``level`` (-1: one level up); 0 where there is none."""
+    """Ancestor of one id (int64) at ``level`` (-1: one level up); 0 where there is none or ``cell`` is no id."""
     c = np.uint64(cell)
+    if not is_valid(c):
+        return 0
     lv = level_of(c)
     if level < 0:
         level = lv - 1

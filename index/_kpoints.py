@@ -174,5 +174,8 @@ def center_children(ids, level, out):
 
 @njit(cache=True, nogil=True)
 def centre_of(cell: int):
-    """Centre of one id given as an int64 (the scalar call path)."""
-    return _one_centre(np.uint64(cell))
+    """Centre of one id given as an int64 (the scalar call path); NaNs if it is no id."""
+    c = np.uint64(cell)
+    if not _bits.is_valid(c):
+        return np.nan, np.nan
+    return _one_centre(c)

@@ -105,7 +105,8 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
     one = scalar_id(cell)
     if one and k <= 64:  # the single-cell path
         disk = _kgrid.disk_of(one, k).tolist()
-        return [_codec.format_int(c) for c in disk] if type(cell) is str else disk
+        if disk:
+            return [_codec.format_int(c) for c in disk] if type(cell) is str else disk
     ids, kind = cells_in(cell)
     width = _kgrid.disk_size_bound(k)
     check_size(ids.shape[0] * width, max_cells, f"grid_disk with k={k}")

@@ -124,7 +124,9 @@ def cell_to_latlng(cell):
     """
     one = scalar_id(cell)
     if one:
-        return _kpoints.centre_of(one)
+        lat, lng = _kpoints.centre_of(one)
+        if lat == lat:  # not NaN: a valid id
+            return lat, lng
     ids, kind = cells_in(cell)
     if kind.scalar:
         return _kpoints.one_centre(ids[0])
