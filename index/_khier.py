@@ -311,6 +311,13 @@ def children(ids: np.ndarray, level: int, out: np.ndarray) -> int:
             out[pos] = cell
             pos += 1
             continue
+        if lv + 1 == level and lv > 0:  # one level down: the three codes of the next field
+            sh = shift_of(level)
+            out[pos] = cell | (_U1 << sh)
+            out[pos + 1] = cell | (np.uint64(2) << sh)
+            out[pos + 2] = cell | (np.uint64(3) << sh)
+            pos += 3
+            continue
         n_sub = 1  # a base cell goes through its six level-1 children (3-bit codes 1..6, bits 56..54)
         if lv == 0:
             cell |= _U1 << np.uint64(L1_SHIFT)

@@ -11,14 +11,9 @@ from __future__ import annotations
 
 import os
 
-_ENV = os.environ.get("DGGS_THREADS")
-if _ENV and _ENV.strip().isdigit() and int(_ENV) > 0:
-    # before numba starts: its thread pool takes this size
-    os.environ.setdefault("NUMBA_NUM_THREADS", _ENV.strip())
+import numba
 
-import numba  # noqa: E402
-
-from dggs.errors import DggsValueError  # noqa: E402
+from dggs.errors import DggsValueError
 
 #: Smallest input that runs on several threads.
 PARALLEL_MIN = 8192
@@ -35,7 +30,8 @@ def _configure() -> int:
     if wanted < 1:
         raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer")
     n = min(wanted, int(getattr(numba.config, "NUMBA_NUM_THREADS")))
-    numba.set_num_threads(n)
+    if n > 1:  # one thread never starts the pool: every loop takes its serial version
+        numba.set_num_threads(n)
     return n
 
 
@@ -51,7 +47,3 @@ def parallel(n: int) -> bool:
     """Whether a loop over ``n`` items should run on several threads."""
     return THREADS > 1 and n >= PARALLEL_MIN
 
-
-def run_chunks(kernel, n: int, chunk: int = 1 << 16) -> None:  # legacy numpy paths, going away
-    for s in range(0, n, chunk):
-        kernel(slice(s, min(s + chunk, n)))

@@ -93,6 +93,8 @@ def clenshaw_shift(coeffs: np.ndarray, x: float) -> float:
 @njit(cache=True, nogil=True)
 def wrap_degrees(lng: float) -> float:
     """A longitude reduced exactly to -180..180 (``fmod`` is exact; no radians first)."""
+    if -180.0 <= lng <= 180.0:
+        return lng
     lng = np.fmod(lng, 360.0)
     if lng > 180.0:
         lng -= 360.0
