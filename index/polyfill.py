@@ -32,18 +32,24 @@ def _wrap_polygon(poly):
 
 #: Levels whose cells are too large for the circle test: always descended.
 _COARSE = 3
+#: Levels above the target whose boundary cells go straight to centre tests (9 cheap
+#: point-in-polygon tests cost less than classifying 1 + 3 cells).
+_DIRECT = 2
 #: Footprint radius over the largest centre-corner distance (curved edges bulge a little).
 _BULGE = 1.5
 
 
-def _classify(target, edge, cells: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
+def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.ndarray, np.ndarray]:
     """Which cells may hold a centre in ``target`` (hit), and which lie wholly inside it.
 
     Each cell's lng/lat footprint lies in a circle around its centre whose
-    radius is 1.5x its largest centre-to-corner distance.  A circle that
-    reaches the target is a hit; one inside it, clear of its boundary, is
-    inside.  A circle across the antimeridian is also tested 360 degrees
-    over; cells at a pole and the coarse levels are hits, never inside.
+    radius is 1.5x its largest centre-to-corner distance, rounded up to a
+    power of :data:`_RADIUS_STEP`.  A centre inside the target grown by that
+    radius is a hit; one inside the target shrunk by it lies wholly inside.
+    Point-in-polygon tests on the prepared grown and shrunk targets (one pair
+    per radius class, kept in ``buffers``) replace a geometry per cell.  A
+    circle across the antimeridian is also tested 360 degrees over; cells at
+    a pole and the coarse levels are hits, never inside.
     """
     n = cells.shape[0]
     if level < _COARSE:
@@ -54,18 +60,37 @@ def _classify(target, edge, cells: np.ndarray, level: int) -> tuple[np.ndarray, 
     dlat = corners[..., 0] - lat[:, None]
     dlng = (corners[..., 1] - lng[:, None] + 180.0) % 360.0 - 180.0
     radius = _BULGE * np.sqrt((dlat * dlat + dlng * dlng).max(axis=1))
-    pts = shapely.points(lng, lat)
-    hit = shapely.dwithin(target, pts, radius)
+    rclass = np.ceil(np.log(radius) / np.log(_RADIUS_STEP)).astype(np.int64)
+    hit = np.zeros(n, dtype=bool)
+    inside = np.zeros(n, dtype=bool)
     polar = np.abs(lat) + radius >= 90.0
     across = ~polar & (np.abs(lng) + radius > 180.0)
-    if across.any():
-        moved = shapely.points(lng[across] - np.copysign(360.0, lng[across]), lat[across])
-        hit[across] |= shapely.dwithin(target, moved, radius[across])
+    for rc in np.unique(rclass[~polar]):
+        sel = np.flatnonzero((rclass == rc) & ~polar)
+        grown, shrunk = _buffers(target, int(rc), buffers)
+        hit[sel] = shapely.contains_xy(grown, lng[sel], lat[sel])
+        inside[sel] = shapely.contains_xy(shrunk, lng[sel], lat[sel]) & ~across[sel]
+        over = sel[across[sel]]
+        if over.size:
+            hit[over] |= shapely.contains_xy(grown, lng[over] - np.copysign(360.0, lng[over]), lat[over])
     if polar.any():
         _, miny, _, maxy = target.bounds
         hit[polar] = np.where(lat[polar] > 0, maxy >= lat[polar] - radius[polar], miny <= lat[polar] + radius[polar])
-    inside = hit & ~polar & ~across & shapely.contains_xy(target, lng, lat) & ~shapely.dwithin(edge, pts, radius)
     return hit, inside
+
+
+_RADIUS_STEP = 1.25
+
+
+def _buffers(target, rclass: int, buffers: dict):
+    """The target grown and shrunk by the radius of class ``rclass`` (prepared, computed once)."""
+    if rclass not in buffers:
+        r = _RADIUS_STEP**rclass
+        grown, shrunk = shapely.buffer(target, r, quad_segs=4), shapely.buffer(target, -r, quad_segs=4)
+        shapely.prepare(grown)
+        shapely.prepare(shrunk)
+        buffers[rclass] = grown, shrunk
+    return buffers[rclass]
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
@@ -142,16 +167,19 @@ def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
         raise DggsValueError(f"polygon latitudes {miny}..{maxy} are out of range -90..90")
     target = _wrap_polygon(polygon)
     shapely.prepare(target)
-    edge = target.boundary
-    shapely.prepare(edge)
+    buffers: dict = {}
     candidates = get_base_cells(as_int=True)
     accepted: list[np.ndarray] = []
     total = 0
     for current in range(level + 1):
-        if current == level:
-            accepted.append(candidates[_centres_inside(target, candidates)])
+        if current >= level - _DIRECT and current >= _COARSE or current == level:
+            # the last levels: every descendant's centre is tested, no classification
+            count, _ = _khier.count_children(candidates, level)
+            check_size(total + count, max_cells, "polygon_to_cells")
+            finest = _children(candidates, level)
+            accepted.append(finest[_centres_inside(target, finest)])
             break
-        hit, inside = _classify(target, edge, candidates, current)
+        hit, inside = _classify(target, candidates, current, buffers)
         if inside.any():
             whole = candidates[inside]
             count, _ = _khier.count_children(whole, level)
