@@ -41,3 +41,4 @@ bench: $(BENCH_STAMP)
 
 clean:
 	rm -rf $(VENV) $(BENCH_VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png
+	find . -path ./.venv -prune -o \( -name "*.nbi" -o -name "*.nbc" \) -print | xargs rm -f  # numba caches
