@@ -26,16 +26,7 @@ def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
         index = lng.index
     arrays = []
     for name, value in (("latitude", lat), ("longitude", lng)):
-        arr = np.asarray(value)
-        if arr.dtype.kind not in "fiu":
-            if arr.dtype.kind == "O":
-                try:
-                    arr = arr.astype(np.float64)
-                except (TypeError, ValueError):
-                    raise CoordinateError(f"{name}s must be numbers, not {_first_non_number(arr)!r}") from None
-            else:
-                raise CoordinateError(f"{name}s must be numbers, not {arr.dtype} values such as {arr.ravel()[:1].tolist()}")
-        arrays.append(arr)
+        arrays.append(_as_numbers(value, name))
     lat_a, lng_a = arrays
     try:
         shape = np.broadcast_shapes(lat_a.shape, lng_a.shape)
@@ -46,13 +37,42 @@ def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
     return lat_f, lng_f, shape, index
 
 
+_NOT_NUMBERS = (bool, np.bool_, str, bytes, np.str_, np.bytes_)
+
+
+def _as_numbers(value, name: str) -> np.ndarray:
+    """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
+    if isinstance(value, (list, tuple)):
+        # numpy turns [1.0, True] into floats: judge the elements themselves
+        try:
+            objs = np.array(value, dtype=object)
+        except (ValueError, TypeError):
+            raise CoordinateError(f"{name}s must be a flat or regular (non-ragged) sequence of numbers") from None
+        if objs.dtype == object and any(isinstance(v, _NOT_NUMBERS) for v in objs.reshape(-1)):
+            raise CoordinateError(f"{name}s must be numbers, not {_first_non_number(objs)!r}")
+    try:
+        arr = np.asarray(value)
+    except (ValueError, TypeError, OverflowError):
+        raise CoordinateError(f"{name}s must be a flat or regular (non-ragged) sequence of numbers") from None
+    if arr.dtype.kind in "fiu":
+        return arr
+    if arr.dtype.kind == "O":
+        if any(isinstance(v, _NOT_NUMBERS) for v in arr.reshape(-1)):
+            raise CoordinateError(f"{name}s must be numbers, not {_first_non_number(arr)!r}")
+        try:
+            return arr.astype(np.float64)
+        except (TypeError, ValueError, OverflowError):
+            raise CoordinateError(f"{name}s must be numbers, not {_first_non_number(arr)!r}") from None
+    raise CoordinateError(f"{name}s must be numbers, not {arr.dtype} values such as {arr.ravel()[:1].tolist()}")
+
+
 def _first_non_number(arr: np.ndarray):
     for v in arr.ravel():
+        if isinstance(v, _NOT_NUMBERS):
+            return v
         try:
             float(v)
-        except (TypeError, ValueError):
-            return v
-        if isinstance(v, (bool, np.bool_, str, bytes)):
+        except (TypeError, ValueError, OverflowError):
             return v
     return arr.ravel()[0]
 
@@ -88,10 +108,15 @@ def ids_out(ids: np.ndarray, shape: tuple, index, as_int: bool):
 
 
 def as_float_scalar(value, name: str) -> float:
-    """A Python float of a numeric scalar; strings and bools are refused."""
+    """A Python float of a numeric scalar (or 0-d array); strings and bools are refused."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
         raise CoordinateError(f"{name}s must be numbers, not {value!r}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:
+        raise CoordinateError(f"{name} {value!r} is out of range") from None
 
 
 def check_densify(densify) -> int:

@@ -10,6 +10,8 @@ into a :class:`~dggs.errors.CoordinateError` naming it.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit, prange
 
@@ -179,3 +181,132 @@ def centre_of(cell: int):
     if not _bits.is_valid(c):
         return np.nan, np.nan
     return _one_centre(c)
+
+
+# ----------------------------------------------------------------------------
+# Exact boundaries of the few cells at a pole or across the antimeridian
+# ----------------------------------------------------------------------------
+def _pole_table() -> np.ndarray:
+    """(20, 3): per face the face-frame (x, y) of a pole on its boundary and the pole's sign (0: none).
+
+    Both poles sit on the midpoints of face edges (PROJ's ISEA orientation):
+    each lies on two faces' boundaries, at a fixed planar position.
+    """
+    table = np.zeros((_ISEA_FRAMES.shape[0], 3))
+    for face in range(_ISEA_FRAMES.shape[0]):
+        for k in range(3):
+            mx = 0.5 * (_FACE_CORNERS[k, 0] + _FACE_CORNERS[(k + 1) % 3, 0])
+            my = 0.5 * (_FACE_CORNERS[k, 1] + _FACE_CORNERS[(k + 1) % 3, 1])
+            px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, mx, my)
+            if abs(pz) > 1.0 - 1e-12:
+                table[face] = mx, my, math.copysign(1.0, pz)
+    return table
+
+
+POLES = _pole_table()
+#: A pole this close (relative to the edge, planar) to a cell's edge lies on it.
+_ON_EDGE = 1e-9
+#: The direction in which an edge leaves a pole: the point this fraction of a densify step away.
+_POLE_LEAD = 1e-4
+#: Extra rows of a special ring: two per pole corner, one per antimeridian crossing.
+SPECIAL_EXTRA = 16
+
+
+@njit(cache=True, nogil=True)
+def _lat_lng_at(face: int, x0, y0, x1, y1, t):
+    px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, x0 + t * (x1 - x0), y0 + t * (y1 - y0))
+    return gk.unit_to_geodetic(px, py, pz)
+
+
+@njit(cache=True, nogil=True)
+def _pole_on(face: int, x0, y0, x1, y1) -> float:
+    """Parameter t in [0, 1) at which the face's pole lies on the planar segment, or -1."""
+    if POLES[face, 2] == 0.0:
+        return -1.0
+    qx, qy = POLES[face, 0], POLES[face, 1]
+    dx, dy = x1 - x0, y1 - y0
+    n2 = dx * dx + dy * dy
+    t = ((qx - x0) * dx + (qy - y0) * dy) / n2
+    cross = (qx - x0) * dy - (qy - y0) * dx
+    if abs(cross) > _ON_EDGE * n2 or t < -_ON_EDGE or t > 1.0 - _ON_EDGE:
+        return -1.0
+    return 0.0 if t <= _ON_EDGE else t  # at the start corner, up to rounding
+
+
+@njit(cache=True, nogil=True)
+def _crossing(face: int, x0, y0, x1, y1, lo, hi, lng_lo):
+    """Latitude where the curve from parameter lo (longitude ``lng_lo``) to hi reaches +-180 (bisection)."""
+    lo_lat = 0.0
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            break
+        mlat, mlng = _lat_lng_at(face, x0, y0, x1, y1, mid)
+        if (mlng > 0.0) == (lng_lo > 0.0) and abs(mlng) > 90.0:
+            lo, lo_lat = mid, mlat
+        else:
+            hi = mid
+    if lo_lat == 0.0:
+        lo_lat, _ = _lat_lng_at(face, x0, y0, x1, y1, lo)
+    return lo_lat
+
+
+@njit(cache=True, nogil=True)
+def special_ring(cell: np.uint64, densify: int, out) -> int:
+    """Write the (lat, lng) boundary of a cell with its exact pole and antimeridian points; return the count.
+
+    The ring of :func:`_one_boundary` (not closed) with, where an edge passes
+    through a pole (at its middle or at a corner), two rows at latitude +-90
+    whose longitudes are the directions in which the boundary arrives at and
+    leaves the pole; and where the curve between two consecutive points
+    crosses the antimeridian, the crossing itself (bisected on the planar
+    edge parameter until the longitude flips) at longitude +-180 on the side
+    of the point before it.  ``out`` needs ``3 (densify + 1) + SPECIAL_EXTRA`` rows.
+    """
+    face, ax, ay, bx, by, cx, cy = corners(cell)
+    step = densify + 1
+    xs = np.empty(4)
+    ys = np.empty(4)
+    xs[0], ys[0], xs[1], ys[1], xs[2], ys[2] = ax, ay, bx, by, cx, cy
+    xs[3], ys[3] = ax, ay
+    lead = _POLE_LEAD / step
+    sign = POLES[face, 2]
+    ts = np.empty(step + 2)
+    n = 0
+    for e in range(3):
+        x0, y0, x1, y1 = xs[e], ys[e], xs[e + 1], ys[e + 1]
+        tp = _pole_on(face, x0, y0, x1, y1)
+        tn = _pole_on(face, xs[(e + 1) % 3], ys[(e + 1) % 3], xs[(e + 1) % 3 + 1], ys[(e + 1) % 3 + 1])
+        end_at_pole = tn == 0.0  # this edge ends at a pole corner
+        m = 0
+        for j in range(step + 1):  # the parameters j / step and the pole's, sorted
+            t = j / step
+            if tp > 0.0 and (j - 1) / step < tp < t:
+                ts[m] = tp
+                m += 1
+            ts[m] = t
+            m += 1
+        for k in range(m - 1):
+            ta, tb = ts[k], ts[k + 1]
+            if ta == tp:
+                if ta > 0.0:
+                    _, lin = _lat_lng_at(face, x0, y0, x1, y1, ta - lead)
+                else:  # a corner: the boundary arrives along the previous edge
+                    pe = (e + 2) % 3
+                    _, lin = _lat_lng_at(face, xs[pe], ys[pe], xs[pe + 1], ys[pe + 1], 1.0 - lead)
+                _, lout = _lat_lng_at(face, x0, y0, x1, y1, ta + lead)
+                out[n, 0], out[n, 1] = 90.0 * sign, lin
+                out[n + 1, 0], out[n + 1, 1] = 90.0 * sign, lout
+                n += 2
+                continue
+            lat, lng = _lat_lng_at(face, x0, y0, x1, y1, ta)
+            out[n, 0], out[n, 1] = lat, lng
+            n += 1
+            if tb == tp or (k == m - 2 and end_at_pole) or n >= out.shape[0] - 2:
+                continue
+            _, lng_b = _lat_lng_at(face, x0, y0, x1, y1, tb)
+            if abs(lng_b - lng) > 180.0 and abs(lng) < 180.0 and abs(lng_b) < 180.0:
+                out[n, 0] = _crossing(face, x0, y0, x1, y1, ta, tb, lng)
+                out[n, 1] = math.copysign(180.0, lng)
+                n += 1
+    return n

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from dggs.errors import DggsValueError, LevelMismatchError
+from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
 
 from . import _codec, _kgrid, _khier
 from ._convert import cells_in, cells_out, scalar_id
-from .hierarchy import check_size
+from .hierarchy import check_max_cells, check_size
 from dggs.geometry._parallel import parallel
 
 __all__ = ["edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "grid_distance"]
@@ -54,25 +54,45 @@ def are_neighbor_cells(a, b):
     """
     ia, ka = cells_in(a)
     ib, kb = cells_in(b)
-    if ia.shape != ib.shape:
-        if ia.shape[0] == 1:
-            ia = np.repeat(ia, ib.shape[0])
-        elif ib.shape[0] == 1:
-            ib = np.repeat(ib, ia.shape[0])
-        else:
-            raise DggsValueError(f"cannot pair {ia.shape[0]} cells with {ib.shape[0]} cells")
+    ia, ib, shape = _pair(ia, ka, ib, kb)
     res = np.empty(ia.shape[0], dtype=bool)
     _kgrid.are_neighbours(ia, ib, res)
     if ka.scalar and kb.scalar:
         return bool(res[0])
-    shape = ka.shape if not ka.scalar else kb.shape
     return res.reshape(shape)
 
 
-def _check_k(k) -> int:
+def _pair(ia: np.ndarray, ka, ib: np.ndarray, kb) -> tuple[np.ndarray, np.ndarray, tuple[int, ...]]:
+    """Two id arrays broadcast against each other (numpy's rules), and the result's shape."""
+    sa, sb = (() if ka.scalar else ka.shape), (() if kb.scalar else kb.shape)
+    if sa == sb:
+        return ia, ib, sa
+    try:
+        shape = np.broadcast_shapes(sa, sb)
+    except ValueError:
+        raise DggsValueError(
+            f"cannot pair {ia.shape[0]} cells (shape {sa}) with {ib.shape[0]} cells (shape {sb})"
+        ) from None
+    ia = np.ascontiguousarray(np.broadcast_to(ia.reshape(sa), shape)).reshape(-1)
+    ib = np.ascontiguousarray(np.broadcast_to(ib.reshape(sb), shape)).reshape(-1)
+    return ia, ib, shape
+
+
+#: Largest ``k`` (and ``max_steps``) the kernels take; a disk of this radius covers the globe at every level.
+_K_LIMIT = 1 << 31
+
+
+def _check_k(k, name: str = "k") -> int:
     if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)) or k < 0:
-        raise DggsValueError(f"k {k!r} must be a non-negative integer")
+        raise DggsValueError(f"{name} {k!r} must be a non-negative integer")
     return int(k)
+
+
+def _check_radius(k, what: str) -> int:
+    k = _check_k(k)
+    if k > _K_LIMIT:
+        raise TooManyCellsError(f"{what} with k={k} would return more cells than the grid has at any level")
+    return k
 
 
 def grid_disk(cell, k: int = 1, max_cells: int | None = None):
@@ -101,7 +121,8 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
     >>> grid_disk(np.array(["C401", "C402"]), 1).shape
     (2, 4)
     """
-    k = _check_k(k)
+    k = _check_radius(k, "grid_disk")
+    check_max_cells(max_cells)
     one = scalar_id(cell)
     if one and k <= 64:  # the single-cell path
         disk = _kgrid.disk_of(one, k).tolist()
@@ -126,7 +147,8 @@ def grid_ring(cell, k: int = 1, max_cells: int | None = None):
     >>> grid_ring("C401", 1)
     ['C400', 'C402', 'C411']
     """
-    k = _check_k(k)
+    k = _check_radius(k, "grid_ring")
+    check_max_cells(max_cells)
     ids, kind = cells_in(cell)
     width = _kgrid.ring_size_bound(k)
     check_size(ids.shape[0] * width, max_cells, f"grid_ring with k={k}")
@@ -153,16 +175,10 @@ def grid_distance(a, b, max_steps: int = 10_000):
     >>> grid_distance("C401", "C402"), grid_distance("C401", "C401")
     (1, 0)
     """
-    max_steps = _check_k(max_steps)
+    max_steps = min(_check_k(max_steps, "max_steps"), _K_LIMIT)
     ia, ka = cells_in(a)
     ib, kb = cells_in(b)
-    if ia.shape != ib.shape:
-        if ia.shape[0] == 1:
-            ia = np.repeat(ia, ib.shape[0])
-        elif ib.shape[0] == 1:
-            ib = np.repeat(ib, ia.shape[0])
-        else:
-            raise DggsValueError(f"cannot pair {ia.shape[0]} cells with {ib.shape[0]} cells")
+    ia, ib, shape = _pair(ia, ka, ib, kb)
     la, lb = _khier.levels(ia), _khier.levels(ib)
     if (la != lb).any():
         i = int(np.flatnonzero(la != lb)[0])
@@ -181,4 +197,4 @@ def grid_distance(a, b, max_steps: int = 10_000):
         )
     if ka.scalar and kb.scalar:
         return int(dist[0])
-    return dist.reshape(ka.shape if not ka.scalar else kb.shape)
+    return dist.reshape(shape)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from dggs.errors import LevelMismatchError, TooManyCellsError
+from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
 
 from . import _codec, _khier, _kpoints
 from ._bits import MAX_LEVEL
@@ -34,9 +34,18 @@ __all__ = [
 MAX_CELLS = 50_000_000
 
 
+def check_max_cells(max_cells) -> int:
+    """``max_cells`` as an int (:data:`MAX_CELLS` for None), or :class:`DggsValueError` naming it."""
+    if max_cells is None:
+        return MAX_CELLS
+    if isinstance(max_cells, (bool, np.bool_)) or not isinstance(max_cells, (int, np.integer)) or max_cells < 0:
+        raise DggsValueError(f"max_cells {max_cells!r} must be a non-negative integer (or None for {MAX_CELLS:,})")
+    return int(max_cells)
+
+
 def check_size(total: int, max_cells: int | None, what: str) -> None:
     """Raise :class:`TooManyCellsError` before allocating more than ``max_cells`` cells."""
-    limit = MAX_CELLS if max_cells is None else max_cells
+    limit = check_max_cells(max_cells)
     if total > limit:
         raise TooManyCellsError(
             f"{what} would return {total:,} cells, over the limit of {limit:,} (raise max_cells to allow it)"
@@ -122,7 +131,7 @@ def cell_to_parent(cell, level: int | None = None):
     ('C40', 'C4')
     """
     one = scalar_id(cell)
-    if one and (level is None or type(level) is int):
+    if one and (level is None or (type(level) is int and 0 <= level <= MAX_LEVEL)):
         parent = _khier.parent_of(one, -1 if level is None else level)
         if parent:
             return _codec.format_int(parent) if type(cell) is str else parent
@@ -170,6 +179,7 @@ def cell_to_children(cell, level: int | None = None, max_cells: int | None = Non
     >>> len(cell_to_children("C", 2))
     18
     """
+    check_max_cells(max_cells)
     ids, kind = cells_in(cell)
     if level is None:
         lo, hi = _khier.level_bounds(ids)
@@ -245,6 +255,7 @@ def uncompact_cells(cells, level: int, max_cells: int | None = None):
     ['C4010', 'C4011', 'C4012', 'C4020']
     """
     level = check_level(level)
+    check_max_cells(max_cells)
     ids, kind = cells_in(cells)
     cover, total, bad = _khier.uncompact_prepare(ids, level)
     if bad >= 0:

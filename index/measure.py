@@ -67,10 +67,13 @@ def _is_level(value) -> bool:
         return int(value) < 2**62
     if isinstance(value, np.ndarray) and value.dtype.kind in "iu":
         return bool(value.size) and int(value.max()) < 2**62
-    if isinstance(value, (list, tuple)) and len(value) and all(
-        isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in np.asarray(value, dtype=object).ravel()
-    ):
-        return int(np.max(np.asarray(value, dtype=object))) < 2**62
+    if isinstance(value, (list, tuple)) and len(value):
+        try:
+            items = np.asarray(value, dtype=object).ravel()
+        except ValueError:  # ragged: judged (and refused) as cells
+            return False
+        if items.size and all(isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in items):
+            return int(max(items)) < 2**62
     return False
 
 

@@ -213,9 +213,9 @@ def cell_to_polygon(cell, densify: int | None = None):
             groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
         for n, parts in groups.items():
             sel = np.concatenate(parts)
-            out[sel] = rings_to_geometries(_boundaries(ids[sel], n, lnglat=True))
+            out[sel] = rings_to_geometries(_boundaries(ids[sel], n, lnglat=True), ids[sel], n)
     else:
-        out[:] = rings_to_geometries(_boundaries(ids, densify, lnglat=True))
+        out[:] = rings_to_geometries(_boundaries(ids, densify, lnglat=True), ids, densify)
     return out[0] if kind.scalar else out.reshape(kind.shape)
 
 

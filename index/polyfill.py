@@ -39,6 +39,41 @@ _DIRECT = 2
 _BULGE = 1.5
 
 
+#: Cells whose centre is this far from the equator (degrees) are tested in a polar azimuthal
+#: equidistant plane instead of lng/lat, where a footprint near a pole spans many longitudes.
+_POLAR_LAT = 60.0
+#: The polar planes hold the target above this latitude (degrees).
+_POLAR_CLIP = 40.0
+#: Segment length (degrees) of the target before it is mapped to a polar plane, and the slack
+#: per degree from the pole that covers the chords (a 1-degree chord at colatitude c is 3.8e-5 c off).
+_POLAR_SEGMENT = 1.0
+_POLAR_SLACK = 1e-4
+
+
+def _polar_xy(lat: np.ndarray, lng: np.ndarray, hemi: float) -> tuple[np.ndarray, np.ndarray]:
+    """Polar azimuthal equidistant coordinates (degrees from the pole) around the pole ``hemi`` (+-1)."""
+    rho = 90.0 - hemi * lat
+    t = np.radians(lng)
+    return rho * np.cos(t), hemi * rho * np.sin(t)
+
+
+def _polar_target(target, hemi: float, buffers: dict):
+    """The part of the target above :data:`_POLAR_CLIP` in the polar plane of ``hemi``."""
+    key = ("polar", hemi)
+    if key not in buffers:
+        lo, hi = (_POLAR_CLIP, 90.0) if hemi > 0 else (-90.0, -_POLAR_CLIP)
+        part = shapely.segmentize(target.intersection(box(-180.0, lo, 180.0, hi)), _POLAR_SEGMENT)
+
+        def to_plane(xy: np.ndarray) -> np.ndarray:
+            x, y = _polar_xy(xy[:, 1], xy[:, 0], hemi)
+            return np.column_stack([x, y])
+
+        plane = shapely.make_valid(shapely.transform(part, to_plane))
+        # the two sides of a target split at +-180 meet again on the plane
+        buffers[key] = shapely.buffer(plane, 1e-12, quad_segs=2)
+    return buffers[key]
+
+
 def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.ndarray, np.ndarray]:
     """Which cells may hold a centre in ``target`` (hit), and which lie wholly inside it.
 
@@ -48,8 +83,11 @@ def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.
     radius is a hit; one inside the target shrunk by it lies wholly inside.
     Point-in-polygon tests on the prepared grown and shrunk targets (one pair
     per radius class, kept in ``buffers``) replace a geometry per cell.  A
-    circle across the antimeridian is also tested 360 degrees over; cells at
-    a pole and the coarse levels are hits, never inside.
+    circle across the antimeridian is also tested 360 degrees over.  Cells
+    more than :data:`_POLAR_LAT` from the equator (a pole on a corner among
+    them) take the same test in a polar azimuthal equidistant plane, where
+    their footprints are not stretched over the longitudes; coarse levels
+    are hits, never inside.
     """
     n = cells.shape[0]
     if level < _COARSE:
@@ -60,13 +98,33 @@ def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.
     dlat = corners[..., 0] - lat[:, None]
     dlng = (corners[..., 1] - lng[:, None] + 180.0) % 360.0 - 180.0
     radius = _BULGE * np.sqrt((dlat * dlat + dlng * dlng).max(axis=1))
-    rclass = np.ceil(np.log(radius) / np.log(_RADIUS_STEP)).astype(np.int64)
     hit = np.zeros(n, dtype=bool)
     inside = np.zeros(n, dtype=bool)
-    polar = np.abs(lat) + radius >= 90.0
-    across = ~polar & (np.abs(lng) + radius > 180.0)
-    for rc in np.unique(rclass[~polar]):
-        sel = np.flatnonzero((rclass == rc) & ~polar)
+    polar_plane = np.abs(lat) >= _POLAR_LAT
+    for hemi in (1.0, -1.0):
+        sel = np.flatnonzero(polar_plane & (np.sign(lat) == hemi))
+        if sel.size == 0:
+            continue
+        x, y = _polar_xy(lat[sel], lng[sel], hemi)
+        cx, cy = _polar_xy(corners[sel, :, 0], corners[sel, :, 1], hemi)
+        r = _BULGE * np.sqrt(((cx - x[:, None]) ** 2 + (cy - y[:, None]) ** 2).max(axis=1))
+        r += _POLAR_SLACK * (90.0 - np.abs(lat[sel]) + 2.0 * r)
+        if (90.0 - np.abs(lat[sel]) + r).max() >= 90.0 - _POLAR_CLIP:  # too coarse for the plane
+            polar_plane[sel] = False
+            continue
+        plane = _polar_target(target, hemi, buffers)
+        rclass = np.ceil(np.log(r) / np.log(_RADIUS_STEP)).astype(np.int64)
+        for rc in np.unique(rclass):
+            part = sel[rclass == rc]
+            grown, shrunk = _buffers(plane, int(rc), buffers, ("polar", hemi))
+            hit[part] = shapely.contains_xy(grown, x[rclass == rc], y[rclass == rc])
+            inside[part] = shapely.contains_xy(shrunk, x[rclass == rc], y[rclass == rc])
+    flat = ~polar_plane
+    rclass = np.ceil(np.log(radius) / np.log(_RADIUS_STEP)).astype(np.int64)
+    polar = flat & (np.abs(lat) + radius >= 90.0)
+    across = flat & ~polar & (np.abs(lng) + radius > 180.0)
+    for rc in np.unique(rclass[flat & ~polar]):
+        sel = np.flatnonzero((rclass == rc) & flat & ~polar)
         grown, shrunk = _buffers(target, int(rc), buffers)
         hit[sel] = shapely.contains_xy(grown, lng[sel], lat[sel])
         inside[sel] = shapely.contains_xy(shrunk, lng[sel], lat[sel]) & ~across[sel]
@@ -82,15 +140,17 @@ def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.
 _RADIUS_STEP = 1.25
 
 
-def _buffers(target, rclass: int, buffers: dict):
+def _buffers(target, rclass: int, buffers: dict, plane=None):
     """The target grown and shrunk by the radius of class ``rclass`` (prepared, computed once)."""
-    if rclass not in buffers:
+    key = (plane, rclass)
+    if key not in buffers:
         r = _RADIUS_STEP**rclass
-        grown, shrunk = shapely.buffer(target, r, quad_segs=4), shapely.buffer(target, -r, quad_segs=4)
+        grown = shapely.buffer(target, r, quad_segs=4)
+        shrunk = shapely.buffer(target, -r, quad_segs=4)
         shapely.prepare(grown)
         shapely.prepare(shrunk)
-        buffers[rclass] = grown, shrunk
-    return buffers[rclass]
+        buffers[key] = grown, shrunk
+    return buffers[key]
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
@@ -156,8 +216,16 @@ def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int |
     return codes.view(f"<U{max(codes.shape[1], 1)}").reshape(-1)
 
 
-def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
-    """Sorted uint64 ids of the cells at ``level`` whose centres lie in ``polygon``."""
+def _fill(polygon, level: int, max_cells: int | None, work: dict | None = None) -> np.ndarray:
+    """Sorted uint64 ids of the cells at ``level`` whose centres lie in ``polygon``.
+
+    ``work``, if given, counts the cells classified (``"classified"``) and the
+    centres tested at the target level (``"tested"``): the work, independent of
+    the machine's speed.
+    """
+    if work is not None:
+        work.setdefault("classified", 0)
+        work.setdefault("tested", 0)
     if not polygon.is_valid:
         raise DggsValueError(f"polygon is not valid: {shapely.is_valid_reason(polygon)}")
     minx, miny, maxx, maxy = polygon.bounds
@@ -177,9 +245,13 @@ def _fill(polygon, level: int, max_cells: int | None) -> np.ndarray:
             count, _ = _khier.count_children(candidates, level)
             check_size(total + count, max_cells, "polygon_to_cells")
             finest = _children(candidates, level)
+            if work is not None:
+                work["tested"] += int(finest.shape[0])
             accepted.append(finest[_centres_inside(target, finest)])
             break
         hit, inside = _classify(target, candidates, current, buffers)
+        if work is not None:
+            work["classified"] += int(candidates.shape[0])
         if inside.any():
             whole = candidates[inside]
             count, _ = _khier.count_children(whole, level)

@@ -35,6 +35,9 @@ from .snyder import (
 from .split26 import _AMBIGUOUS, _GRID_H, _GRID_W, _L1_C, _L1_ROWS, _M, _T, FACE_VERTICES, LEVEL1, _jump_table
 
 _TWO_PI = 2.0 * math.pi
+#: Below this planar distance from a face centre the azimuth comes from scaled copies of (x, y).
+_TINY = 2.0**-500
+_UNTINY = 2.0**600
 _SECTOR = 2.0 * math.pi / 3.0
 _INV_SECTOR = 1.0 / _SECTOR
 _SQRT3 = math.sqrt(3.0)
@@ -264,10 +267,15 @@ def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
     rho = math.hypot(x, y)
     k = sector_of(x, y)
     rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    if rho > 0.0:
+    if rho > _TINY:
         inv_rho = 1.0 / rho
         sin_a = (x * rc - y * rs) * inv_rho
         cos_a = (y * rc + x * rs) * inv_rho
+    elif rho > 0.0:  # subnormal or tiny: 1 / rho would overflow; the direction from scaled copies
+        sx, sy = x * _UNTINY, y * _UNTINY
+        inv_rho = 1.0 / math.hypot(sx, sy)
+        sin_a = (sx * rc - sy * rs) * inv_rho
+        cos_a = (sy * rc + sx * rs) * inv_rho
     else:
         sin_a, cos_a = 0.0, 1.0
     area = _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))  # eq. 8 inverted

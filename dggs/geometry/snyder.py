@@ -71,10 +71,48 @@ _COS_SMALL_G = math.cos(G_ARC)
 _RT2 = (R_PRIME * TAN_G) ** 2  # R'^2 tan^2 g
 _ROT_COS = np.cos(_SECTOR * np.arange(3))
 _ROT_SIN = np.sin(_SECTOR * np.arange(3))
+_TINY = 2.0**-500  # planar distances below this are scaled by _UNTINY before 1 / rho
+_UNTINY = 2.0**600
 
 #: Inverse methods: Snyder's Newton-Raphson, Newton from a polynomial start
 #: (thesis §4.1.2), the polynomial alone (thesis §4.1.3), and the exact closed form.
 METHODS = ("closed", "newton", "newton-poly", "poly")
+
+
+# ----------------------------------------------------------------------------
+# Input checks
+# ----------------------------------------------------------------------------
+def _numbers(value, name: str) -> None:
+    """Raise :class:`CoordinateError` naming the first value that is not a real number (str, bool, None...).
+
+    numpy would turn ``"10"`` into 10.0, ``True`` into 1.0 and ``None`` into NaN.
+    """
+    try:
+        # a list is read as given: numpy would make [1.0, True] floats and [1, "a"] strings
+        arr = np.asarray(value, dtype=object) if isinstance(value, (list, tuple)) else np.asarray(value)
+    except ValueError:  # ragged
+        return  # the shape checks that follow name it
+    if arr.dtype.kind in "iuf":
+        return
+    for i, v in enumerate(arr.ravel().tolist() if arr.dtype.kind != "O" else arr.ravel()):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
+            where = "" if arr.ndim == 0 else f" at index {i}"
+            raise CoordinateError(f"{name} {v!r}{where} is not a real number")
+
+
+def _check_inverse_options(degree, tol, max_iter) -> None:
+    """Reject a polynomial degree, Newton tolerance or iteration cap that cannot work, naming it."""
+    if isinstance(degree, (bool, np.bool_)) or not isinstance(degree, (int, np.integer)) or not 1 <= degree <= 9:
+        raise DggsValueError(f"degree {degree!r} must be an integer 1..9")
+    if (
+        isinstance(tol, (bool, np.bool_))
+        or not isinstance(tol, (int, float, np.integer, np.floating))
+        or not math.isfinite(tol)
+        or tol <= 0
+    ):
+        raise DggsValueError(f"tol {tol!r} must be a finite number > 0 (radians)")
+    if isinstance(max_iter, (bool, np.bool_)) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
+        raise DggsValueError(f"max_iter {max_iter!r} must be an integer >= 1")
 
 
 # ----------------------------------------------------------------------------
@@ -154,7 +192,9 @@ def forward(lat, lng, orientation: Orientation = ISEA):
     Raises
     ------
     CoordinateError
-        NaN, infinite or out-of-range latitude, or mismatched shapes.
+        Coordinates that are not real numbers (strings, bools, None; the
+        message names the value), NaN, infinite or out-of-range latitude, or
+        mismatched shapes.
 
     Examples
     --------
@@ -162,6 +202,8 @@ def forward(lat, lng, orientation: Orientation = ISEA):
     >>> face.tolist()
     [0, 16]
     """
+    _numbers(lat, "latitude")
+    _numbers(lng, "longitude")
     lat_a, lng_a, scalar = as_latlng(lat, lng)
     face, x, y = _forward_rad(np.radians(lat_a), np.radians(lng_a), orientation)
     if scalar:
@@ -311,9 +353,13 @@ def inverse_xyz(
     ap -= k * _SECTOR
     # sin/cos of the reduced Az': turn (x, y) back by 120 k instead of calling sin and cos
     rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    inv_rho = 1.0 / np.where(rho > 0, rho, 1.0)
-    sin_a = (x * rc - y * rs) * inv_rho
-    cos_a = np.where(rho > 0, (y * rc + x * rs) * inv_rho, 1.0)
+    # the azimuth's sine and cosine; tiny (x, y) are scaled first so that 1 / rho does not overflow
+    scale = np.where(rho < _TINY, _UNTINY, 1.0)
+    sx, sy = x * scale, y * scale
+    srho = np.hypot(sx, sy)
+    inv_rho = 1.0 / np.where(srho > 0, srho, 1.0)
+    sin_a = (sx * rc - sy * rs) * inv_rho
+    cos_a = np.where(srho > 0, (sy * rc + sx * rs) * inv_rho, 1.0)
     area = _area_from_planar(sin_a, cos_a)
     iterations = np.zeros(ap.shape, dtype=np.int64)
     if method == "closed":
@@ -385,7 +431,16 @@ def inverse(
     Raises
     ------
     CoordinateError
-        A face outside 0..19, NaN or infinite coordinates, or a point off its face.
+        A face outside 0..19, coordinates that are not real numbers (strings,
+        bools, None), NaN or infinite, or a point off its face.
+    DggsValueError
+        An unknown ``method``, or a ``degree`` outside 1..9, a ``tol`` that is
+        not a finite number > 0, or a ``max_iter`` below 1 (each named).
+
+    Notes
+    -----
+    Points within 2**-500 of the face centre (subnormal ones too) map to the
+    face centre for every method.
 
     Examples
     --------
@@ -395,6 +450,10 @@ def inverse(
     """
     if method not in METHODS:
         raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
+    _check_inverse_options(degree, tol, max_iter)
+    _numbers(face, "face")
+    _numbers(x, "x")
+    _numbers(y, "y")
     scalar = np.ndim(face) == 0 and np.ndim(x) == 0 and np.ndim(y) == 0
     try:
         face_b, x_b, y_b = np.broadcast_arrays(np.asarray(face), np.asarray(x, float), np.asarray(y, float))
@@ -480,6 +539,8 @@ class Projection:
 
     def forward(self, lat, lng):
         """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
+        _numbers(lat, "latitude")
+        _numbers(lng, "longitude")
         lat_a, lng_a, scalar = as_latlng(lat, lng)
         beta = self.ellipsoid.geodetic_to_authalic(np.radians(lat_a))
         face, x, y = _forward_rad(np.asarray(beta, dtype=np.float64), np.radians(lng_a), self.orientation)
