@@ -15,14 +15,17 @@ Examples
 
 from __future__ import annotations
 
+from .atomic import atomic_write
 from .errors import BadRowError, RejectedRowsWarning
-from .ingest import IngestResult
+from .ingest import IngestOptions, IngestResult
 from .schema import SCHEMA_VERSION
 from .store import STATS, CellStore
 
 __all__ = [
     "CellStore",
+    "IngestOptions",
     "IngestResult",
+    "atomic_write",
     "BadRowError",
     "RejectedRowsWarning",
     "SCHEMA_VERSION",

@@ -53,15 +53,40 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     return "\n".join(lines)
 
 
+def _value_types(values: tuple[str, ...]) -> list[str] | dict[str, str]:
+    """``--value`` options as names, or a dict of declared types if any has ``:type``.
+
+    Examples
+    --------
+    >>> _value_types(("pop:int", "name"))
+    {'pop': 'INTEGER', 'name': None}
+    >>> _value_types(("pop",))
+    ['pop']
+    """
+    from dggs.errors import DggsValueError
+
+    kinds = {"int": "INTEGER", "float": "REAL", "str": "TEXT", "": None}
+    out: dict[str, str | None] = {}
+    for value in values:
+        name, _, kind = value.partition(":")
+        if kind.lower() not in kinds:
+            raise DggsValueError(f"--value {value!r}: the type must be int, float or str")
+        out[name] = kinds[kind.lower()]
+    if all(kind is None for kind in out.values()):
+        return list(out)
+    return out  # type: ignore[return-value]
+
+
 @click.command("bin")
 @click.argument("input_path", metavar="INPUT", type=click.Path(exists=True, dir_okay=False))
 @click.option("--db", required=True, type=click.Path(dir_okay=False), help="Cell store to write (created if missing).")
 @click.option("--level", type=int, default=None, help="Level to bin at [default: the store's, or 12].")
 @click.option("--lat", default="lat", show_default=True, help="Latitude (or y) column of a CSV.")
 @click.option("--lng", default="lng", show_default=True, help="Longitude (or x) column of a CSV.")
-@click.option("--value", "values", multiple=True, help="Value column to keep (repeatable).")
+@click.option("--value", "values", multiple=True,
+              help="Value column to keep (repeatable); NAME:int, NAME:float or NAME:str declares its type.")
 @click.option("--crs", default=None, help="CRS of the coordinates, e.g. EPSG:3857 [default: WGS84 lat/lng].")
-@click.option("--batch-size", type=int, default=10_000, show_default=True, help="Rows per transaction.")
+@click.option("--batch-size", type=click.IntRange(min=1), default=10_000, show_default=True, help="Rows per transaction.")
 @click.option("--on-error", type=click.Choice(["fail", "skip"]), default="fail", show_default=True,
               help="Stop at the first bad row, or skip bad rows (kept in table rejects).")
 @click.option("--replace", is_flag=True, help="Forget what an earlier ingest of INPUT stored, then ingest it.")
@@ -96,6 +121,7 @@ def bin_(
     from tqdm import tqdm
 
     kind = sniff_kind(input_path)
+    declared = _value_types(values)
     show = sys.stderr.isatty() if progress is None else progress
     total = count_csv_rows(input_path) if (show and kind == "csv") else None
     bar = tqdm(total=total, unit=" rows", unit_scale=True, disable=not show, desc="binning", file=sys.stderr)
@@ -107,10 +133,10 @@ def bin_(
         try:
             if kind == "csv":
                 result = store.ingest_csv(
-                    input_path, lat=lat, lng=lng, values=list(values), crs=crs, encoding=encoding, **common
+                    input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common
                 )
             else:
-                result = store.ingest_geojson(input_path, values=list(values) or None, **common)
+                result = store.ingest_geojson(input_path, values=declared or None, **common)
         finally:
             bar.close()
         stored_level = store.level

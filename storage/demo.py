@@ -19,6 +19,7 @@ from typing import Any
 import dggs
 from dggs.errors import DggsError, StorageError
 
+from .atomic import atomic_write
 from .store import CellStore
 
 __all__ = ["run_demo", "level_for_area", "load_cities"]
@@ -166,7 +167,7 @@ def run_demo(
             for r in cells_all
         ],
     )
-    with open(geojson_path, "w", encoding="utf-8") as fh:
+    with atomic_write(geojson_path) as fh:
         json.dump(collection, fh)
 
     echo("")

@@ -39,14 +39,14 @@ class BadRowError(StorageError, DggsValueError):
         column: str | None,
         value: object,
         reason: str,
+        hint: str = "batches before it are stored; fix the row or use on_error='skip'",
     ) -> None:
         self.source, self.row, self.line = source, row, line
         self.column, self.value, self.reason = column, value, reason
         where = f"line {line}" if line is not None else f"row {row}"
         what = f"column {column!r}: {value!r} {reason}" if column else reason
         super().__init__(
-            f"bad input in {source}, {where}: {what} "
-            "(batches before it are stored; fix the row or use on_error='skip')"
+            f"bad input in {source}, {where}: {what} ({hint})"
         )
 
 

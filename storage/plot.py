@@ -171,4 +171,7 @@ def plot_cells(
             fontsize=8,
             color="#506070",
         )
-    fig.savefig(path, dpi=dpi)
+    from .atomic import atomic_path
+
+    with atomic_path(path, suffix=".png") as tmp:
+        fig.savefig(tmp, dpi=dpi, format="png")

@@ -11,24 +11,23 @@ from __future__ import annotations
 import collections
 import csv
 import itertools
-import json
 import operator
 import os
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import partial
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-import dggs
 from dggs.errors import DggsValueError, StorageError
+
+from .errors import BadRowError
 
 #: A column of raw values: a list, tuple or numpy array.
 Column = Any
 
-__all__ = ["RawBatch", "csv_batches", "records_batches", "array_batches", "geojson_batches"]
+__all__ = ["RawBatch", "csv_batches", "check_columns", "csv_header", "count_csv_rows", "sniff_kind"]
 
 
 @dataclass
@@ -78,14 +77,6 @@ class RawBatch:
         return len(self.rows)
 
 
-def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict:
-    return dict(items[i])
-
-
-def _feature_at(props: Sequence[dict], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict:
-    return {"lat": lat[i], "lng": lng[i], **props[i]}
-
-
 def _skip(iterator: Iterator[Any], n: int) -> None:
     collections.deque(itertools.islice(iterator, n), maxlen=0)
 
@@ -106,6 +97,37 @@ def csv_header(path: str | Path, delimiter: str = ",", encoding: str = "utf-8") 
             raise _not_text(path, encoding, 0, exc) from exc
         except csv.Error as exc:
             raise DggsValueError(f"{path} is not a readable CSV file: {exc}") from exc
+
+
+def check_columns(path: str | Path, header: Sequence[str], wanted: Sequence[str]) -> None:
+    """Raise DggsValueError naming the columns of ``wanted`` missing from ``header``."""
+    missing = [name for name in wanted if name not in header]
+    if missing:
+        raise DggsValueError(
+            f"{path} has no column(s) {', '.join(map(repr, missing))}; "
+            f"its header is {', '.join(map(repr, header))}"
+        )
+
+
+#: Lines a quoted CSV field may span before it is taken for an unclosed quote.
+MAX_FIELD_LINES = 10_000
+
+
+def _unclosed_quote(path: str | Path, lines: list[str], first_line: int, delimiter: str, to_eof: bool) -> BadRowError:
+    """The error for a quoted field that never closes: names the line where its record starts."""
+    reader = csv.reader(lines, delimiter=delimiter, strict=True)
+    start = first_line + 1
+    try:
+        for _ in reader:
+            start = first_line + reader.line_num + 1
+    except csv.Error:
+        pass
+    where = "to the end of the file" if to_eof else f"over more than {MAX_FIELD_LINES:,} lines"
+    return BadRowError(
+        str(path), 0, start, None, None,
+        f"a quoted field opened on this line runs {where}: a closing quote (\") is missing",
+        hint="the batches before it are stored; close the quote and run the same command again",
+    )
 
 
 def csv_batches(
@@ -136,12 +158,7 @@ def csv_batches(
     """
     header = csv_header(path, delimiter, encoding)
     wanted = [lat, lng, *values]
-    missing = [name for name in wanted if name not in header]
-    if missing:
-        raise DggsValueError(
-            f"{path} has no column(s) {', '.join(map(repr, missing))}; "
-            f"its header is {', '.join(map(repr, header))}"
-        )
+    check_columns(path, header, wanted)
     index = [header.index(name) for name in wanted]
     types = types if types is not None else {}
     with open(path, newline="", encoding=_codec(encoding)) as fh:
@@ -163,10 +180,14 @@ def csv_batches(
                 return
             text = "".join(lines)
             if '"' in text:
+                extra = 0
                 while text.count('"') % 2:  # a quoted field runs on: finish it
                     more = next(fh, None)
-                    if more is None:
+                    if more is None or extra >= MAX_FIELD_LINES:
+                        if _open_at_end(lines, delimiter):
+                            raise _unclosed_quote(path, lines, line, delimiter, more is None)
                         break
+                    extra += 1
                     lines.append(more)
                     text += more
             batch = None
@@ -177,6 +198,16 @@ def csv_batches(
             done += batch.consumed
             line += len(lines)
             yield batch
+
+
+def _open_at_end(lines: list[str], delimiter: str) -> bool:
+    """True if parsing ``lines`` ends inside a quoted field."""
+    try:
+        for _ in csv.reader(lines, delimiter=delimiter, strict=True):
+            pass
+    except csv.Error as exc:
+        return "unexpected end of data" in str(exc)
+    return False
 
 
 def _not_text(path: str | Path, encoding: str, line: int, exc: UnicodeDecodeError) -> DggsValueError:
@@ -279,201 +310,6 @@ def _csv_chunk(
 def lines_in(record: list[str]) -> int:
     """Count the physical lines a parsed CSV record spanned (1 + embedded newlines)."""
     return 1 + sum(field.count("\n") for field in record)
-
-
-def records_batches(
-    records: Iterable[Mapping[str, Any]],
-    lat: str,
-    lng: str,
-    values: Sequence[str],
-    batch_size: int,
-    skip: int = 0,
-) -> Iterator[RawBatch]:
-    """Stream an iterable of mappings (dicts, sqlite rows...) as batches."""
-    iterator = iter(records)
-    _skip(iterator, skip)
-    done = skip
-    while True:
-        chunk = list(itertools.islice(iterator, batch_size))
-        if not chunk:
-            return
-        bad: dict[int, tuple[str | None, Any, str]] = {}
-        for i, item in enumerate(chunk):
-            if isinstance(item, Mapping):
-                continue
-            if hasattr(item, "keys"):  # sqlite3.Row and other dict-likes
-                try:
-                    chunk[i] = {key: item[key] for key in item.keys()}
-                    continue
-                except (TypeError, KeyError, IndexError):
-                    pass
-            bad[i] = (None, item, "is not a mapping (dict)")
-            chunk[i] = {}
-        yield RawBatch(
-            consumed=len(chunk),
-            rows=range(done + 1, done + len(chunk) + 1),
-            lines=None,
-            lat=[item.get(lat) for item in chunk],
-            lng=[item.get(lng) for item in chunk],
-            values={name: [item.get(name) for item in chunk] for name in values},
-            text=False,
-            record=partial(_dict_at, chunk),
-            bad=bad,
-        )
-        done += len(chunk)
-
-
-def array_batches(
-    lat: Any,
-    lng: Any,
-    values: Mapping[str, Any],
-    batch_size: int,
-    skip: int = 0,
-) -> Iterator[RawBatch]:
-    """Slice equal-length arrays (numpy, lists, pandas columns) into batches.
-
-    Raises
-    ------
-    DggsValueError
-        If the arrays differ in length.
-    """
-    lat_a = np.asarray(lat)
-    lng_a = np.asarray(lng)
-    cols = {name: np.asarray(col) for name, col in values.items()}
-    n = lat_a.shape[0] if lat_a.ndim else 1
-    lat_a, lng_a = lat_a.reshape(-1), lng_a.reshape(-1)
-    for name, col in {"lng": lng_a, **cols}.items():
-        if col.reshape(-1).shape[0] != n:
-            raise DggsValueError(
-                f"column {name!r} has {col.reshape(-1).shape[0]} values but lat has {n}"
-            )
-    cols = {name: col.reshape(-1) for name, col in cols.items()}
-    for start in range(skip, n, batch_size):
-        stop = min(start + batch_size, n)
-        sl = slice(start, stop)
-        batch_cols = {name: col[sl] for name, col in cols.items()}
-        batch_lat, batch_lng = lat_a[sl], lng_a[sl]
-
-        def record(i: int, _lat=batch_lat, _lng=batch_lng, _cols=batch_cols) -> dict:
-            out = {"lat": _lat[i], "lng": _lng[i], **{k: v[i] for k, v in _cols.items()}}
-            return {k: (v.item() if hasattr(v, "item") else v) for k, v in out.items()}
-
-        yield RawBatch(
-            consumed=stop - start,
-            rows=range(start + 1, stop + 1),
-            lines=None,
-            lat=batch_lat,
-            lng=batch_lng,
-            values=batch_cols,
-            text=False,
-            record=record,
-        )
-
-
-def load_geojson(path: str | Path) -> list[dict]:
-    """Read the features of a GeoJSON file (FeatureCollection, Feature or geometry).
-
-    Raises
-    ------
-    DggsValueError
-        If the file is not GeoJSON.
-    """
-    try:
-        with open(path, encoding="utf-8") as fh:
-            data = json.load(fh)
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise DggsValueError(f"{path} is not valid JSON: {exc}") from exc
-    kind = data.get("type") if isinstance(data, dict) else None
-    if kind == "FeatureCollection" and isinstance(data.get("features"), list):
-        return data["features"]
-    if kind == "Feature":
-        return [data]
-    if isinstance(kind, str) and "coordinates" in data:
-        return [{"type": "Feature", "geometry": data, "properties": {}}]
-    raise DggsValueError(f"{path} is not GeoJSON (no FeatureCollection, Feature or geometry)")
-
-
-def geojson_batches(
-    features: Sequence[Any],
-    values: Sequence[str],
-    level: int,
-    batch_size: int,
-    skip: int = 0,
-) -> Iterator[RawBatch]:
-    """Cut GeoJSON features into batches: points as they are, polygons as cells.
-
-    A ``Polygon``/``MultiPolygon`` feature becomes one entry per cell at
-    ``level`` whose centre lies inside it (:func:`dggs.polygon_to_cells`),
-    each with the feature's properties and the cell centre as coordinates.
-    A ``MultiPoint`` gives one entry per point.
-    """
-    from shapely.geometry import shape
-
-    for start in range(skip, len(features), batch_size):
-        chunk = features[start : start + batch_size]
-        rows: list[int] = []
-        lat: list[Any] = []
-        lng: list[Any] = []
-        cells: list[str] = []
-        props: list[dict] = []
-        parts: list[int] = []
-        bad: dict[int, tuple[str | None, Any, str]] = {}
-
-        def add(row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0) -> None:
-            rows.append(row)
-            parts.append(part)
-            lat.append(y)
-            lng.append(x)
-            cells.append(cell)
-            props.append(prop)
-
-        for offset, feature in enumerate(chunk):
-            row = start + offset + 1
-            geometry: Any = feature.get("geometry") if isinstance(feature, dict) else None
-            prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
-            kind = geometry.get("type") if isinstance(geometry, dict) else None
-            coords: Any = geometry.get("coordinates") if isinstance(geometry, dict) else None
-            try:
-                if kind == "Point":
-                    add(row, coords[1], coords[0], "", prop)
-                    continue
-                if kind == "MultiPoint":
-                    for part, (x, y, *_) in enumerate(coords):
-                        add(row, y, x, "", prop, part)
-                    continue
-                if kind in ("Polygon", "MultiPolygon"):
-                    found = dggs.polygon_to_cells(shape(geometry), level)
-                    if len(found):
-                        clat, clng = dggs.cell_to_latlng(np.asarray(found))
-                        triples = zip(
-                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()
-                        )
-                        for part, (cell, y, x) in enumerate(triples):
-                            add(row, y, x, cell, prop, part)
-                    else:
-                        bad[len(rows)] = (None, kind, f"polygon holds no cell centre at level {level}")
-                        add(row, None, None, "", prop)
-                    continue
-            except (TypeError, IndexError, ValueError, AttributeError) as exc:
-                bad[len(rows)] = (None, kind, f"geometry is malformed ({exc})")
-                add(row, None, None, "", prop)
-                continue
-            bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
-            add(row, None, None, "", prop)
-
-        yield RawBatch(
-            consumed=len(chunk),
-            rows=rows,
-            lines=None,
-            lat=lat,
-            lng=lng,
-            values={name: [p.get(name) for p in props] for name in values},
-            text=False,
-            record=partial(_feature_at, props, lat, lng),
-            bad=bad,
-            cells=cells,
-            parts=parts,
-        )
 
 
 def count_csv_rows(path: str | Path) -> int:

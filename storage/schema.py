@@ -60,8 +60,11 @@ SCHEMA_VERSION = 1
 #: Coordinate reference system of the stored ``lat``/``lng`` columns.
 CRS = "EPSG:4326"
 
-#: Columns every point row has, before any value columns.
-BASE_COLUMNS = ("cell", "lat", "lng", "source_id", "row", "part")
+#: Columns every point row has, before any value columns (key columns first).
+BASE_COLUMNS = ("cell", "source_id", "row", "part", "lat", "lng")
+
+#: The column order of stores written before the key-first layout.
+_OLD_ORDER = ("cell", "lat", "lng", "source_id", "row", "part")
 
 #: The two tables that hold points: merged (indexed) and pending.
 POINT_TABLES = ("points", "points_pending")
@@ -75,6 +78,11 @@ _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 # ``points`` is clustered on the cell id (WITHOUT ROWID, primary key led by
 # ``cell``): a descendant query reads one contiguous key range, a roll-up
 # scans the table in id order, and a row can never be stored twice.
+# The key columns come first so that the declared order is the order in the
+# record: SQLite 3.40's ``PRAGMA integrity_check`` reads the NOT NULL columns
+# of a WITHOUT ROWID table at their declared position and reports "NULL value
+# in points.lat" when non-key NOT NULL columns end the table (fixed in later
+# SQLite; :func:`upgrade_layout` rebuilds stores made with the old order).
 # ``points_pending`` is a plain append-only table without constraints, so
 # that committing a batch is cheap and emptying it is a one-step truncate.
 DDL = """
@@ -101,20 +109,20 @@ CREATE TABLE sources (
 );
 CREATE TABLE points (
     cell TEXT NOT NULL,
-    lat REAL NOT NULL,
-    lng REAL NOT NULL,
     source_id INTEGER NOT NULL REFERENCES sources(id),
     row INTEGER NOT NULL,
     part INTEGER NOT NULL DEFAULT 0,
+    lat REAL NOT NULL,
+    lng REAL NOT NULL,
     PRIMARY KEY (cell, source_id, row, part)
 ) WITHOUT ROWID;
 CREATE TABLE points_pending (
     cell TEXT NOT NULL,
-    lat REAL NOT NULL,
-    lng REAL NOT NULL,
     source_id INTEGER NOT NULL,
     row INTEGER NOT NULL,
-    part INTEGER NOT NULL DEFAULT 0
+    part INTEGER NOT NULL DEFAULT 0,
+    lat REAL NOT NULL,
+    lng REAL NOT NULL
 );
 CREATE VIEW all_points AS
     SELECT * FROM points UNION ALL SELECT * FROM points_pending;
@@ -287,51 +295,68 @@ def check_schema(conn: sqlite3.Connection, path: str | Path) -> bool:
     return True
 
 
-def infer_type(values: list, from_text: bool) -> str:
-    """Guess the SQL type of a new value column from a batch of raw values.
+def check_meta(conn: sqlite3.Connection, path: str | Path) -> None:
+    """Check the values of table ``meta`` a store relies on (e.g. ``level``).
 
-    Text input (CSV) is ``INTEGER`` if every non-empty value parses as an
-    integer, ``REAL`` if every one parses as a number, else ``TEXT``.  Other
-    input goes by the Python type.
-
-    Examples
-    --------
-    >>> infer_type(["1", "", "3"], from_text=True)
-    'INTEGER'
-    >>> infer_type([1.5, None, 2], from_text=False)
-    'REAL'
-    >>> infer_type(["a", "1"], from_text=True)
-    'TEXT'
+    Raises
+    ------
+    StorageError
+        Naming the file and the bad value, if ``meta`` was tampered with.
     """
-    kind = "INTEGER"
-    seen = False
-    for value in values:
-        if value is None or (from_text and isinstance(value, str) and not value.strip()):
-            continue
-        seen = True
-        if isinstance(value, bool):
-            continue
-        if hasattr(value, "item") and not isinstance(value, (str, bytes)):
-            value = value.item()  # numpy scalar
-        if isinstance(value, int):
-            continue
-        if isinstance(value, float):
-            kind = "REAL"
-            continue
-        if from_text and isinstance(value, str):
-            try:
-                int(value)
-                continue
-            except ValueError:
-                pass
-            try:
-                float(value)
-                kind = "REAL"
-                continue
-            except ValueError:
-                pass
-        return "TEXT"
-    return kind if seen else "TEXT"
+    from dggs.index.cellid import MAX_LEVEL
+
+    row = conn.execute("SELECT value FROM meta WHERE key = 'level'").fetchone()
+    if row is not None:
+        value = row[0]
+        if not (isinstance(value, str) and value.isdigit() and int(value) <= MAX_LEVEL):
+            raise StorageError(
+                f"{path} is damaged: meta.level is {value!r}, not a level 0..{MAX_LEVEL}; "
+                "restore the file from a backup or ingest into a new store"
+            )
+
+
+def upgrade_layout(conn: sqlite3.Connection) -> bool:
+    """Rebuild point tables made with the old column order (key columns later).
+
+    Stores written before the key-first layout fail ``PRAGMA
+    integrity_check`` on SQLite 3.40 (see the DDL); this copies their rows
+    into tables with the new order, in one transaction.  Returns True if it
+    did.
+    """
+    info = list(conn.execute("PRAGMA table_info(points)"))
+    if tuple(row[1] for row in info[:6]) != _OLD_ORDER:
+        return False
+    extra = [(row[1], row[2]) for row in info[6:]]
+    ddl = {name: text for name, text in _split_ddl().items() if name in POINT_TABLES}
+    cols = ", ".join(quote(c) for c in (*BASE_COLUMNS, *(n for n, _ in extra)))
+    conn.execute("BEGIN IMMEDIATE")
+    try:
+        conn.execute("DROP VIEW IF EXISTS all_points")
+        for table in POINT_TABLES:
+            conn.execute(f"ALTER TABLE {table} RENAME TO old_{table}")
+            conn.execute(ddl[table])
+            for name, kind in extra:
+                conn.execute(f"ALTER TABLE {table} ADD COLUMN {quote(name)} {kind}")
+            conn.execute(f"INSERT INTO {table} ({cols}) SELECT {cols} FROM old_{table}")
+            conn.execute(f"DROP TABLE old_{table}")
+        conn.execute(
+            "CREATE VIEW all_points AS SELECT * FROM points UNION ALL SELECT * FROM points_pending"
+        )
+        conn.execute("COMMIT")
+    except BaseException:
+        if conn.in_transaction:
+            conn.execute("ROLLBACK")
+        raise
+    return True
+
+
+def _split_ddl() -> dict[str, str]:
+    out = {}
+    for statement in DDL.split(";"):
+        words = statement.split()
+        if len(words) > 2 and words[1] == "TABLE":
+            out[words[2]] = statement.strip()
+    return out
 
 
 def column_types(conn: sqlite3.Connection) -> dict[str, str]:
@@ -345,8 +370,15 @@ def column_types(conn: sqlite3.Connection) -> dict[str, str]:
 
 def add_columns(conn: sqlite3.Connection, columns: Mapping[str, str]) -> None:
     """Add value columns to both point tables (inside the caller's transaction)."""
+    have = {name.lower(): name for name in column_types(conn)}
     for name, kind in columns.items():
         check_column_name(name)
+        if name.lower() in have:
+            raise DggsValueError(
+                f"value column {name!r} differs only in case from the stored column "
+                f"{have[name.lower()]!r} (SQLite column names ignore case); use {have[name.lower()]!r}"
+            )
+        have[name.lower()] = name
         for table in POINT_TABLES:
             conn.execute(f"ALTER TABLE {table} ADD COLUMN {quote(name)} {sql_type(kind)}")
     if columns:

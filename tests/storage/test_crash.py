@@ -33,12 +33,21 @@ WRITER = textwrap.dedent(
     from dggs.storage import CellStore
 
     db, csv_path, batch, merge_rows = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+    mode = sys.argv[5] if len(sys.argv) > 5 else "csv"
 
     def tick(n):
         print("batch", n, flush=True)
 
     with CellStore(db, merge_rows=merge_rows) as store:
-        store.ingest_csv(csv_path, values=["k", "x"], level=10, batch_size=batch, progress=tick)
+        if mode == "csv":
+            store.ingest_csv(csv_path, values=["k", "x"], level=10, batch_size=batch, progress=tick)
+        else:  # a named stream of dicts: resumable the same way
+            import csv
+            with open(csv_path, newline="") as fh:
+                rows = ({"lat": float(r["lat"]), "lng": float(r["lng"]), "k": int(r["k"]), "x": float(r["x"])}
+                        for r in csv.DictReader(fh))
+                store.ingest_records(rows, values=["k", "x"], level=10, batch_size=batch, source="stream",
+                                     progress=tick)
     print("done", flush=True)
     """
 )
@@ -57,11 +66,11 @@ def big_csv(tmp_path_factory):
     )
 
 
-def _start_writer(tmp_path, db, csv_path, merge_rows=7_000):
+def _start_writer(tmp_path, db, csv_path, merge_rows=7_000, mode="csv"):
     script = tmp_path / "writer.py"
     script.write_text(WRITER)
     return subprocess.Popen(
-        [sys.executable, str(script), str(db), str(csv_path), str(BATCH), str(merge_rows)],
+        [sys.executable, str(script), str(db), str(csv_path), str(BATCH), str(merge_rows), mode],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -85,12 +94,13 @@ def _check_whole(db) -> int:
     return stored
 
 
-def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv):
+@pytest.mark.parametrize("mode", ["csv", "records"])
+def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv, mode):
     db = tmp_path / "crash.db"
     rng = np.random.default_rng(5)
     kills = 0
     for attempt in range(4):
-        proc = _start_writer(tmp_path, db, big_csv)
+        proc = _start_writer(tmp_path, db, big_csv, mode=mode)
         wait_for = int(rng.integers(2, 12))
         seen = 0
         for line in proc.stdout:
@@ -105,6 +115,15 @@ def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv):
         proc.wait(timeout=60)
         _check_whole(db)
     assert kills >= 2
+    if mode == "records":  # finish with the same named stream
+        proc = _start_writer(tmp_path, db, big_csv, mode=mode)
+        proc.wait(timeout=120)
+        assert proc.returncode == 0, proc.stderr.read()
+        with CellStore(db) as store:
+            assert store.count() == N_ROWS
+            store.check()
+        assert _check_whole(db) == N_ROWS
+        return
     with CellStore(db) as store:
         result = store.ingest_csv(big_csv, values=["k", "x"], level=10, batch_size=BATCH)
         assert result.rows_resumed + result.rows_read == N_ROWS
@@ -113,6 +132,7 @@ def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv):
         assert ks == list(range(N_ROWS))
         assert store.info()["pending"] == 0
         assert store.sources()[0]["complete"]
+        store.check()
     assert _check_whole(db) == N_ROWS
 
 

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+import dggs
+
 from dggs.storage import CellStore
 from dggs.storage.cli import register
 
@@ -18,8 +20,18 @@ MODULES = [
     "dggs.storage.schema",
     "dggs.storage.errors",
     "dggs.storage.readers",
+    "dggs.storage.readers_geojson",
+    "dggs.storage.readers_arrays",
+    "dggs.storage.producer",
     "dggs.storage.ingest",
     "dggs.storage.store",
+    "dggs.storage.store_ingest",
+    "dggs.storage.connection",
+    "dggs.storage.sources",
+    "dggs.storage.inputs",
+    "dggs.storage.convert",
+    "dggs.storage.queries",
+    "dggs.storage.atomic",
     "dggs.storage.cli",
     "dggs.storage.demo",
     "dggs.storage.plot",
@@ -29,7 +41,11 @@ MODULES = [
 @pytest.mark.parametrize("name", MODULES)
 def test_doctests(name):
     module = importlib.import_module(name)
-    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    result = doctest.testmod(
+        module,
+        extraglobs={"CellStore": CellStore, "dggs": dggs},
+        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE,
+    )
     assert result.failed == 0
 
 
@@ -52,3 +68,54 @@ def test_every_command_documented():
     for name, command in group.commands.items():
         assert f"dggs {name}" in text, name
         assert command.help and len(command.help) > 40
+
+
+DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
+
+
+def _blocks(text: str) -> list[tuple[str, str]]:
+    """Fenced code blocks of a Markdown text as (language, code), in order."""
+    blocks, lang, lines = [], None, []
+    for line in text.splitlines():
+        if line.startswith("```"):
+            if lang is None:
+                lang, lines = line[3:].strip(), []
+            else:
+                blocks.append((lang, "\n".join(lines)))
+                lang = None
+        elif lang is not None:
+            lines.append(line)
+    assert lang is None, "unclosed code block"
+    return blocks
+
+
+def test_every_code_block_in_the_docs_runs_as_written(tmp_path):
+    import os
+    import re
+    import shutil
+    import subprocess
+    import sys
+
+    for sample in DATA.iterdir():
+        shutil.copy(sample, tmp_path / sample.name)
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"}
+    blocks = _blocks(DOC.read_text())
+    assert {lang for lang, _ in blocks} <= {"python", "console"}, "every block must be runnable"
+    ran = 0
+    for i, (lang, code) in enumerate(blocks):
+        if lang == "python":
+            script = tmp_path / f"block{i}.py"
+            script.write_text(code)
+            proc = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, env=env)
+            assert proc.returncode == 0, f"block {i}:\n{code}\n{proc.stderr}"
+            ran += 1
+            continue
+        for line in code.splitlines():
+            assert line.startswith("$ "), line
+            command = line[2:]
+            expect = re.search(r"# exit (\d+)", command)
+            proc = subprocess.run(command, shell=True, cwd=tmp_path, capture_output=True, text=True, env=env)
+            assert proc.returncode == (int(expect.group(1)) if expect else 0), f"{command}\n{proc.stdout}{proc.stderr}"
+            assert "Traceback" not in proc.stderr
+            ran += 1
+    assert ran >= 10

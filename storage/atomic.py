@@ -1,0 +1,84 @@
+"""Write files whole or not at all.
+
+Every file the storage layer writes (``dggs export``'s GeoJSON, ``dggs
+plot``'s PNG, the demo's outputs) goes through :func:`atomic_write`: the
+content is written to a temporary file in the same folder, flushed to disk,
+and renamed over the target with :func:`os.replace`.  A full disk, a crash
+or an error half-way leaves the old file (or none), never a truncated one.
+
+Examples
+--------
+>>> import os, tempfile
+>>> path = os.path.join(tempfile.mkdtemp(), "out.txt")
+>>> with atomic_write(path) as fh:
+...     _ = fh.write("whole")
+>>> open(path).read()
+'whole'
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+from typing import IO, Any
+
+from dggs.errors import StorageError
+
+__all__ = ["atomic_write", "atomic_path"]
+
+
+@contextlib.contextmanager
+def atomic_path(path: str | os.PathLike[str], suffix: str = "") -> Iterator[str]:
+    """Yield a temporary path next to ``path``; rename it over ``path`` on success.
+
+    For writers that want a file name (e.g. ``matplotlib.savefig``).
+
+    Raises
+    ------
+    StorageError
+        Naming ``path``, if the file cannot be written (disk full, no
+        permission...); the target is then untouched and no temporary file
+        is left behind.
+    """
+    target = Path(path)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix + ".tmp", dir=target.parent or ".")
+        os.close(fd)
+    except OSError as exc:
+        raise StorageError(f"cannot write {path}: {exc.strerror or exc}") from exc
+    try:
+        yield tmp
+        with open(tmp, "rb+") as fh:
+            os.fsync(fh.fileno())
+        os.replace(tmp, target)
+    except OSError as exc:
+        raise StorageError(
+            f"cannot write {path}: {exc.strerror or exc}; nothing was written "
+            "(an existing file is unchanged): free space or choose another place"
+        ) from exc
+    finally:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+
+
+@contextlib.contextmanager
+def atomic_write(path: str | os.PathLike[str], mode: str = "w", encoding: str | None = "utf-8") -> Iterator[IO[Any]]:
+    """Open a temporary file for writing; it replaces ``path`` only when complete.
+
+    ``mode`` is ``"w"`` (text, ``encoding``) or ``"wb"``.
+
+    Raises
+    ------
+    StorageError
+        As :func:`atomic_path`.
+    """
+    with atomic_path(path) as tmp:
+        try:
+            fh = open(tmp, mode, encoding=None if "b" in mode else encoding)  # noqa: SIM115
+        except OSError as exc:
+            raise StorageError(f"cannot write {path}: {exc.strerror or exc}") from exc
+        with fh:
+            yield fh

@@ -1,0 +1,326 @@
+"""The store's SQLite connection: opening, transactions, metadata, errors.
+
+:class:`Connection` opens (or creates) a store file, checks that it is a
+cell store, and runs transactions.  :func:`translate` turns the errors SQLite
+and the operating system raise (a corrupt file, a full disk, a lock held too
+long, read-only media) into a :class:`dggs.StorageError` naming the file and
+what to do; :func:`guarded` applies it to a function.
+
+Read-only media: a WAL-mode database needs its ``-shm`` file, which SQLite
+cannot create in a folder it may not write.  ``readonly=True`` then opens the
+file with ``?mode=ro&immutable=1`` (nothing can change it anyway), unless a
+non-empty ``-wal`` file is there: its rows would be invisible, so that is a
+:class:`StorageError` instead of a wrong answer.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import os
+import sqlite3
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any, TypeVar
+
+import dggs
+from dggs.errors import DggsError, LevelError, LevelMismatchError, StorageError
+
+from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
+
+__all__ = ["Connection", "translate", "guarded", "DEFAULT_LEVEL"]
+
+#: Level used by a new store when none is given.
+DEFAULT_LEVEL = 12
+
+_SQLITE_MAGIC = b"SQLite format 3\x00"
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def _dggs_version() -> str:
+    try:
+        from importlib.metadata import version
+
+        return version("dggs")
+    except Exception:  # noqa: BLE001 - not installed: fall back to the module
+        return str(getattr(dggs, "__version__", "unknown"))
+
+
+def translate(exc: BaseException, path: str, timeout: float | None = None) -> DggsError:
+    """Return the :class:`StorageError` (or :class:`DggsValueError`) for a raw error.
+
+    Examples
+    --------
+    >>> print(translate(sqlite3.OperationalError("database or disk is full"), "a.db"))
+    a.db: the disk is full; free space and run the same command again (an ingest resumes where it stopped)
+    """
+    if isinstance(exc, DggsError):
+        return exc
+    text = str(exc)
+    low = text.lower()
+    if isinstance(exc, (sqlite3.Error, OSError)):
+        if "full" in low or getattr(exc, "errno", None) == 28:
+            return StorageError(
+                f"{path}: the disk is full; free space and run the same command again "
+                "(an ingest resumes where it stopped)"
+            )
+        if "locked" in low or "busy" in low:
+            waited = f" (waited {timeout:g} s)" if timeout is not None else ""
+            return StorageError(
+                f"{path} is locked by another process{waited}; try again when it has "
+                "finished, or pass a longer timeout"
+            )
+        if "readonly" in low or "read-only" in low:
+            return StorageError(f"{path} is on read-only media or not writable; open it with readonly=True")
+        if "malformed" in low or "not a database" in low or "corrupt" in low:
+            return StorageError(
+                f"{path} is corrupt ({text}); restore it from a backup, "
+                "or ingest the inputs again into a new store"
+            )
+        if isinstance(exc, sqlite3.Error):
+            return StorageError(f"{path}: SQLite error: {text}")
+        if isinstance(exc, OSError) and exc.filename is not None:
+            return StorageError(f"cannot use {exc.filename}: {exc.strerror or text}")
+        return StorageError(f"{path}: {exc.strerror or text}" if isinstance(exc, OSError) else text)
+    if isinstance(exc, UnicodeDecodeError):  # text in the file that is not UTF-8: damaged
+        return StorageError(
+            f"{path} is corrupt (stored text is not UTF-8: {exc.reason}); restore it from a backup, "
+            "or ingest the inputs again into a new store"
+        )
+    if isinstance(exc, RecursionError):
+        return StorageError(f"{path}: input nested too deeply to process")
+    return StorageError(f"{path}: {type(exc).__name__}: {text}")
+
+
+def guarded(method: F) -> F:
+    """Decorate a method of an object with ``path`` (and ``timeout``): raw errors become StorageError."""
+
+    @functools.wraps(method)
+    def wrapper(self: Any, *args: Any, **kwargs: Any) -> Any:
+        try:
+            return method(self, *args, **kwargs)
+        except (sqlite3.Error, OSError, RecursionError, UnicodeDecodeError) as exc:
+            raise translate(exc, getattr(self, "path", "?"), getattr(self, "timeout", None)) from exc
+
+    return wrapper  # type: ignore[return-value]
+
+
+def _writable(path: Path) -> bool:
+    folder = path.parent if str(path.parent) else Path(".")
+    return os.access(folder, os.W_OK) and (not path.exists() or os.access(path, os.W_OK))
+
+
+def _connect(path: str, readonly: bool, timeout: float) -> sqlite3.Connection:
+    """Open the SQLite connection (read-only media: immutable, see the module doc)."""
+    if path == ":memory:" or not readonly:
+        return sqlite3.connect(path, isolation_level=None, timeout=timeout)
+    file = Path(path).resolve()
+    uri = file.as_uri() + "?mode=ro"
+    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
+    try:
+        conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
+        return conn
+    except sqlite3.OperationalError:
+        conn.close()
+        if _writable(file):
+            raise
+    except BaseException:
+        conn.close()
+        raise
+    return connect_immutable(file, timeout)
+
+
+def connect_immutable(file: Path, timeout: float = 30.0) -> sqlite3.Connection:
+    """Open a store on read-only media with ``?mode=ro&immutable=1``.
+
+    Raises
+    ------
+    StorageError
+        If a non-empty ``-wal`` file holds committed rows that an immutable
+        reader would not see.
+    """
+    wal = Path(str(file) + "-wal")
+    if wal.exists() and wal.stat().st_size > 0:
+        raise StorageError(
+            f"{file} is on read-only media with an unmerged write-ahead log ({wal.name}); "
+            "its latest rows cannot be read there: copy the store and its -wal file to a writable folder"
+        )
+    uri = file.as_uri() + "?mode=ro&immutable=1"
+    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
+
+
+class Connection:
+    """An open cell store file: the connection, its transactions and metadata."""
+
+    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float) -> None:
+        self.path, self.readonly, self.timeout = path, readonly, timeout
+        if path != ":memory:":
+            file = Path(path)
+            if file.is_dir():
+                raise StorageError(f"{path} is a directory, not a cell store file")
+            if not file.exists() and (readonly or not create):
+                raise StorageError(f"no cell store at {path}")
+            try:
+                if file.exists() and file.stat().st_size > 0:
+                    with open(file, "rb") as fh:
+                        if fh.read(16) != _SQLITE_MAGIC:
+                            raise StorageError(f"{path} is not a SQLite database")
+            except OSError as exc:
+                raise translate(exc, path) from exc
+        try:
+            self.conn = _connect(path, readonly, timeout)
+        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:
+            raise translate(exc, path, timeout) from exc
+        except sqlite3.Error as exc:
+            raise StorageError(f"cannot open {path}: {exc}") from exc
+        try:
+            self._setup()
+        except (sqlite3.Error, OSError, UnicodeDecodeError) as exc:
+            self.conn.close()
+            raise translate(exc, path, timeout) from exc
+        except BaseException:
+            self.conn.close()
+            raise
+        self._db: Any = None
+
+    @property
+    def db(self) -> Any:
+        """A :class:`sqlite_utils.Database` on the connection (imported on first use: it loads pandas)."""
+        if self._db is None:
+            import sqlite_utils
+
+            self._db = sqlite_utils.Database(self.conn)
+        return self._db
+
+    def query(self, sql: str, params: Any = ()) -> Iterator[dict[str, Any]]:
+        """Run ``sql`` and yield its rows as dicts."""
+        cursor = self.conn.execute(sql, params)
+        names = [d[0] for d in cursor.description]
+        for row in cursor:
+            yield dict(zip(names, row))
+
+    def _setup(self) -> None:
+        conn = self.conn
+        conn.execute("PRAGMA foreign_keys = ON")
+        if not self.readonly:
+            conn.execute("PRAGMA journal_mode = WAL")
+            conn.execute("PRAGMA synchronous = NORMAL")
+        conn.execute("PRAGMA cache_size = -65536")
+        conn.execute("PRAGMA temp_store = MEMORY")
+        conn.execute("PRAGMA threads = 2")  # helper thread for the merge's sort
+        if not self.readonly:
+            # Fewer, larger checkpoints: ingest writes tens of MB per merge.
+            conn.execute("PRAGMA wal_autocheckpoint = 16384")
+        if not check_schema(conn, self.path):
+            if self.readonly:
+                raise StorageError(f"{self.path} is an empty database, not a cell store")
+            create_schema(conn, _dggs_version())
+            check_schema(conn, self.path)  # whoever created it, it must be ours
+        elif not self.readonly:
+            upgrade_layout(conn)
+        check_meta(conn, self.path)
+
+    def close(self) -> None:
+        self.conn.close()
+
+    @contextlib.contextmanager
+    def transaction(self) -> Iterator[None]:
+        """``BEGIN IMMEDIATE`` ... ``COMMIT``; roll back on any error (even a failed commit)."""
+        conn = self.conn
+        conn.execute("BEGIN IMMEDIATE")
+        try:
+            yield
+            conn.execute("COMMIT")
+        except BaseException:
+            if conn.in_transaction:
+                with contextlib.suppress(sqlite3.Error):
+                    conn.execute("ROLLBACK")
+            raise
+
+    @contextlib.contextmanager
+    def snapshot(self) -> Iterator[str]:
+        """Read in one snapshot; yield the table to read from.
+
+        That is ``points`` alone when nothing is pending (the common case,
+        and a plain clustered scan), else the ``all_points`` view.
+        """
+        own = not self.conn.in_transaction
+        if own:
+            self.conn.execute("BEGIN")
+        try:
+            pending = self.conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone()
+            yield "all_points" if pending else "points"
+        finally:
+            if own and self.conn.in_transaction:
+                self.conn.execute("COMMIT")
+
+    # -- metadata -----------------------------------------------------------
+
+    @property
+    def meta(self) -> dict[str, str]:
+        return dict(self.conn.execute("SELECT key, value FROM meta"))
+
+    @property
+    def level(self) -> int | None:
+        row = self.conn.execute("SELECT value FROM meta WHERE key = 'level'").fetchone()
+        if row is None:
+            return None
+        if not (isinstance(row[0], str) and row[0].isdigit() and int(row[0]) <= dggs.MAX_LEVEL):
+            check_meta(self.conn, self.path)  # raises, naming the value
+        return int(row[0])
+
+    @property
+    def columns(self) -> dict[str, str]:
+        return column_types(self.conn)
+
+    def touch(self) -> None:
+        self.conn.execute("UPDATE meta SET value = ? WHERE key = 'updated'", (now(),))
+
+    def set_level(self, level: int) -> None:
+        self.conn.execute("INSERT OR IGNORE INTO meta (key, value) VALUES ('level', ?)", (str(level),))
+
+    def check_level_for_ingest(self, level: int) -> None:
+        if isinstance(level, bool) or not isinstance(level, int) or not 0 <= level <= dggs.MAX_LEVEL:
+            raise LevelError(f"level {level!r} is out of range 0..{dggs.MAX_LEVEL}")
+        stored = self.level
+        if stored is not None and stored != level:
+            raise LevelMismatchError(
+                f"{self.path} stores cells at level {stored}; cannot ingest at level {level} "
+                f"(use level={stored} or another store)"
+            )
+
+    def resolve_level(self, level: int | None) -> int:
+        if level is not None:
+            return level
+        stored = self.level
+        return DEFAULT_LEVEL if stored is None else stored
+
+    def pending_count(self) -> int:
+        return int(self.conn.execute("SELECT count(*) FROM points_pending").fetchone()[0])
+
+    def merge_pending(self) -> None:
+        """Move pending rows into ``points`` (inside the caller's transaction)."""
+        from .schema import BASE_COLUMNS, quote
+
+        cols = ", ".join(quote(c) for c in (*BASE_COLUMNS, *self.columns))
+        try:
+            self.conn.execute(
+                f"INSERT INTO points ({cols}) SELECT {cols} FROM points_pending "
+                "ORDER BY cell, source_id, row, part"
+            )
+        except sqlite3.IntegrityError as exc:  # pragma: no cover - would be a bug
+            raise StorageError(f"{self.path}: a row would be stored twice ({exc})") from exc
+        self.conn.execute("DELETE FROM points_pending")
+
+    def check(self) -> None:
+        """Run ``PRAGMA integrity_check``; raise StorageError unless it says ok."""
+        try:
+            problems = [row[0] for row in self.conn.execute("PRAGMA integrity_check(20)")]
+        except sqlite3.Error as exc:
+            raise translate(exc, self.path, self.timeout) from exc
+        if problems != ["ok"]:
+            raise StorageError(
+                f"{self.path} is corrupt ({'; '.join(problems[:3])}); restore it from a backup, "
+                "or ingest the inputs again into a new store"
+            )

@@ -1,0 +1,254 @@
+"""The five ways in: CSV, GeoJSON, records, arrays, DataFrame.
+
+Each function checks everything it can about its input (columns, shapes,
+encoding, options) *before* the source is registered in the store, then
+hands batches to :func:`dggs.storage.ingest.run_ingest`.
+"""
+
+from __future__ import annotations
+
+import codecs
+import os
+import uuid
+from collections.abc import Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from dggs.errors import DggsValueError, StorageError
+
+from . import readers, readers_arrays, readers_geojson
+from .connection import Connection
+from .ingest import IngestOptions, IngestResult, run_ingest
+from .schema import BASE_COLUMNS, check_column_name
+from .sources import file_info, find_earlier_version
+
+__all__ = ["ingest_csv", "ingest_geojson", "ingest_records", "ingest_points", "ingest_dataframe"]
+
+Values = Sequence[str] | Mapping[str, Any] | None
+
+
+def dtype_type(column: Any) -> str | None:
+    """Return the SQL type implied by an array's dtype, or None (object arrays, lists)."""
+    kind = getattr(column, "dtype", None)
+    kind = kind.kind if kind is not None else None
+    return {"i": "INTEGER", "u": "INTEGER", "b": "INTEGER", "f": "REAL", "U": "TEXT", "S": "TEXT"}.get(kind or "")
+
+
+def value_spec(values: Values) -> tuple[list[str], dict[str, Any]]:
+    """Split ``values`` into names (validated, distinct ignoring case) and declared types."""
+    if values is None:
+        return [], {}
+    if isinstance(values, str):
+        values = [values]
+    names = [check_column_name(n) for n in values]
+    seen: dict[str, str] = {}
+    for n in names:
+        if n.lower() in seen:
+            raise DggsValueError(
+                f"value columns {seen[n.lower()]!r} and {n!r} are the same column to SQLite "
+                "(names ignore case); keep one"
+            )
+        seen[n.lower()] = n
+    declared = {k: v for k, v in values.items() if v is not None} if isinstance(values, Mapping) else {}
+    return names, declared  # a None type in a dict: guess it, as for a list
+
+
+def _source_file(path: str | os.PathLike[str]) -> Path:
+    file = Path(path)
+    if not file.is_file():
+        raise StorageError(f"no such file: {path}")
+    return file
+
+
+def _identity(store: Connection, kind: str, file: Path, name: str, replace: bool) -> dict[str, Any]:
+    info = file_info(file)
+    return find_earlier_version(store, kind, name, file, info, replace)
+
+
+def ingest_csv(
+    store: Connection,
+    path: str | os.PathLike[str],
+    lat: str,
+    lng: str,
+    values: Values,
+    level: int | None,
+    options: IngestOptions,
+    *,
+    delimiter: str = ",",
+    encoding: str = "utf-8",
+    merge_rows: int,
+) -> IngestResult:
+    file = _source_file(path)
+    try:
+        codecs.lookup(encoding)
+    except (LookupError, TypeError):
+        raise DggsValueError(f"unknown text encoding {encoding!r} (e.g. utf-8, latin-1, cp1252)") from None
+    if not isinstance(delimiter, str) or len(delimiter) != 1 or delimiter in '"\r\n':
+        raise DggsValueError(f"delimiter must be one character (not a quote or newline), not {delimiter!r}")
+    level = store.resolve_level(level)
+    names, declared = value_spec(values)
+    header = readers.csv_header(file, delimiter, encoding)
+    readers.check_columns(file, header, [lat, lng, *names])  # before the source is registered
+    info = _identity(store, "csv", file, str(path), options.replace)
+    batch_size = options.batch_size
+    return run_ingest(
+        store,
+        key=f"file:{info['sha256']}",
+        kind="csv",
+        name=str(path),
+        params={"format": "csv", "lat": lat, "lng": lng, "values": names, "delimiter": delimiter},
+        batches=lambda skip, types: readers.csv_batches(
+            file, lat, lng, names, batch_size, skip, delimiter, types, encoding
+        ),
+        level=level,
+        declared=declared,
+        options=options,
+        merge_rows=merge_rows,
+        file_info=info,
+    )
+
+
+def ingest_geojson(
+    store: Connection,
+    path: str | os.PathLike[str],
+    values: Values,
+    level: int | None,
+    options: IngestOptions,
+    *,
+    merge_rows: int,
+) -> IngestResult:
+    file = _source_file(path)
+    if options.crs is not None:
+        raise DggsValueError("GeoJSON is WGS84 lng/lat by definition (RFC 7946): crs cannot be set")
+    level = store.resolve_level(level)
+    features = readers_geojson.load_geojson(file)
+    batch_size = options.batch_size
+    if values is None:
+        seen: dict[str, str] = {}
+        for feature in features[:batch_size]:
+            props = feature.get("properties") if isinstance(feature, dict) else None
+            for key in props if isinstance(props, dict) else ():
+                if isinstance(key, str) and key.lower() not in BASE_COLUMNS:
+                    if key.lower() in seen and seen[key.lower()] != key:
+                        raise DggsValueError(
+                            f"{path}: properties {seen[key.lower()]!r} and {key!r} differ only in case "
+                            "(SQLite column names ignore case); pass values= to choose"
+                        )
+                    seen.setdefault(key.lower(), key)
+        values = list(seen.values())
+    names, declared = value_spec(values)
+    info = _identity(store, "geojson", file, str(path), options.replace)
+    return run_ingest(
+        store,
+        key=f"file:{info['sha256']}",
+        kind="geojson",
+        name=str(path),
+        params={"format": "geojson", "values": names},
+        batches=lambda skip, types: readers_geojson.geojson_batches(features, names, level, batch_size, skip),
+        level=level,
+        declared=declared,
+        options=options,
+        merge_rows=merge_rows,
+        file_info=info,
+    )
+
+
+def ingest_records(
+    store: Connection,
+    records: Iterable[Mapping[str, Any]],
+    lat: str,
+    lng: str,
+    values: Values,
+    level: int | None,
+    options: IngestOptions,
+    *,
+    merge_rows: int,
+) -> IngestResult:
+    if isinstance(records, (str, bytes, Mapping)):
+        raise DggsValueError(f"records must be an iterable of dicts, not {type(records).__name__}")
+    level = store.resolve_level(level)
+    names, declared = value_spec(values)
+    source, batch_size = options.source, options.batch_size
+    return run_ingest(
+        store,
+        key=f"records:{source}" if source is not None else f"records:{uuid.uuid4().hex}",
+        kind="records",
+        name=source if source is not None else "<records>",
+        params={"format": "records", "lat": lat, "lng": lng, "values": names},
+        batches=lambda skip, types: readers_arrays.records_batches(records, lat, lng, names, batch_size, skip),
+        threaded=False,  # the iterable may belong to this thread (a sqlite3 cursor...)
+        level=level,
+        declared=declared,
+        options=options,
+        merge_rows=merge_rows,
+    )
+
+
+def ingest_points(
+    store: Connection,
+    lat: Any,
+    lng: Any,
+    level: int | None,
+    values: Mapping[str, Any] | None,
+    types: Mapping[str, Any] | None,
+    options: IngestOptions,
+    *,
+    merge_rows: int,
+) -> IngestResult:
+    level = store.resolve_level(level)
+    values = dict(values or {})
+    value_spec(list(values))
+    lat_a, lng_a, cols = readers_arrays.check_arrays(lat, lng, values)  # shapes, before registering
+    declared: dict[str, Any] = {}
+    for name, col in cols.items():
+        implied = dtype_type(col)
+        if implied is not None:
+            declared[name] = implied
+    declared.update(types or {})
+    source, batch_size = options.source, options.batch_size
+    return run_ingest(
+        store,
+        key=f"arrays:{source}" if source is not None else f"arrays:{uuid.uuid4().hex}",
+        kind="arrays",
+        name=source if source is not None else "<arrays>",
+        params={"format": "arrays", "values": list(values)},
+        batches=lambda skip, types: readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip),
+        level=level,
+        declared=declared,
+        options=options,
+        merge_rows=merge_rows,
+    )
+
+
+def ingest_dataframe(
+    store: Connection,
+    df: Any,
+    lat: str,
+    lng: str,
+    values: Values,
+    level: int | None,
+    types: Mapping[str, Any] | None,
+    options: IngestOptions,
+    *,
+    merge_rows: int,
+) -> IngestResult:
+    missing = [c for c in (lat, lng) if c not in df.columns]
+    if missing:
+        raise DggsValueError(
+            f"DataFrame has no column(s) {', '.join(map(repr, missing))}; "
+            f"its columns are {', '.join(map(repr, map(str, df.columns)))}"
+        )
+    if values is None:
+        values = [str(c) for c in df.columns if c not in (lat, lng)]
+    names, declared = value_spec(values)
+    declared = {**declared, **dict(types or {})}
+    return ingest_points(
+        store,
+        df[lat].to_numpy(),
+        df[lng].to_numpy(),
+        level,
+        {name: df[name].to_numpy() for name in names},
+        declared,
+        options,
+        merge_rows=merge_rows,
+    )

@@ -1,0 +1,94 @@
+"""Read and prepare batches in a background thread while SQLite writes."""
+
+from __future__ import annotations
+
+import queue
+import threading
+from collections.abc import Iterator, Mapping
+from typing import Any
+
+from .convert import Prepared, prepare, value_types
+from .readers import RawBatch
+
+__all__ = ["Producer", "READ_AHEAD"]
+
+#: Batches the reader thread may prepare ahead of the writer.
+READ_AHEAD = 8
+
+
+class Producer:
+    """Read and prepare batches in a background thread, a few ahead.
+
+    Parsing, checking and binning (Python and numpy) overlap with SQLite
+    writing, which releases the GIL.  Only the calling thread touches the
+    database; errors in the thread are re-raised in the caller.  With
+    ``threaded=False`` the batches are prepared in the caller's thread.
+    """
+
+    _DONE = object()
+
+    def __init__(
+        self,
+        batches: Iterator[RawBatch],
+        level: int,
+        existing: dict[str, str],
+        declared: Mapping[str, str],
+        transformer: Any,
+        threaded: bool = True,
+        name: str = "input",
+    ) -> None:
+        self._name = name
+        self._batches = batches
+        self._threaded = threaded
+        self._args = (level, transformer)
+        self._types = existing  # the same dict the reader sees
+        self._declared = declared
+        self._queue: queue.Queue = queue.Queue(maxsize=READ_AHEAD)
+        self._stopped = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="dggs-ingest-reader", daemon=True)
+        if threaded:
+            self._thread.start()
+
+    def _put(self, item: Any) -> bool:
+        while not self._stopped.is_set():
+            try:
+                self._queue.put(item, timeout=0.1)
+                return True
+            except queue.Full:
+                continue
+        return False
+
+    def _prepared(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
+        level, transformer = self._args
+        for batch in self._batches:
+            new = value_types(batch, self._types, self._declared)
+            self._types.update(new)
+            types = {name: self._types[name] for name in batch.values}
+            yield batch, prepare(batch, level, types, transformer), types, new
+
+    def _run(self) -> None:
+        try:
+            for item in self._prepared():
+                if not self._put(item):
+                    return
+            self._put(self._DONE)
+        except BaseException as exc:  # noqa: BLE001 - handed to the caller
+            self._put(exc)
+
+    def __iter__(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
+        if not self._threaded:
+            yield from self._prepared()
+            return
+        while True:
+            item = self._queue.get()
+            if item is self._DONE:
+                return
+            if isinstance(item, BaseException):
+                raise item
+            yield item
+
+    def stop(self) -> None:
+        """Ask the thread to finish and wait for it."""
+        self._stopped.set()
+        if self._threaded:
+            self._thread.join(timeout=10)

@@ -1,0 +1,132 @@
+"""Read iterables of dicts and equal-length arrays as batches.
+
+Lengths and shapes are checked up front (:func:`check_arrays`), before an
+ingest registers its source.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from functools import partial
+from typing import Any
+
+import numpy as np
+
+from dggs.errors import DggsValueError
+
+from .readers import RawBatch, _skip
+
+__all__ = ["records_batches", "array_batches", "check_arrays"]
+
+
+def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict:
+    return dict(items[i])
+
+
+def records_batches(
+    records: Iterable[Mapping[str, Any]],
+    lat: str,
+    lng: str,
+    values: Sequence[str],
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Stream an iterable of mappings (dicts, sqlite rows...) as batches."""
+    iterator = iter(records)
+    _skip(iterator, skip)
+    done = skip
+    while True:
+        chunk = list(itertools.islice(iterator, batch_size))
+        if not chunk:
+            return
+        bad: dict[int, tuple[str | None, Any, str]] = {}
+        for i, item in enumerate(chunk):
+            if isinstance(item, Mapping):
+                continue
+            if hasattr(item, "keys"):  # sqlite3.Row and other dict-likes
+                try:
+                    chunk[i] = {key: item[key] for key in item.keys()}
+                    continue
+                except (TypeError, KeyError, IndexError):
+                    pass
+            bad[i] = (None, item, "is not a mapping (dict)")
+            chunk[i] = {}
+        yield RawBatch(
+            consumed=len(chunk),
+            rows=range(done + 1, done + len(chunk) + 1),
+            lines=None,
+            lat=[item.get(lat) for item in chunk],
+            lng=[item.get(lng) for item in chunk],
+            values={name: [item.get(name) for item in chunk] for name in values},
+            text=False,
+            record=partial(_dict_at, chunk),
+            bad=bad,
+        )
+        done += len(chunk)
+
+
+def check_arrays(lat: Any, lng: Any, values: Mapping[str, Any]) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+    """Return lat, lng and value columns as 1-d arrays of one length.
+
+    Raises
+    ------
+    DggsValueError
+        Naming the column, if one is not 1-d (a scalar counts as one value)
+        or differs in length from ``lat``.
+    """
+    out = {}
+    for name, col in {"lat": lat, "lng": lng, **values}.items():
+        try:
+            arr = np.asarray(col)
+        except ValueError as exc:  # ragged nested lists
+            raise DggsValueError(f"column {name!r} is not a flat sequence of values ({exc})") from None
+        if arr.ndim > 1:
+            raise DggsValueError(
+                f"column {name!r} has shape {arr.shape}: give one value per point (a 1-d array)"
+            )
+        out[name] = arr.reshape(-1)
+    n = len(out["lat"])
+    for name, arr in out.items():
+        if len(arr) != n:
+            raise DggsValueError(f"column {name!r} has {len(arr)} values but lat has {n}")
+    lat_a, lng_a = out.pop("lat"), out.pop("lng")
+    return lat_a, lng_a, out
+
+
+def array_batches(
+    lat: Any,
+    lng: Any,
+    values: Mapping[str, Any],
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Slice equal-length arrays (numpy, lists, pandas columns) into batches.
+
+    Raises
+    ------
+    DggsValueError
+        If the arrays differ in length.
+    """
+    lat_a, lng_a, cols = check_arrays(lat, lng, values)
+    n = len(lat_a)
+    for start in range(skip, n, batch_size):
+        stop = min(start + batch_size, n)
+        sl = slice(start, stop)
+        batch_cols = {name: col[sl] for name, col in cols.items()}
+        batch_lat, batch_lng = lat_a[sl], lng_a[sl]
+
+        def record(i: int, _lat=batch_lat, _lng=batch_lng, _cols=batch_cols) -> dict:
+            out = {"lat": _lat[i], "lng": _lng[i], **{k: v[i] for k, v in _cols.items()}}
+            return {k: (v.item() if hasattr(v, "item") else v) for k, v in out.items()}
+
+        yield RawBatch(
+            consumed=stop - start,
+            rows=range(start + 1, stop + 1),
+            lines=None,
+            lat=batch_lat,
+            lng=batch_lng,
+            values=batch_cols,
+            text=False,
+            record=record,
+        )

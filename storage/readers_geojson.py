@@ -1,0 +1,138 @@
+"""Read GeoJSON: points as they are, polygons as the cells they cover.
+
+A file is loaded whole (GeoJSON is one JSON document), then cut into
+:class:`~dggs.storage.readers.RawBatch` es of features.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterator, Sequence
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import dggs
+from dggs.errors import DggsValueError
+
+from .readers import RawBatch
+
+__all__ = ["load_geojson", "geojson_batches"]
+
+
+def _feature_at(props: Sequence[dict], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict:
+    return {"lat": lat[i], "lng": lng[i], **props[i]}
+
+
+def load_geojson(path: str | Path) -> list[dict]:
+    """Read the features of a GeoJSON file (FeatureCollection, Feature or geometry).
+
+    Raises
+    ------
+    DggsValueError
+        If the file is not GeoJSON.
+    """
+    try:
+        with open(path, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise DggsValueError(f"{path} is not valid JSON: {exc}") from exc
+    except RecursionError:
+        raise DggsValueError(f"{path} is nested too deeply to read as GeoJSON") from None
+    kind = data.get("type") if isinstance(data, dict) else None
+    if kind == "FeatureCollection" and isinstance(data.get("features"), list):
+        return data["features"]
+    if kind == "Feature":
+        return [data]
+    if isinstance(kind, str) and "coordinates" in data:
+        return [{"type": "Feature", "geometry": data, "properties": {}}]
+    raise DggsValueError(f"{path} is not GeoJSON (no FeatureCollection, Feature or geometry)")
+
+
+def geojson_batches(
+    features: Sequence[Any],
+    values: Sequence[str],
+    level: int,
+    batch_size: int,
+    skip: int = 0,
+) -> Iterator[RawBatch]:
+    """Cut GeoJSON features into batches: points as they are, polygons as cells.
+
+    A ``Polygon``/``MultiPolygon`` feature becomes one entry per cell at
+    ``level`` whose centre lies inside it (:func:`dggs.polygon_to_cells`),
+    each with the feature's properties and the cell centre as coordinates.
+    A ``MultiPoint`` gives one entry per point.
+    """
+    from shapely.geometry import shape
+
+    for start in range(skip, len(features), batch_size):
+        chunk = features[start : start + batch_size]
+        rows: list[int] = []
+        lat: list[Any] = []
+        lng: list[Any] = []
+        cells: list[str] = []
+        props: list[dict] = []
+        parts: list[int] = []
+        bad: dict[int, tuple[str | None, Any, str]] = {}
+
+        def add(row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0) -> None:
+            rows.append(row)
+            parts.append(part)
+            lat.append(y)
+            lng.append(x)
+            cells.append(cell)
+            props.append(prop)
+
+        for offset, feature in enumerate(chunk):
+            row = start + offset + 1
+            geometry: Any = feature.get("geometry") if isinstance(feature, dict) else None
+            prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
+            if not isinstance(prop, dict):
+                bad[len(rows)] = (None, prop, "feature properties are not a JSON object")
+                add(row, None, None, "", {})
+                continue
+            kind = geometry.get("type") if isinstance(geometry, dict) else None
+            coords: Any = geometry.get("coordinates") if isinstance(geometry, dict) else None
+            try:
+                if kind == "Point":
+                    add(row, coords[1], coords[0], "", prop)
+                    continue
+                if kind == "MultiPoint":
+                    for part, (x, y, *_) in enumerate(coords):
+                        add(row, y, x, "", prop, part)
+                    continue
+                if kind in ("Polygon", "MultiPolygon"):
+                    found = dggs.polygon_to_cells(shape(geometry), level)
+                    if len(found):
+                        clat, clng = dggs.cell_to_latlng(np.asarray(found))
+                        triples = zip(
+                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()
+                        )
+                        for part, (cell, y, x) in enumerate(triples):
+                            add(row, y, x, cell, prop, part)
+                    else:
+                        bad[len(rows)] = (None, kind, f"polygon holds no cell centre at level {level}")
+                        add(row, None, None, "", prop)
+                    continue
+            except (TypeError, IndexError, ValueError, AttributeError) as exc:
+                bad[len(rows)] = (None, kind, f"geometry is malformed ({exc})")
+                add(row, None, None, "", prop)
+                continue
+            bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
+            add(row, None, None, "", prop)
+
+        yield RawBatch(
+            consumed=len(chunk),
+            rows=rows,
+            lines=None,
+            lat=lat,
+            lng=lng,
+            values={name: [p.get(name) for p in props] for name in values},
+            text=False,
+            record=partial(_feature_at, props, lat, lng),
+            bad=bad,
+            cells=cells,
+            parts=parts,
+        )

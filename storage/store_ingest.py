@@ -1,0 +1,299 @@
+"""The ingest methods of :class:`~dggs.storage.CellStore` (a mixin).
+
+Each method builds one :class:`~dggs.storage.ingest.IngestOptions` (checked
+before the store is touched) and hands it to :mod:`dggs.storage.inputs`.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+from . import inputs, readers
+from .connection import guarded
+from .ingest import IngestOptions, IngestResult
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .connection import Connection
+
+__all__ = ["IngestMethods"]
+
+Progress = Callable[[int], Any]
+Values = Sequence[str] | Mapping[str, Any]
+
+
+class IngestMethods:
+    """``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
+    ``ingest_points``, ``ingest_dataframe`` and ``merge``."""
+
+    _store: Connection
+    merge_rows: int
+    path: str
+
+    def ingest(self, source: Any, **kwargs: Any) -> IngestResult:
+        """Ingest a file path (CSV or GeoJSON), DataFrame or iterable of dicts.
+
+        Dispatches to :meth:`ingest_csv`, :meth:`ingest_geojson`,
+        :meth:`ingest_dataframe` or :meth:`ingest_records`.
+
+        Examples
+        --------
+        >>> with CellStore() as store:
+        ...     store.ingest([{"lat": 1.0, "lng": 2.0}], level=3).rows_inserted
+        1
+        """
+        if isinstance(source, (str, os.PathLike)):
+            if readers.sniff_kind(source) == "csv":
+                return self.ingest_csv(source, **kwargs)
+            return self.ingest_geojson(source, **kwargs)
+        if type(source).__name__ == "DataFrame" and hasattr(source, "columns"):
+            return self.ingest_dataframe(source, **kwargs)
+        return self.ingest_records(source, **kwargs)
+
+    @guarded
+    def ingest_csv(
+        self,
+        path: str | os.PathLike[str],
+        lat: str = "lat",
+        lng: str = "lng",
+        values: Values = (),
+        level: int | None = None,
+        *,
+        crs: Any = None,
+        batch_size: int = 10_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        delimiter: str = ",",
+        encoding: str = "utf-8",
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin the rows of a CSV file (with a header row), streaming it in batches.
+
+        Each batch of ``batch_size`` rows is committed whole or not at all.
+        The file is identified by its content (SHA-256): ingesting it again
+        resumes after the rows already committed, or does nothing if it was
+        ingested completely.
+
+        Parameters
+        ----------
+        path : str or Path
+            CSV file with a header row.
+        lat, lng : str
+            Names of the coordinate columns (latitude and longitude, degrees);
+            with a projected ``crs``, the northing (y) and easting (x).
+        values : list of str or dict
+            Value columns to keep; a dict gives their types (``int``,
+            ``float``, ``str`` or SQL ``"INTEGER"``, ``"REAL"``, ``"TEXT"``),
+            otherwise they are guessed from the first batch.  Empty fields are
+            stored as NULL.
+        level : int, optional
+            Level to bin at; default the store's level, or 12 for a new store.
+        crs : str or pyproj.CRS, optional
+            CRS of the coordinates (default WGS84 lat/lng), e.g. ``"EPSG:3857"``.
+        batch_size : int, default 10000
+            Rows per transaction.
+        on_error : {"fail", "skip"}, default "fail"
+            ``"fail"`` stops at the first bad row with a :class:`BadRowError`
+            (earlier batches stay committed); ``"skip"`` stores the good rows,
+            keeps the bad ones in table ``rejects`` and warns.
+        replace : bool, default False
+            Delete what an earlier ingest of this file stored, then ingest it.
+        delimiter : str, default ","
+            Field separator.
+        encoding : str, default "utf-8"
+            Text encoding of the file (a UTF-8 byte-order mark is skipped).
+        progress : callable, optional
+            Called with the number of input rows after each batch.
+
+        Returns
+        -------
+        IngestResult
+
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"``.
+        LevelMismatchError
+            If the store holds another level.
+        DggsValueError
+            If a column is missing or named badly.
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> path = os.path.join(tempfile.mkdtemp(), "pts.csv")
+        >>> with open(path, "w") as fh:
+        ...     _ = fh.write("lat,lng,pop\\n51.5,-0.12,9000000\\n40.7,-74.0,8000000\\n")
+        >>> with CellStore() as store:
+        ...     store.ingest_csv(path, values=["pop"], level=5).rows_inserted
+        2
+        """
+        options = IngestOptions(batch_size, on_error, replace, crs, progress)
+        return inputs.ingest_csv(
+            self._store, path, lat, lng, values, level, options,
+            delimiter=delimiter, encoding=encoding, merge_rows=self.merge_rows,
+        )
+
+    @guarded
+    def ingest_geojson(
+        self,
+        path: str | os.PathLike[str],
+        values: Values | None = None,
+        level: int | None = None,
+        *,
+        batch_size: int = 10_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin the features of a GeoJSON file (WGS84 lng/lat, RFC 7946).
+
+        Points are stored as they are; a Polygon or MultiPolygon is stored
+        as one row per cell at ``level`` whose centre lies inside it, each
+        carrying the feature's properties (so sum a per-area value with care:
+        every cell gets the whole value).  ``values=None`` keeps every
+        property seen in the first batch.  Other parameters as
+        :meth:`ingest_csv`; progress counts features.
+
+        Examples
+        --------
+        >>> import json, os, tempfile
+        >>> path = os.path.join(tempfile.mkdtemp(), "p.geojson")
+        >>> fc = {"type": "FeatureCollection", "features": [{"type": "Feature",
+        ...       "geometry": {"type": "Point", "coordinates": [2.35, 48.85]},
+        ...       "properties": {"name": "Paris"}}]}
+        >>> with open(path, "w") as fh:
+        ...     json.dump(fc, fh)
+        >>> with CellStore() as store:
+        ...     _ = store.ingest_geojson(path, level=4)
+        ...     store.descendants(dggs.latlng_to_cell(48.85, 2.35, 1))[0]["name"]
+        'Paris'
+        """
+        options = IngestOptions(batch_size, on_error, replace, None, progress)
+        return inputs.ingest_geojson(self._store, path, values, level, options, merge_rows=self.merge_rows)
+
+    @guarded
+    def ingest_records(
+        self,
+        records: Iterable[Mapping[str, Any]],
+        lat: str = "lat",
+        lng: str = "lng",
+        values: Values = (),
+        level: int | None = None,
+        *,
+        source: str | None = None,
+        crs: Any = None,
+        batch_size: int = 10_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin an iterable of dicts (e.g. rows from a database or JSON lines).
+
+        Without ``source`` each call is a new, independent ingest.  Give a
+        ``source`` name to make it resumable: calling again with the same
+        name and the same records skips those already committed.  Other
+        parameters as :meth:`ingest_csv`.
+
+        Examples
+        --------
+        >>> with CellStore() as store:
+        ...     rows = [{"lat": 0.5, "lng": 0.5, "v": 1}, {"lat": 0.6, "lng": 0.5, "v": 2}]
+        ...     store.ingest_records(rows, values=["v"], level=3, source="demo").rows_inserted
+        ...     store.ingest_records(rows, values=["v"], level=3, source="demo").already_complete
+        2
+        True
+        """
+        options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
+        return inputs.ingest_records(self._store, records, lat, lng, values, level, options, merge_rows=self.merge_rows)
+
+    @guarded
+    def ingest_points(
+        self,
+        lat: Any,
+        lng: Any,
+        level: int | None = None,
+        values: Mapping[str, Any] | None = None,
+        *,
+        types: Mapping[str, Any] | None = None,
+        source: str | None = None,
+        crs: Any = None,
+        batch_size: int = 100_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin points given as arrays (numpy, lists): the fastest way in.
+
+        Parameters
+        ----------
+        lat, lng : array_like
+            Latitudes and longitudes in degrees (or y and x in ``crs``).
+        level : int, optional
+            As in :meth:`ingest_csv`.
+        values : dict of array_like, optional
+            Value columns, each as long as ``lat``; types follow the dtypes
+            unless given in ``types``.
+        types : dict, optional
+            SQL types of value columns, overriding the dtypes.
+        source : str, optional
+            Name that makes the ingest resumable (see :meth:`ingest_records`).
+        crs, batch_size, on_error, replace, progress
+            As in :meth:`ingest_csv` (default batch 100,000 rows).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> with CellStore() as store:
+        ...     r = store.ingest_points(np.array([10.0, 20.0]), np.array([30.0, 40.0]), 4,
+        ...                             values={"temp": np.array([21.5, 19.0])})
+        ...     store.columns, store.count()
+        ({'temp': 'REAL'}, 2)
+        """
+        options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
+        return inputs.ingest_points(self._store, lat, lng, level, values, types, options, merge_rows=self.merge_rows)
+
+    @guarded
+    def ingest_dataframe(
+        self,
+        df: Any,
+        lat: str = "lat",
+        lng: str = "lng",
+        values: Values | None = None,
+        level: int | None = None,
+        *,
+        types: Mapping[str, Any] | None = None,
+        source: str | None = None,
+        crs: Any = None,
+        batch_size: int = 100_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin the rows of a pandas DataFrame (``values=None``: every other column).
+
+        Keyword arguments are those of :meth:`ingest_points`.
+
+        Examples
+        --------
+        >>> import pandas as pd  # doctest: +SKIP
+        >>> df = pd.DataFrame({"lat": [1.0], "lng": [2.0], "v": [3]})  # doctest: +SKIP
+        >>> CellStore().ingest_dataframe(df, level=3).rows_inserted  # doctest: +SKIP
+        1
+        """
+        options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
+        return inputs.ingest_dataframe(
+            self._store, df, lat, lng, values, level, types, options, merge_rows=self.merge_rows
+        )
+
+    @guarded
+    def merge(self) -> None:
+        """Move pending rows into the indexed ``points`` table (one transaction).
+
+        Ingest does this by itself; call it after an interrupted ingest you
+        will not resume, to make queries as fast as they can be.
+        """
+        with self._store.transaction():
+            self._store.merge_pending()
+
