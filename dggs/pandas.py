@@ -1,0 +1,428 @@
+"""pandas and GeoPandas accessor: ``df.dggs``.
+
+Optional extra: ``pip install 'dggs[pandas]'`` (pandas; GeoPandas for the
+methods that make or read geometries).  Importing this module registers a
+``dggs`` accessor on every :class:`pandas.DataFrame` (and so on every
+:class:`geopandas.GeoDataFrame`); ``import dggs`` alone never imports pandas.
+
+Each method is one vectorized call of the plain function it is named after,
+keeps the frame's index and returns a new frame:
+
+* :meth:`DggsAccessor.latlng_to_cell` adds a cell column from lat/lng columns;
+* :meth:`DggsAccessor.cell_to_geometry` makes a GeoDataFrame of cell polygons;
+* :meth:`DggsAccessor.aggregate` rolls rows up to a coarser level;
+* :meth:`DggsAccessor.polyfill` gives the cells of each polygon feature.
+
+Methods that read cells take ``column=None`` to mean: the only column named
+``cell_<level>`` if there is exactly one, else the index.  Bad input raises
+the library's typed errors (all :class:`dggs.DggsValueError`), naming the row
+label; a missing column raises :class:`ColumnError`.
+
+Examples
+--------
+>>> import pandas as pd
+>>> import dggs.pandas  # registers df.dggs
+>>> df = pd.DataFrame({"lat": [51.05, -33.9], "lng": [-114.07, 18.4]}, index=["yyc", "cpt"])
+>>> df.dggs.latlng_to_cell(9)["cell_9"].tolist()
+['F200021102', 'H511012121']
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from typing import Any, NoReturn
+
+import numpy as np
+
+from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, LevelMismatchError
+from dggs.index.cellid import check_level
+from dggs.index.hierarchy import cell_to_parent, get_level, is_valid_cell
+from dggs.index.points import cell_to_polygon, latlng_to_cell
+from dggs.index.polyfill import polygon_to_cells
+
+try:  # the optional extra
+    import pandas as pd
+except ImportError as exc:  # pragma: no cover - exercised only without the extra
+    raise ImportError("dggs.pandas needs the 'pandas' extra: pip install 'dggs[pandas]'") from exc
+
+__all__ = ["DggsAccessor", "ColumnError"]
+
+_CELL_COLUMN = re.compile(r"^cell_\d+$")
+_MODES = ("center",)
+
+
+class ColumnError(DggsValueError):
+    """A column the accessor needs is not in the frame (or the choice is ambiguous)."""
+
+
+def _geopandas() -> Any:
+    try:
+        import geopandas
+    except ImportError as exc:  # pragma: no cover - exercised only without geopandas
+        raise ImportError("this method needs geopandas: pip install 'dggs[pandas]'") from exc
+    return geopandas
+
+
+def _is_geo(frame: pd.DataFrame) -> bool:
+    """A GeoDataFrame with an active geometry column."""
+    gpd = sys.modules.get("geopandas")
+    if gpd is None or not isinstance(frame, gpd.GeoDataFrame):
+        return False
+    return _geometry_name(frame) in frame.columns
+
+
+def _geometry_name(frame: Any) -> Any:
+    """The name of a GeoDataFrame's active geometry column (None without one)."""
+    return getattr(frame, "active_geometry_name", None)
+
+
+def _coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
+    """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row."""
+    col = frame[name]
+    if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
+        return col.to_numpy(dtype=np.float64, na_value=np.nan)
+    values = pd.to_numeric(col, errors="coerce")
+    bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
+    if bad.any():
+        i = int(np.flatnonzero(bad.to_numpy())[0])
+        raise CoordinateError(f"{name} {col.iloc[i]!r} in row {_label(frame, i)} is not a number")
+    return values.to_numpy(dtype=np.float64, na_value=np.nan)
+
+
+def _label(frame_or_index: Any, i: int) -> str:
+    """The repr of row ``i``'s label, numpy scalars as plain Python values."""
+    index = frame_or_index.index if hasattr(frame_or_index, "columns") else frame_or_index
+    label = index[i]
+    return repr(label.item() if isinstance(label, np.generic) else label)
+
+
+def _first(mask: np.ndarray) -> int | None:
+    hits = np.flatnonzero(mask)
+    return int(hits[0]) if hits.size else None
+
+
+class _Cells:
+    """The cell ids a method reads: a column or the index, with its values and labels."""
+
+    def __init__(self, frame: pd.DataFrame, column: str | None):
+        if column is None:
+            found = [c for c in frame.columns if isinstance(c, str) and _CELL_COLUMN.match(c)]
+            if len(found) > 1:
+                raise ColumnError(f"several cell columns {found}: pass column=")
+            column = found[0] if found else None
+        elif column not in frame.columns:
+            raise ColumnError(f"column {column!r} is not in the frame (columns: {list(frame.columns)})")
+        self.column = column
+        self.labels = frame.index
+        self.values = frame[column] if column is not None else frame.index.to_series()
+        if self.values.dtype == object or isinstance(self.values.dtype, pd.StringDtype):
+            self.ids: Any = self.values.to_numpy(dtype=object)
+        else:
+            self.ids = self.values.to_numpy()
+        self.where = f"column {column!r}" if column is not None else "the index (no cell_<level> column; pass column=)"
+
+    def reraise(self, exc: DggsValueError, level: int | None = None) -> NoReturn:
+        """Raise ``exc`` again, naming the row label of the first bad id."""
+        bad = _first(~np.asarray(is_valid_cell(self.ids), dtype=bool))
+        if bad is None and level is not None:
+            bad = _first(np.asarray(get_level(self.ids)) < level)
+        if bad is None:
+            raise exc
+        raise type(exc)(f"{exc} (row {_label(self.labels, bad)}, {self.where})") from exc
+
+
+@pd.api.extensions.register_dataframe_accessor("dggs")
+class DggsAccessor:
+    """The ``df.dggs`` accessor (registered by ``import dggs.pandas``)."""
+
+    def __init__(self, frame: pd.DataFrame):
+        self._df = frame
+
+    # ------------------------------------------------------------------ points
+    def latlng_to_cell(
+        self,
+        level: int,
+        lat: str = "lat",
+        lng: str = "lng",
+        column: str | None = None,
+        as_int: bool = False,
+    ) -> pd.DataFrame:
+        """The frame with a column of the cell at ``level`` holding each row's point.
+
+        Parameters
+        ----------
+        level : int
+            Subdivision level, 0..MAX_LEVEL.
+        lat, lng : str
+            Columns of latitude and longitude (WGS84 degrees).  A GeoDataFrame
+            of points that has neither column uses its geometry (x = lng, y = lat).
+        column : str, optional
+            Name of the new column (default ``f"cell_{level}"``); an existing
+            column of that name is replaced.
+        as_int : bool
+            Integer ids (uint64) instead of strings.
+
+        Returns
+        -------
+        DataFrame (GeoDataFrame for a GeoDataFrame), same index and rows.
+
+        Raises
+        ------
+        ColumnError
+            ``lat`` or ``lng`` is not a column.
+        CoordinateError
+            A missing, non-numeric or out-of-range coordinate (names the row).
+        LevelError
+            ``level`` outside 0..MAX_LEVEL.
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> import dggs.pandas
+        >>> df = pd.DataFrame({"lat": [51.05, 90.0], "lng": [-114.07, 0.0], "n": [1, 2]})
+        >>> df.dggs.latlng_to_cell(5)
+             lat     lng  n  cell_5
+        0  51.05 -114.07  1  F20002
+        1  90.00    0.00  2  A50000
+        >>> df.dggs.latlng_to_cell(5, as_int=True, column="id")["id"].tolist()
+        [5392427235078569984, 4725753752739381248]
+        """
+        level = check_level(level)
+        df = self._df
+        name = column if column is not None else f"cell_{level}"
+        if lat not in df.columns and lng not in df.columns and _is_geo(df):
+            geom = df.geometry
+            if len(df) and not (geom.geom_type == "Point").all():
+                raise ColumnError(f"no columns {lat!r}, {lng!r} and the geometry is not all points")
+            lat_a = np.asarray(geom.y, dtype=np.float64)
+            lng_a = np.asarray(geom.x, dtype=np.float64)
+            names = ("geometry y", "geometry x")
+        else:
+            for col in (lat, lng):
+                if col not in df.columns:
+                    raise ColumnError(f"column {col!r} is not in the frame (columns: {list(df.columns)})")
+            lat_a, lng_a = _coordinates(df, lat), _coordinates(df, lng)
+            names = (lat, lng)
+        try:
+            ids = latlng_to_cell(lat_a, lng_a, level, as_int=as_int) if len(df) else np.array([], dtype=np.uint64)
+        except CoordinateError as exc:
+            bad = _first(~np.isfinite(lat_a) | ~np.isfinite(lng_a) | (np.abs(lat_a) > 90.0))
+            if bad is None:
+                raise
+            what = names[0] if not np.isfinite(lat_a[bad]) or abs(lat_a[bad]) > 90 else names[1]
+            raise CoordinateError(f"{exc} (row {_label(df, bad)}, column {what!r})") from exc
+        values = pd.Series(
+            ids if as_int else np.asarray(ids, dtype=object), index=df.index, dtype=None if as_int else "str"
+        )
+        return df.assign(**{name: values})
+
+    # --------------------------------------------------------------- geometry
+    def cell_to_geometry(self, column: str | None = None, densify: int | None = None) -> Any:
+        """A GeoDataFrame (EPSG:4326) whose geometry is each row's cell polygon.
+
+        One vectorized :func:`dggs.cell_to_polygon` call; cells that cross the
+        antimeridian are MultiPolygons split at 180 degrees.
+
+        Parameters
+        ----------
+        column : str, optional
+            Column of cell ids (str or int).  Default: the only ``cell_<level>``
+            column if there is exactly one, else the index.
+        densify : int, optional
+            Points per curved edge (see :func:`dggs.cell_to_polygon`).
+
+        Returns
+        -------
+        GeoDataFrame
+            The same rows, index and columns; the geometry column ``geometry``
+            (a GeoDataFrame's old active geometry is replaced).
+
+        Raises
+        ------
+        ColumnError
+            ``column`` is not in the frame.
+        InvalidCellError
+            A malformed or missing id (names the row).
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> import dggs.pandas
+        >>> g = pd.DataFrame({"cell_3": ["C401", "C402"], "n": [1, 2]}).dggs.cell_to_geometry()
+        >>> g.crs.to_epsg(), g.geom_type.tolist()
+        (4326, ['Polygon', 'Polygon'])
+        """
+        gpd = _geopandas()
+        df = self._df
+        cells = _Cells(df, column)
+        try:
+            polys = cell_to_polygon(cells.ids, densify=densify) if len(df) else np.array([], dtype=object)
+        except InvalidCellError as exc:
+            cells.reraise(exc)
+        data = pd.DataFrame(df)
+        if _is_geo(df):
+            data = data.drop(columns=[_geometry_name(df)])
+        geometry = gpd.GeoSeries(np.asarray(polys, dtype=object), index=df.index, crs="EPSG:4326")
+        return gpd.GeoDataFrame(data, geometry=geometry, crs="EPSG:4326")
+
+    # ----------------------------------------------------------------- roll-up
+    def aggregate(self, level: int, agg: Any = None, column: str | None = None) -> pd.DataFrame:
+        """Roll rows up to their parent cells at a coarser ``level``.
+
+        :func:`dggs.cell_to_parent` on the cell ids, then a pandas groupby on
+        the parents.
+
+        Parameters
+        ----------
+        level : int
+            Target level (not finer than any cell).
+        agg : str, list, dict or callable, optional
+            Anything :meth:`pandas.core.groupby.DataFrameGroupBy.agg` takes,
+            applied to the other columns (a GeoDataFrame's geometry is dropped).
+            Default: the number of rows per parent, in a column ``count``.
+        column : str, optional
+            Column of cell ids (str or int).  Default: the only ``cell_<level>``
+            column if there is exactly one, else the index.
+
+        Returns
+        -------
+        DataFrame indexed by the parent cells (sorted, index name ``f"cell_{level}"``).
+        Call ``.dggs.cell_to_geometry()`` on it for the parents' polygons.
+
+        Raises
+        ------
+        ColumnError
+            ``column`` is not in the frame.
+        InvalidCellError, LevelMismatchError
+            A malformed id, or a cell coarser than ``level`` (names the row).
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> import dggs.pandas
+        >>> df = pd.DataFrame({"cell_4": ["C4012", "C4021", "D0000"], "pop": [1, 2, 5]})
+        >>> df.dggs.aggregate(2, {"pop": "sum"})
+                pop
+        cell_2
+        C40       3
+        D00       5
+        >>> df.dggs.aggregate(0)
+                count
+        cell_0
+        C           2
+        D           1
+        """
+        level = check_level(level)
+        df = self._df
+        cells = _Cells(df, column)
+        try:
+            parents = cell_to_parent(cells.ids, level) if len(df) else cells.ids
+        except (InvalidCellError, LevelMismatchError) as exc:
+            cells.reraise(exc, level)
+        key = pd.Series(np.asarray(parents), index=df.index, name=f"cell_{level}")
+        if key.dtype == object:
+            key = key.astype("str")
+        drop = [cells.column] if cells.column is not None else []
+        if _is_geo(df):
+            drop.append(_geometry_name(df))
+        data = pd.DataFrame(df).drop(columns=drop)
+        if agg is None:
+            out = data.groupby(key, sort=True).size().to_frame("count")
+        else:
+            out = data.groupby(key, sort=True).agg(agg)
+            if isinstance(out, pd.Series):
+                out = out.to_frame()
+        out.index.name = f"cell_{level}"
+        return out
+
+    # ---------------------------------------------------------------- polyfill
+    def polyfill(
+        self,
+        level: int,
+        mode: str = "center",
+        explode: bool = True,
+        column: str | None = None,
+        as_int: bool = False,
+        max_cells: int | None = None,
+    ) -> Any:
+        """The cells of each (Multi)Polygon feature of a GeoDataFrame.
+
+        :func:`dggs.polygon_to_cells` per feature: polygons across the
+        antimeridian (longitudes beyond 180, or split at 180) and around a
+        pole are filled correctly.
+
+        Parameters
+        ----------
+        level : int
+            Level of the cells.
+        mode : {"center"}
+            The cells whose centres lie in the polygon (holes respected).
+        explode : bool
+            One row per cell per feature, the feature's index and attributes
+            repeated (features without cells give no row).  ``False`` keeps
+            one row per feature with a list of its cells.
+        column : str, optional
+            Name of the new column (default ``f"cell_{level}"``).
+        as_int : bool
+            Integer ids (uint64) instead of strings.
+        max_cells : int, optional
+            Limit per feature (see :func:`dggs.polygon_to_cells`).
+
+        Returns
+        -------
+        GeoDataFrame
+            The feature geometry is kept; ``.dggs.cell_to_geometry()`` swaps
+            it for the cells' polygons.  A frame in another CRS is filled in
+            EPSG:4326 coordinates.
+
+        Raises
+        ------
+        DggsValueError
+            A geometry that is not a (Multi)Polygon (names the row), an
+            unknown ``mode``, or a frame without geometry.
+        TooManyCellsError
+            A feature would have more than ``max_cells`` cells.
+
+        Examples
+        --------
+        >>> import geopandas as gpd
+        >>> from shapely.geometry import box
+        >>> import dggs.pandas
+        >>> gdf = gpd.GeoDataFrame({"name": ["a", "b"]}, geometry=[box(0, 0, 10, 10), box(170, -5, 190, 5)])
+        >>> cells = gdf.dggs.polyfill(4)
+        >>> cells.groupby("name").size().to_dict()
+        {'a': 7, 'b': 18}
+        >>> cells.dggs.cell_to_geometry().geom_type.iloc[0]
+        'Polygon'
+        """
+        level = check_level(level)
+        if mode not in _MODES:
+            raise DggsValueError(f"mode {mode!r} is not one of {', '.join(_MODES)}")
+        df = self._df
+        if not _is_geo(df):
+            raise ColumnError("polyfill needs a GeoDataFrame with an active geometry column")
+        geoms = df.geometry
+        if geoms.crs is not None and not geoms.crs.equals("EPSG:4326"):
+            geoms = geoms.to_crs("EPSG:4326")
+        name = column if column is not None else f"cell_{level}"
+        found: list[np.ndarray] = []
+        for i, geom in enumerate(geoms.array):
+            if geom is None or geom.is_empty:
+                found.append(np.array([], dtype=np.uint64 if as_int else object))
+                continue
+            if geom.geom_type not in ("Polygon", "MultiPolygon"):
+                raise DggsValueError(f"row {_label(df, i)}: a {geom.geom_type} is not a Polygon or MultiPolygon")
+            try:
+                found.append(polygon_to_cells(geom, level, as_int=as_int, max_cells=max_cells))
+            except DggsValueError as exc:
+                raise type(exc)(f"{exc} (row {_label(df, i)})") from exc
+        if not explode:
+            return df.assign(**{name: pd.Series([c.tolist() for c in found], index=df.index, dtype=object)})
+        counts = np.array([c.shape[0] for c in found], dtype=np.int64)
+        out = df.iloc[np.repeat(np.arange(len(df)), counts)]
+        ids = np.concatenate(found) if found else np.array([], dtype=np.uint64 if as_int else object)
+        values = pd.Series(
+            ids.astype(np.uint64) if as_int else ids.astype(object), index=out.index, dtype=None if as_int else "str"
+        )
+        return out.assign(**{name: values})
