@@ -1,0 +1,287 @@
+"""xarray support through xdggs: the Split (2:6) grid as a registered xdggs grid.
+
+Importing this module registers the grid under the name ``"dggs_split26"`` (:data:`GRID_NAME`) with xdggs,
+so that ``xdggs.decode(ds)`` builds a :class:`Split26Index` on a cell-id coordinate whose attributes are
+``{"grid_name": "dggs_split26", "level": L}`` and the ``ds.dggs`` accessor works on it (``cell_centers``,
+``cell_boundaries``, ``sel_latlon``, ``zoom_to``, ``assign_latlon_coords``, ``explore``, ``encode``).
+xdggs has no plug-in discovery: its grids live in a registry that is filled by imports, so
+``import dggs.xdggs`` must run before decoding (``import dggs`` alone does not import xarray or xdggs).
+
+Cell ids are the uint64 ids of :func:`dggs.latlng_to_cell` (``as_int=True``) or the string ids; the
+grid parameter ``id_format`` (``"int"`` or ``"str"``) says which, and is inferred from the coordinate's
+dtype when the attributes leave it out. The grid is always on WGS84 (``ellipsoid="WGS84"``).
+
+Examples
+--------
+>>> import numpy as np, xarray as xr, xdggs
+>>> import dggs, dggs.xdggs
+>>> ids = dggs.latlng_to_cell(np.array([51.05, -33.9]), np.array([-114.07, 18.4]), 5, as_int=True)
+>>> ds = xr.Dataset(coords={"cell_ids": ("cells", ids, {"grid_name": "dggs_split26", "level": 5})})
+>>> xdggs.decode(ds).dggs.grid_info
+Split26Info(level=5, ellipsoid='WGS84', id_format='int')
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Hashable, Mapping
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+import xarray as xr
+from xdggs.grid import DGGSInfo, translate_parameters
+from xdggs.index import DGGSIndex
+from xdggs.utils import register_dggs
+
+import dggs
+
+__all__ = ["GRID_NAME", "Split26Info", "Split26Index", "GEOARROW_DENSIFY"]
+
+GRID_NAME = "dggs_split26"
+"""The name of the grid in xdggs (the ``grid_name`` attribute of the cell-id coordinate)."""
+
+GEOARROW_DENSIFY = 16
+"""Points per curved edge of the ``"geoarrow"`` boundaries (what ``explore`` draws) unless told otherwise."""
+
+_ID_FORMATS = ("int", "str")
+
+
+def _parse_level(value: Any) -> int:
+    if isinstance(value, bool | np.bool_):
+        raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {value!r}")
+    try:
+        level = int(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {value!r}") from None
+    if level != value:
+        raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {value!r}")
+    return level
+
+
+def _parse_ellipsoid(value: Any) -> str:
+    name = value.get("name") if isinstance(value, Mapping) else value
+    if not isinstance(name, str) or name.upper() != "WGS84":
+        raise ValueError(f"the {GRID_NAME} grid is defined on WGS84 only, got ellipsoid={value!r}")
+    return "WGS84"
+
+
+def _as_ids(cell_ids: Any) -> np.ndarray:
+    """Cell ids as a numpy array dggs reads: uint64 for integers, ``U`` for strings."""
+    arr = np.asarray(cell_ids)
+    if arr.dtype.kind in "iu":
+        if arr.dtype.kind == "i" and arr.size and arr.min() < 0:
+            raise ValueError("integer cell ids must be non-negative")
+        return arr.astype(np.uint64, copy=False)
+    if arr.dtype.kind in "SUT":  # dggs reads fixed-width and numpy StringDType arrays as they are
+        return arr
+    if arr.dtype.kind == "O":
+        return arr.astype(str)
+    raise TypeError(f"cell ids must be integers or strings, got dtype {arr.dtype}")
+
+
+@dataclass(frozen=True)
+class Split26Info(DGGSInfo):
+    """Grid information of the dggs Split (2:6) grid for xdggs.
+
+    Parameters
+    ----------
+    level : int
+        The level of the cells, 0 to ``dggs.MAX_LEVEL`` (28). ``resolution`` and, in the CF and zarr
+        conventions, ``refinement_level`` are accepted as synonyms by :meth:`from_dict`.
+    ellipsoid : str, default "WGS84"
+        Always ``"WGS84"``: the grid is equal-area on the WGS84 ellipsoid.
+    id_format : {"int", "str"}, default "int"
+        The kind of cell ids: uint64 ids (``dggs.str_to_int``) or the string ids.
+
+    Examples
+    --------
+    >>> Split26Info.from_dict({"grid_name": "dggs_split26", "level": 3}).to_dict()
+    {'grid_name': 'dggs_split26', 'level': 3, 'id_format': 'int'}
+    """
+
+    level: int
+    ellipsoid: Any = "WGS84"
+    id_format: str = "int"
+
+    valid_parameters: ClassVar[dict[str, Any]] = {"level": range(dggs.MAX_LEVEL + 1), "id_format": _ID_FORMATS}
+
+    def __post_init__(self) -> None:
+        level_ok = isinstance(self.level, int | np.integer) and not isinstance(self.level, bool)
+        if not level_ok or self.level not in self.valid_parameters["level"]:
+            raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {self.level!r}")
+        if self.id_format not in _ID_FORMATS:
+            raise ValueError(f"id_format must be 'int' or 'str', got {self.id_format!r}")
+        _parse_ellipsoid(self.ellipsoid)
+
+    @classmethod
+    def from_dict(cls, mapping: Mapping[str, Any]) -> Split26Info:
+        """Build the grid information from attributes (``grid_name`` is ignored, unknown keys raise)."""
+        translations = {
+            "level": ("level", _parse_level),
+            "resolution": ("level", _parse_level),
+            "refinement_level": ("level", _parse_level),
+            "id_format": ("id_format", str),
+            "ellipsoid": ("ellipsoid", _parse_ellipsoid),
+        }
+        params = translate_parameters(dict(mapping), translations)
+        unknown = sorted(set(params) - {"level", "id_format", "ellipsoid"})
+        if unknown:
+            raise ValueError(f"unknown parameters for the {GRID_NAME} grid: {unknown}")
+        if "level" not in params:
+            raise ValueError(f"the {GRID_NAME} grid needs a level")
+        return cls(**params)
+
+    def to_dict(self) -> dict[str, Any]:
+        """The normalized grid parameters, with the grid name (WGS84 is implied)."""
+        return {"grid_name": GRID_NAME, "level": self.level, "id_format": self.id_format}
+
+    def cell_ids2geographic(self, cell_ids: Any) -> tuple[np.ndarray, np.ndarray]:
+        """Cell centres as ``(lon, lat)`` arrays in degrees (xdggs's order; dggs's is ``(lat, lng)``)."""
+        ids = _as_ids(cell_ids)
+        if ids.size == 0:
+            return np.empty(0), np.empty(0)
+        lat, lng = dggs.cell_to_latlng(ids)
+        return np.asarray(lng, dtype=np.float64), np.asarray(lat, dtype=np.float64)
+
+    def geographic2cell_ids(self, lon: Any, lat: Any) -> np.ndarray:
+        """The cells of this level holding the points (degrees), as ids of ``id_format``."""
+        lon_ = np.asarray(lon, dtype=np.float64)
+        lat_ = np.asarray(lat, dtype=np.float64)
+        return np.asarray(dggs.latlng_to_cell(lat_, lon_, self.level, as_int=self.id_format == "int"))
+
+    def cell_boundaries(self, cell_ids: Any, backend: str = "shapely", densify: int | None = None) -> Any:
+        """Cell boundary polygons (lon, lat), split at the antimeridian into MultiPolygons.
+
+        ``backend="shapely"`` gives an object array of shapely geometries (``dggs.cell_to_polygon``, whose
+        default densification keeps polygon areas within 1e-6); ``backend="geoarrow"`` gives a geoarrow
+        (multi)polygon array for lonboard, with :data:`GEOARROW_DENSIFY` points per edge by default.
+        """
+        if backend not in ("shapely", "geoarrow"):
+            raise ValueError(f"invalid backend: {backend!r}")
+        ids = _as_ids(cell_ids)
+        if backend == "geoarrow" and densify is None:
+            densify = GEOARROW_DENSIFY
+        if ids.size == 0:
+            polygons = np.empty(0, dtype=object)
+        else:
+            polygons = np.asarray(dggs.cell_to_polygon(ids, densify=densify), dtype=object)
+        if backend == "shapely":
+            return polygons
+        return _to_geoarrow(polygons)
+
+    def zoom_to(self, cell_ids: Any, level: int) -> np.ndarray:
+        """Parents (``level`` < own level, shape (n,)) or children (shape (n, children per cell)) of the ids.
+
+        Children past ``dggs.cell_to_children``'s limit (50 million cells) raise ``dggs.TooManyCellsError``.
+        """
+        level = _parse_level(level)
+        if not 0 <= level <= dggs.MAX_LEVEL:
+            raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {level!r}")
+        ids = _as_ids(cell_ids)
+        if level == self.level:
+            return ids.copy()
+        if level < self.level:
+            return np.asarray(dggs.cell_to_parent(ids, level))
+        per_cell = 3 ** (level - self.level) * (2 if self.level == 0 else 1)
+        if ids.size == 0:
+            return np.empty((0, per_cell), dtype=ids.dtype)
+        # dggs's max_cells guard (TooManyCellsError past 50 million cells by default) applies
+        children = np.asarray(dggs.cell_to_children(ids, level))
+        return children.reshape(ids.size, per_cell)
+
+
+def _to_geoarrow(polygons: np.ndarray) -> Any:
+    """A geoarrow ``polygon`` (or ``multipolygon``, when any cell crosses the antimeridian) array in EPSG:4326."""
+    import pyproj
+    import shapely
+    from arro3.core import list_array
+
+    crs = pyproj.CRS.from_epsg(4326).to_json_dict()
+    geometry_type, coords, offsets = shapely.to_ragged_array(polygons)
+    coords = np.ascontiguousarray(coords, dtype=np.float64)
+    if geometry_type == shapely.GeometryType.POLYGON:
+        rings, geoms = offsets
+        array = list_array(geoms.astype(np.int32), list_array(rings.astype(np.int32), coords))
+        extension = "geoarrow.polygon"
+    elif geometry_type == shapely.GeometryType.MULTIPOLYGON:
+        rings, parts, geoms = offsets
+        array = list_array(
+            geoms.astype(np.int32),
+            list_array(parts.astype(np.int32), list_array(rings.astype(np.int32), coords)),
+        )
+        extension = "geoarrow.multipolygon"
+    else:  # pragma: no cover - cell_to_polygon gives (multi)polygons only
+        raise ValueError(f"unsupported geometry type: {geometry_type}")
+    metadata = {"ARROW:extension:name": extension, "ARROW:extension:metadata": json.dumps({"crs": crs})}
+    return array.cast(array.field.with_metadata(metadata))
+
+
+def _cell_id_variable(variables: Mapping[Any, xr.Variable]) -> tuple[Hashable, xr.Variable, Hashable]:
+    if len(variables) != 1:
+        raise ValueError(f"expected exactly one cell-id variable, got {list(variables)}")
+    name, var = next(iter(variables.items()))
+    if var.ndim != 1:
+        raise ValueError(f"the cell-id variable must be 1-D, got dims {var.dims}")
+    return name, var, var.dims[0]
+
+
+@register_dggs(GRID_NAME)
+class Split26Index(DGGSIndex):
+    """The xdggs index of a cell-id coordinate of the Split (2:6) grid.
+
+    Built by ``xdggs.decode`` from a 1-D coordinate with the attributes ``grid_name="dggs_split26"`` and
+    ``level`` (``id_format`` optional, inferred from the dtype). Decoding checks that the ids are valid
+    cells of that level.
+    """
+
+    _grid: Split26Info
+
+    def __init__(self, cell_ids: Any, dim: Hashable, name: Hashable, grid_info: Split26Info):
+        super().__init__(cell_ids, dim, grid_info)
+        self._name = name
+        self._index.index.name = name
+
+    @classmethod
+    def from_variables(
+        cls,
+        variables: Mapping[Any, xr.Variable],
+        *,
+        options: Mapping[str, Any],
+    ) -> Split26Index:
+        name, var, dim = _cell_id_variable(variables)
+        attrs = dict(var.attrs) | dict(options)
+        data = var.data
+        if "id_format" not in attrs:
+            attrs["id_format"] = "int" if np.dtype(var.dtype).kind in "iu" else "str"
+        grid_info = Split26Info.from_dict(attrs)
+        if isinstance(data, np.ndarray):
+            _check_ids(data, grid_info)
+        return cls(data, dim, name, grid_info)
+
+    @property
+    def grid_info(self) -> Split26Info:
+        return self._grid
+
+    def _replace(self, new_index: Any) -> Split26Index:
+        return type(self)(new_index, self._dim, self._name, self._grid)
+
+    def _repr_inline_(self, max_width: int) -> str:
+        return f"Split26Index(level={self._grid.level}, id_format={self._grid.id_format!r})"
+
+
+def _check_ids(data: np.ndarray, grid: Split26Info) -> None:
+    kind = "int" if data.dtype.kind in "iu" else "str"
+    if kind != grid.id_format:
+        raise ValueError(f"id_format={grid.id_format!r} but the cell ids have dtype {data.dtype}")
+    if data.size == 0:
+        return
+    ids = _as_ids(data)
+    valid = np.asarray(dggs.is_valid_cell(ids), dtype=bool)
+    if not valid.all():
+        bad = ids[~valid][0]
+        raise ValueError(f"invalid cell id for the {GRID_NAME} grid: {bad!r}")
+    levels = np.asarray(dggs.get_level(ids))
+    if (levels != grid.level).any():
+        bad = ids[levels != grid.level][0]
+        raise ValueError(f"cell {bad!r} is of level {dggs.get_level(bad)}, not {grid.level}")
