@@ -78,8 +78,9 @@ def levels(max_level: int) -> None:
     """Print the level table: cell count, area and edge lengths."""
     import dggs
 
+    table = dggs.level_table(max_level)  # a bad level fails before anything is printed
     click.echo(f"{'level':>5} {'cells':>26} {'area':>16} {'short edge':>12}")
-    for row in dggs.level_table(max_level):
+    for row in table:
         click.echo(
             f"{row['level']:>5} {row['cells']:>26,} {_area(row['area_m2']):>16} {_length(row['short_edge_m']):>12}"
         )

@@ -72,7 +72,7 @@ def _scalar_id(x: Any) -> tuple[int, str | None]:
     """(id or 0, form) of a value of any type; form None for a wrong type."""
     if isinstance(x, str):
         return _codec.parse_str(x), "str"
-    if isinstance(x, (bytes, np.bytes_)):
+    if isinstance(x, (bytes, bytearray, np.bytes_)):
         try:
             return _codec.parse_str(x.decode("ascii")), "str"
         except UnicodeDecodeError:
@@ -134,6 +134,8 @@ def _scan(items: Any, kind: Kind) -> _Parsed:
 
 def _parse_strings(items: Any, kind: Kind) -> _Parsed | None:
     """Python str (or bytes) elements in one pass; None if one is of another type."""
+    if len(items) and isinstance(items[0], bytes) and not all(isinstance(x, bytes) for x in items):
+        return None  # b"".join would take any buffer (a numpy integer's raw bytes): judge one by one
     parsed = _codec.parse_pystrings(items)
     return None if parsed is None else _Parsed(parsed[0], kind, parsed[1], items.__getitem__)
 
@@ -157,6 +159,8 @@ def _parse_sequence(seq: Any, container: str) -> _Parsed:
     parsed = _parse_strings(seq, kind)  # the common case: a flat list of str
     if parsed is not None:
         return parsed
+    if any(isinstance(x, bytearray) for x in seq):  # numpy would read its bytes as numbers
+        return _scan(seq, kind)
     try:
         arr = np.asarray(seq)
     except (ValueError, TypeError, OverflowError):  # ragged nesting: judge the top-level elements
@@ -227,7 +231,7 @@ def _parse_any(obj: Any) -> _Parsed:
         return _parse_numpy(obj, Kind("numpy", "str", obj.shape, dtype=obj.dtype))
     if isinstance(obj, (list, tuple)):
         return _parse_sequence(obj, "tuple" if isinstance(obj, tuple) else "list")
-    if isinstance(obj, (str, bytes, int, float, np.generic)) or obj is None:
+    if isinstance(obj, (str, bytes, bytearray, int, float, np.generic)) or obj is None:
         v, f = _scalar_id(obj)
         return _Parsed(np.array([v], dtype=np.uint64), _SCALAR_INT if f == "int" else _SCALAR_STR, -1 if v else 0, lambda i: obj)
     pd, pa = sys.modules.get("pandas"), sys.modules.get("pyarrow")

@@ -10,7 +10,8 @@ from . import _codec
 
 
 def _is_pandas(obj) -> bool:
-    return type(obj).__module__.startswith("pandas")
+    """A pandas Series or Index (something with an index to keep), not pandas' NA or NaT."""
+    return type(obj).__module__.startswith("pandas") and hasattr(obj, "index")
 
 
 def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
@@ -38,11 +39,12 @@ def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
 
 
 _NOT_NUMBERS = (bool, np.bool_, str, bytes, np.str_, np.bytes_)
+_PLAIN_NUMBERS = {float, int, np.float64, np.float32, np.int64}
 
 
 def _as_numbers(value, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
-    if isinstance(value, (list, tuple)):
+    if isinstance(value, (list, tuple)) and not set(map(type, value)) <= _PLAIN_NUMBERS:
         # numpy turns [1.0, True] into floats: judge the elements themselves
         try:
             objs = np.array(value, dtype=object)

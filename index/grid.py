@@ -40,12 +40,12 @@ def edge_neighbors(cell):
 
 
 def are_neighbor_cells(a, b):
-    """Whether cells ``a`` and ``b`` share an edge (element-wise for arrays of one shape).
+    """Whether cells ``a`` and ``b`` share an edge (element-wise; shapes broadcast as in numpy).
 
     Raises
     ------
     DggsValueError
-        The two arrays have different numbers of cells.
+        The two shapes do not broadcast (the message names both sizes and shapes).
 
     Examples
     --------
@@ -161,14 +161,15 @@ def grid_ring(cell, k: int = 1, max_cells: int | None = None):
 def grid_distance(a, b, max_steps: int = 10_000):
     """Number of edge steps on the shortest path between cells of one level.
 
-    Element-wise for arrays of the same length (or one cell against many).
+    Element-wise for arrays of the same shape, or shapes that broadcast as in
+    numpy (one cell against many).
 
     Raises
     ------
     LevelMismatchError
         The cells are at different levels.
     DggsValueError
-        The distance exceeds ``max_steps``.
+        The distance exceeds ``max_steps``, or the shapes do not broadcast.
 
     Examples
     --------

@@ -53,3 +53,9 @@ def test_levels_table():
     res = run("cell", "levels", "--max-level", "28")
     assert res.exit_code == 0
     assert "0.5574 m^2" in res.output.splitlines()[-1]  # 510,065,621,724,088 m^2 / 915,071,698,198,440 cells
+
+
+def test_a_bad_level_prints_only_the_error():
+    res = run("cell", "levels", "--max-level", "29")
+    assert res.exit_code == 1
+    assert res.output.strip().splitlines() == ["Error: level 29 is out of range 0..28"]

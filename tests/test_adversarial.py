@@ -1,0 +1,598 @@
+"""Adversarial inputs: every public function gives a correct result or a typed, named error.
+
+Every name in ``dggs.__all__`` that is a function, and the ``dggs cell``
+commands, get NaN, infinities, huge and subnormal floats, wrong dtypes (bool,
+str, object, complex, datetime), empty, 0-d and 2-D inputs, mismatched shapes,
+bad levels and corrupt ids.  The only acceptable outcomes are a result that
+passes a cheap invariant or a :class:`dggs.DggsError` whose message names the
+bad value; anything else (a raw ValueError, TypeError, IndexError,
+OverflowError, a numba typing error, a hang) is a bug.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import subprocess
+import sys
+from contextlib import contextmanager
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pyarrow as pa
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from shapely.geometry import Polygon, box
+
+import dggs
+from dggs.cli import main
+from dggs.index.cellid import check_level
+
+from .strategies import cells, special_points
+
+GOOD = "C401"
+GOOD_INT = dggs.str_to_int(GOOD)
+EXAMPLES = max(150, settings.default.max_examples)  # per hypothesis test (HYPOTHESIS_PROFILE=thorough: 2000)
+
+
+# --------------------------------------------------------------------------
+# Outcomes
+# --------------------------------------------------------------------------
+
+
+@contextmanager
+def time_limit(seconds: int = 60):
+    """Fail (instead of hanging) if the body runs longer than ``seconds``."""
+
+    def _raise(*_):
+        raise TimeoutError(f"no answer within {seconds} s: a hang")
+
+    old = signal.signal(signal.SIGALRM, _raise)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def outcome(call, *args, **kwargs):
+    """(True, result) or (False, DggsError); any other exception propagates and fails the test."""
+    with time_limit():
+        try:
+            return True, call(*args, **kwargs)
+        except dggs.DggsError as exc:
+            msg = str(exc)
+            assert msg.strip(), f"{type(exc).__name__} without a message"
+            return False, exc
+
+
+def _py(value):
+    return value.item() if isinstance(value, np.generic) else value
+
+
+def names(exc: Exception, *values) -> None:
+    """The error message names one of ``values`` (its repr, or its str for text)."""
+    msg = str(exc)
+    reprs = []
+    for v in values:
+        v = _py(v)
+        reprs.append(repr(v))
+        if isinstance(v, float) and not math.isnan(v):
+            reprs.append(repr(float(v)))
+        if isinstance(v, (str, int)) and not isinstance(v, bool):
+            reprs.append(str(v))
+    assert any(r in msg for r in reprs), f"{msg!r} names none of {reprs}"
+
+
+# --------------------------------------------------------------------------
+# Corrupt ids
+# --------------------------------------------------------------------------
+
+CORRUPT_SCALARS = [
+    "", "C9", "c401", "U0", "C6", "C403", "C4" + "0" * 40, "A0\x00", "\x00", "A\x000", "Aé", "🌍", " C401", "C401 ",
+    b"\xff\xfe", b"C9", b"A0\x00", bytearray(b"C9"), None, float("nan"), math.inf, 2.5, 1j, True, False, np.True_,
+    -1, 0, 1, (1 << 62) | 3, (1 << 64) - 1, 1 << 64, 1 << 70, -(1 << 63), np.int64(-5), np.uint64((1 << 64) - 1),
+    np.float64(1.0), pd.NA, pd.NaT, np.datetime64("2020-01-01"), object(), {"C401": 1}, Ellipsis,
+]
+VALID_SCALARS = ["A", "T5", GOOD, "C4" + "0" * 27, b"A01", np.str_(GOOD), np.bytes_(b"C40"), bytearray(b"C401"), GOOD_INT, np.uint64(GOOD_INT), np.int64(GOOD_INT)]
+
+
+def corrupt_scalars():
+    return st.one_of(
+        st.sampled_from(CORRUPT_SCALARS),
+        st.text(max_size=12),
+        st.binary(max_size=8),
+        st.integers(min_value=-(1 << 70), max_value=1 << 70),
+        st.floats(),
+    )
+
+
+def any_scalars():
+    return st.one_of(corrupt_scalars(), st.sampled_from(VALID_SCALARS), cells())
+
+
+def _as_container(items: list, how: str):
+    """``items`` in one of the containers dggs takes (or None where that container cannot hold them)."""
+    if how == "list":
+        return list(items)
+    if how == "tuple":
+        return tuple(items)
+    if how == "object":
+        arr = np.empty(len(items), dtype=object)
+        arr[:] = items
+        return arr
+    if how == "object2d":
+        arr = np.empty(len(items), dtype=object)
+        arr[:] = items
+        return arr.reshape(1, -1)
+    if how == "pandas":
+        return pd.Series(items, dtype=object)
+    if how == "0d":
+        return np.array(items[0]) if len(items) == 1 and isinstance(items[0], (str, bytes, int)) and not isinstance(items[0], bool) else None
+    try:
+        if how == "U":
+            return np.array([i for i in items], dtype=str) if all(isinstance(i, str) for i in items) else None
+        if how == "S":
+            return np.array(items, dtype="S") if all(isinstance(i, bytes) for i in items) else None
+        if how == "T":
+            return np.array(items, dtype=np.dtypes.StringDType()) if all(isinstance(i, str) for i in items) else None
+        if how == "int":
+            return np.array(items, dtype=np.uint64) if all(type(i) is int and 0 <= i < 1 << 64 for i in items) else None
+        if how == "int64":
+            return np.array(items, dtype=np.int64) if all(type(i) is int and -(1 << 63) <= i < 1 << 63 for i in items) else None
+        if how == "arrow":
+            return pa.array(items) if all(isinstance(i, str) or i is None for i in items) else None
+    except (ValueError, TypeError, OverflowError, UnicodeError):
+        return None
+    raise AssertionError(how)
+
+
+CONTAINERS = ["list", "tuple", "object", "object2d", "pandas", "U", "S", "T", "int", "int64", "arrow", "0d"]
+
+
+@st.composite
+def id_containers(draw):
+    """(container, its elements as Python values): mixes of valid and corrupt ids, empty too."""
+    items = draw(st.lists(any_scalars(), max_size=5))
+    how = draw(st.sampled_from(CONTAINERS))
+    if how in ("U", "T", "arrow"):
+        items = [i if isinstance(i, str) else GOOD for i in items]
+    elif how == "S":
+        items = [i if isinstance(i, bytes) else b"C40" for i in items]
+    elif how in ("int", "int64"):
+        items = [i if type(i) is int else GOOD_INT for i in items]
+    obj = _as_container(items, how)
+    if obj is None:
+        obj = list(items)
+    return obj, items
+
+
+ONE_CELL_FUNCS = {
+    "str_to_int": dggs.str_to_int,
+    "int_to_str": dggs.int_to_str,
+    "cell_to_latlng": dggs.cell_to_latlng,
+    "cell_to_boundary": dggs.cell_to_boundary,
+    "cell_to_polygon": lambda c: dggs.cell_to_polygon(c, densify=1),
+    "cells_to_geojson": lambda c: dggs.cells_to_geojson(c, densify=0),
+    "get_level": dggs.get_level,
+    "get_face": dggs.get_face,
+    "cell_to_parent": lambda c: dggs.cell_to_parent(c, 0),
+    "cell_to_children": lambda c: dggs.cell_to_children(c, max_cells=10_000),
+    "cell_to_center_child": lambda c: dggs.cell_to_center_child(c, dggs.MAX_LEVEL),
+    "compact_cells": dggs.compact_cells,
+    "uncompact_cells": lambda c: dggs.uncompact_cells(c, dggs.MAX_LEVEL, max_cells=10_000),
+    "edge_neighbors": dggs.edge_neighbors,
+    "are_neighbor_cells": lambda c: dggs.are_neighbor_cells(c, GOOD),
+    "are_neighbor_cells_2": lambda c: dggs.are_neighbor_cells(GOOD, c),
+    "grid_disk": lambda c: dggs.grid_disk(c, 1),
+    "grid_ring": lambda c: dggs.grid_ring(c, 2),
+    "grid_distance": lambda c: dggs.grid_distance(c, c),
+    "cell_area": dggs.cell_area,
+}
+
+
+def test_every_public_function_is_covered():
+    covered = set(ONE_CELL_FUNCS) | {"is_valid_cell", "latlng_to_cell", "polygon_to_cells", "get_num_cells", "get_base_cells", "level_table"}
+    public = {n for n in dggs.__all__ if callable(getattr(dggs, n)) and not isinstance(getattr(dggs, n), type)}
+    assert public <= covered, public - covered
+
+
+@settings(max_examples=EXAMPLES)
+@given(value=any_scalars(), func=st.sampled_from(sorted(ONE_CELL_FUNCS)))
+def test_one_id(value, func):
+    """A single id: a result only for a valid id; otherwise a DggsError naming it."""
+    if func == "cell_area" and isinstance(_py(value), int) and not isinstance(_py(value), bool) and 0 <= _py(value) <= dggs.MAX_LEVEL:
+        value = GOOD_INT  # small ints are levels to cell_area (tested below)
+    ok, res = outcome(ONE_CELL_FUNCS[func], value)
+    valid = dggs.is_valid_cell(value)
+    assert valid in (True, False)
+    if ok:
+        assert valid, f"{func} accepted {value!r}"
+    elif valid:
+        assert isinstance(res, (dggs.LevelMismatchError, dggs.LevelError, dggs.TooManyCellsError)), res
+    else:
+        assert isinstance(res, (dggs.LevelError, dggs.InvalidCellError) if func == "cell_area" else dggs.InvalidCellError), res
+        names(res, value)
+
+
+@settings(max_examples=EXAMPLES)
+@given(data=id_containers(), func=st.sampled_from(sorted(ONE_CELL_FUNCS)))
+def test_containers_of_ids(data, func):
+    """Lists, tuples, numpy (U, S, StringDType, object, ints, 2-D), pandas, arrow; mixed, empty."""
+    obj, items = data
+    ok, res = outcome(ONE_CELL_FUNCS[func], obj)
+    valid = dggs.is_valid_cell(obj)
+    valid_flat = np.asarray(valid).reshape(-1)
+    levels = func == "cell_area" and all(isinstance(_py(i), int) and not isinstance(_py(i), bool) and _py(i) < 1 << 62 for i in items)
+    if levels:  # small integers are levels to cell_area (or, in an object array, cell ids)
+        if not ok:
+            assert isinstance(res, (dggs.LevelError, dggs.InvalidCellError)), res
+            names(res, *items)
+        return
+    if ok:
+        assert valid_flat.all(), f"{func} accepted {obj!r}"
+        shape = np.shape(obj) if not isinstance(obj, (list, tuple)) else (len(obj),)
+        if func == "get_level":
+            assert np.shape(res) == shape
+        elif func == "edge_neighbors" and isinstance(obj, np.ndarray):
+            assert res.shape == shape + (3,)
+        elif func == "cell_to_boundary":
+            assert res.shape == shape + (3, 2)
+        elif func == "str_to_int":
+            assert dggs.int_to_str(res) is not None and len(res) == len(obj)
+    elif valid_flat.all():
+        assert isinstance(res, (dggs.LevelMismatchError, dggs.LevelError, dggs.TooManyCellsError)), res
+    else:
+        assert isinstance(res, dggs.InvalidCellError), res
+        names(res, *items, *np.asarray(obj, dtype=object).reshape(-1).tolist())
+
+
+@settings(max_examples=EXAMPLES)
+@given(value=st.one_of(any_scalars(), id_containers().map(lambda d: d[0])))
+def test_is_valid_cell_never_raises(value):
+    with time_limit():
+        res = dggs.is_valid_cell(value)
+    assert isinstance(res, (bool, np.ndarray, pd.Series))
+
+
+# --------------------------------------------------------------------------
+# Levels, k, densify, max_cells
+# --------------------------------------------------------------------------
+
+BAD_LEVELS = [-1, 29, 2.5, "3", True, False, np.True_, None, math.nan, math.inf, 3.0, 1 << 70, -(1 << 70), np.array(3), np.array([3]), [3], 3j]
+GOOD_LEVELS = [0, 3, 28, np.int8(3), np.int64(5), np.uint64(7), np.uint8(28)]
+
+LEVEL_FUNCS = {
+    "latlng_to_cell": lambda lv: dggs.latlng_to_cell(10.0, 20.0, lv),
+    "latlng_to_cell_array": lambda lv: dggs.latlng_to_cell(np.zeros(2), np.zeros(2), lv),
+    "cell_to_parent": lambda lv: dggs.cell_to_parent("C4010000", lv),
+    "cell_to_parent_int": lambda lv: dggs.cell_to_parent(dggs.str_to_int("C4010000"), lv),
+    "cell_to_children": lambda lv: dggs.cell_to_children("C", lv, max_cells=10**9),
+    "cell_to_center_child": lambda lv: dggs.cell_to_center_child("C", lv),
+    "uncompact_cells": lambda lv: dggs.uncompact_cells(["C"], lv, max_cells=10**9),
+    "get_num_cells": dggs.get_num_cells,
+    "cell_area": dggs.cell_area,
+    "level_table": dggs.level_table,
+    "polygon_to_cells": lambda lv: dggs.polygon_to_cells(box(0, 0, 1e-6, 1e-6), lv),
+}
+
+
+def levels():
+    return st.one_of(st.sampled_from(BAD_LEVELS + GOOD_LEVELS), st.integers(-(1 << 66), 1 << 66), st.floats())
+
+
+def _level_ok(level) -> bool:
+    return isinstance(level, (int, np.integer)) and not isinstance(level, bool) and 0 <= level <= dggs.MAX_LEVEL
+
+
+@settings(max_examples=EXAMPLES)
+@given(level=levels(), func=st.sampled_from(sorted(LEVEL_FUNCS)))
+def test_levels(level, func):
+    ok, res = outcome(LEVEL_FUNCS[func], level)
+    if level is None and func in ("cell_to_parent", "cell_to_parent_int", "cell_to_children", "cell_to_center_child"):
+        assert ok, res  # None: the default level
+        return
+    if ok:
+        arr = np.asarray(level, dtype=object)
+        if func == "cell_area" and isinstance(level, np.ndarray) and level.dtype.kind in "iu":
+            arr = level  # cell_area takes arrays of levels
+        assert all(_level_ok(v) for v in np.asarray(arr).reshape(-1)) if func == "cell_area" else _level_ok(level), f"{func} accepted level {level!r}"
+    elif _level_ok(level):
+        assert isinstance(res, (dggs.LevelMismatchError, dggs.TooManyCellsError)), res
+    elif func == "cell_area":  # a level, or else a cell id
+        assert isinstance(res, (dggs.LevelError, dggs.InvalidCellError)), res
+    else:
+        assert isinstance(res, dggs.LevelError), res
+        names(res, level)
+
+
+def test_check_level_takes_numpy_integers():
+    assert check_level(np.int64(5)) == 5 and check_level(np.uint8(28)) == 28
+    assert type(check_level(np.int32(3))) is int
+    for bad in (True, 2.5, "3", np.float64(3), None, 29, -1):
+        with pytest.raises(dggs.LevelError, match=repr(bad).replace("(", r"\(").replace(")", r"\)")):
+            check_level(bad)
+
+
+COUNT_ARGS = [-1, 2.5, "3", True, None, math.nan, 1 << 70, np.int64(2), np.array([3]), 0, 3]
+COUNT_FUNCS = {
+    "grid_disk k": lambda v: dggs.grid_disk(GOOD, v),
+    "grid_disk k array": lambda v: dggs.grid_disk([GOOD], v),
+    "grid_ring k": lambda v: dggs.grid_ring(GOOD, v),
+    "grid_distance max_steps": lambda v: dggs.grid_distance("C401", "C410", v),
+    "cell_to_boundary densify": lambda v: dggs.cell_to_boundary(GOOD, v),
+    "cell_to_polygon densify": lambda v: dggs.cell_to_polygon(GOOD, v),
+    "cells_to_geojson densify": lambda v: dggs.cells_to_geojson([GOOD], densify=v),
+    "cell_to_children max_cells": lambda v: dggs.cell_to_children(GOOD, 6, max_cells=v),
+    "uncompact_cells max_cells": lambda v: dggs.uncompact_cells([GOOD], 6, max_cells=v),
+    "grid_disk max_cells": lambda v: dggs.grid_disk(GOOD, 2, max_cells=v),
+    "grid_ring max_cells": lambda v: dggs.grid_ring([GOOD], 2, max_cells=v),
+    "polygon_to_cells max_cells": lambda v: dggs.polygon_to_cells(box(0, 0, 1, 1), 6, max_cells=v),
+}
+
+
+@settings(max_examples=EXAMPLES)
+@given(value=st.one_of(st.sampled_from(COUNT_ARGS), st.integers(-(1 << 70), 1 << 70)), func=st.sampled_from(sorted(COUNT_FUNCS)))
+def test_counts(value, func):
+    """k, max_steps, densify and max_cells: non-negative ints, else a DggsValueError naming the value."""
+    ok, res = outcome(COUNT_FUNCS[func], value)
+    good = isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 0
+    good = good or (value is None and ("max_cells" in func or func in ("cell_to_polygon densify", "cells_to_geojson densify")))  # defaults
+    if ok:
+        assert good, f"{func} accepted {value!r}"
+    elif not good:
+        assert isinstance(res, dggs.DggsValueError)
+        names(res, value)
+
+
+def test_max_cells_is_validated():
+    for bad in (-1, 2.5, "3", True, math.nan):
+        with pytest.raises(dggs.DggsValueError, match="max_cells"):
+            dggs.cell_to_children("C", 2, max_cells=bad)
+        with pytest.raises(dggs.DggsValueError, match="max_cells"):
+            dggs.grid_disk("C401", 1, max_cells=bad)  # the single-cell path too
+    assert len(dggs.grid_disk("C401", 1, max_cells=np.int64(10))) == 4
+
+
+# --------------------------------------------------------------------------
+# Coordinates
+# --------------------------------------------------------------------------
+
+BAD_NUMBERS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 90.0000001, -91.0, 1 << 62, "1", b"1", True, np.True_, None, 1j, pd.NA]
+EDGE_NUMBERS = [5e-324, -5e-324, 2.2250738585072014e-308, 0.0, -0.0, 90.0, -90.0, 180.0, -180.0, 540.0, -1e300 * 0 + 1e15, np.float32(45.5), np.int8(-7), np.uint64(3)]
+
+
+def coordinates():
+    # Python ints past int64 on the scalar fast path: see test_ragged_and_huge_int_coordinates
+    scalars = st.one_of(st.sampled_from(BAD_NUMBERS + EDGE_NUMBERS), st.floats(), st.integers(-(1 << 63), (1 << 63) - 1))
+    arrays = st.one_of(
+        st.lists(scalars, max_size=4),
+        st.lists(st.floats(), max_size=4).map(np.array),
+        st.sampled_from([
+            np.array([], dtype=float), np.array(45.0), np.zeros((2, 2)), np.zeros((1, 3)), np.zeros(3),
+            np.array([True, False]), np.array(["1", "2"]), np.array([1j]), np.array(["2020-01-01"], dtype="datetime64[D]"),
+            np.array([1.0, None], dtype=object), np.array([1.0, True], dtype=object), np.array([1.0, "2"], dtype=object),
+            pd.Series([1.0, None]), pd.Series([1.0, pd.NA], dtype="Float64"), pd.Series([1, 2], dtype="Int64"),
+            np.array([1], dtype=np.float16), [[1.0, 2.0], [3.0, 4.0]],
+        ]),
+    )
+    return st.one_of(scalars, arrays)
+
+
+def _numbers_ok(value) -> bool:
+    """Whether every element is a real finite number (not a bool or str)."""
+    arr = np.asarray(value, dtype=object).reshape(-1) if not isinstance(value, pd.Series) else value.to_numpy(dtype=object)
+    for v in arr:
+        v = _py(v)
+        if isinstance(v, (bool, str, bytes, complex)) or v is None or v is pd.NA or not isinstance(v, (int, float)):
+            return False
+        if not math.isfinite(float(v)):
+            return False
+    return True
+
+
+@settings(max_examples=EXAMPLES)
+@given(lat=coordinates(), lng=coordinates(), level=st.sampled_from([0, 5, 28]), as_int=st.booleans())
+def test_latlng_to_cell(lat, lng, level, as_int):
+    ok, res = outcome(dggs.latlng_to_cell, lat, lng, level, as_int=as_int)
+    if ok:
+        shape = np.broadcast_shapes(np.shape(lat), np.shape(lng))
+        assert 0 in shape or (_numbers_ok(lat) and _numbers_ok(lng)), f"accepted {lat!r}, {lng!r}"
+        if shape == ():
+            assert isinstance(res, int if as_int else str)
+            assert dggs.get_level(res) == level
+        else:
+            assert np.shape(res) == shape
+            if np.size(res):
+                assert (np.asarray(dggs.get_level(res)) == level).all()
+    else:
+        assert isinstance(res, dggs.CoordinateError), res
+
+
+def test_bools_and_strings_are_not_coordinates():
+    for lat in ([1.0, True], np.array([1.0, True], dtype=object), [1.0, "2"], True, "10", [[1.0], [True]]):
+        with pytest.raises(dggs.CoordinateError, match="True|'2'|'10'"):
+            dggs.latlng_to_cell(lat, 0.0, 3)
+
+
+def test_zero_dim_and_empty_coordinates():
+    assert dggs.latlng_to_cell(np.array(51.05), np.array(-114.07), 9) == "F200021102"
+    assert dggs.latlng_to_cell(np.array([]), np.array([]), 3).shape == (0,)
+    assert dggs.latlng_to_cell([], [], 3, as_int=True).dtype == np.uint64
+    with pytest.raises(dggs.CoordinateError, match=r"\(2,\).*\(3,\)"):
+        dggs.latlng_to_cell(np.zeros(2), np.zeros(3), 3)
+
+
+@pytest.mark.xfail(reason="index/points.py (not this change's file): np.ndim on a ragged list and a huge int on the scalar fast path")
+def test_ragged_and_huge_int_coordinates():
+    for lat in ([[1.0], [1.0, 2.0]], 1 << 70):
+        with pytest.raises(dggs.CoordinateError):
+            dggs.latlng_to_cell(lat, 0.0, 3)
+
+
+@pytest.mark.parametrize("point", special_points())
+def test_special_points(point):
+    """Poles, antimeridian, vertices, edge midpoints: a cell at every level, its centre maps back."""
+    lat, lng = point
+    for level in (0, 1, 7, 17, dggs.MAX_LEVEL):
+        cell = dggs.latlng_to_cell(lat, lng, level)
+        assert dggs.get_level(cell) == level
+        assert dggs.latlng_to_cell(*dggs.cell_to_latlng(cell), level) == cell
+        assert len(dggs.cell_to_boundary(cell)) == 3
+        assert dggs.cell_to_polygon(cell).is_valid
+        assert dggs.are_neighbor_cells(cell, dggs.edge_neighbors(cell)).all()
+
+
+# --------------------------------------------------------------------------
+# Pairs of cells
+# --------------------------------------------------------------------------
+
+SHAPES = [(), (0,), (1,), (2,), (3,), (1, 2), (2, 1), (2, 2), (2, 3)]
+
+
+@settings(max_examples=EXAMPLES)
+@given(sa=st.sampled_from(SHAPES), sb=st.sampled_from(SHAPES), func=st.sampled_from(["are_neighbor_cells", "grid_distance"]))
+def test_pair_shapes(sa, sb, func):
+    a = GOOD if sa == () else np.full(sa, "C402")
+    b = "C400" if sb == () else np.full(sb, "C401")
+    ok, res = outcome(getattr(dggs, func), a, b)
+    try:
+        shape = np.broadcast_shapes(sa, sb)
+    except ValueError:
+        assert not ok and isinstance(res, dggs.DggsValueError)
+        assert str(int(np.prod(sa))) in str(res) and str(int(np.prod(sb))) in str(res), res
+        return
+    assert ok, res
+    assert np.shape(res) == shape
+
+
+def test_pairs_of_lists_of_different_lengths():
+    with pytest.raises(dggs.DggsValueError, match="2 cells .* 3 cells"):
+        dggs.are_neighbor_cells(["C401", "C402"], ["C400", "C401", "C402"])
+    with pytest.raises(dggs.DggsValueError, match=r"4 cells \(shape \(2, 2\)\) with 3 cells"):
+        dggs.grid_distance(np.full((2, 2), "C401"), ["C400", "C401", "C402"])
+    assert dggs.grid_distance([], "A0").shape == (0,)
+    assert dggs.are_neighbor_cells(["C401"], ["C402", "C400"]).tolist() == [True, True]
+
+
+# --------------------------------------------------------------------------
+# The regressions of issue 10, item 16, one by one
+# --------------------------------------------------------------------------
+
+
+def test_item16_regressions():
+    with pytest.raises(dggs.InvalidCellError, match=r"\('A0',\) at index 0"):
+        dggs.get_level([("A0",), "K1"])
+    with pytest.raises(dggs.InvalidCellError, match=r"b'\\xff'"):
+        dggs.get_level(b"\xff")
+    with pytest.raises(dggs.InvalidCellError, match=r"b'\\xff'"):
+        dggs.str_to_int([b"\xff"])
+    assert dggs.get_level(b"A01") == 2 and dggs.get_level([b"A01"]).tolist() == [2]
+    with pytest.raises(dggs.InvalidCellError, match="b'A0x'"):
+        dggs.get_level(np.array([b"A0x"]))
+    assert dggs.cell_to_boundary([]).shape == (0, 3, 2)
+    assert dggs.cell_to_latlng([])[0].shape == (0,)
+    for bad in (["A0\x00"], np.array(["A0\x00"], dtype=object), pa.array(["A0\x00"]), pd.Series(["A0\x00"], dtype="string"),
+                np.array(["A\x000"]), np.array(["A0\x00"], dtype=np.dtypes.StringDType()), "A0\x00"):
+        with pytest.raises(dggs.InvalidCellError, match=r"'A0?\\x000?'"):
+            dggs.get_level(bad)
+    assert dggs.cell_area([[]]).shape == (1, 0)
+    with pytest.raises(dggs.TooManyCellsError, match="k=1180591620717411303424"):
+        dggs.grid_disk("C401", 1 << 70)
+    with pytest.raises(dggs.LevelError, match="1180591620717411303424"):
+        dggs.cell_to_parent("C401", 1 << 70)
+
+
+# --------------------------------------------------------------------------
+# Functions without ids
+# --------------------------------------------------------------------------
+
+
+@settings(max_examples=EXAMPLES)
+@given(polygon=st.one_of(
+    st.sampled_from([None, "POLYGON ((0 0, 1 0, 1 1, 0 0))", 5, [(0, 0), (1, 0), (1, 1)], box(0, -100, 1, 1),
+                     Polygon([(0, 0), (1, 1), (1, 0), (0, 1)]), Polygon(), box(179, -1, 181, 1), box(-1, 89, 1, 90)]),
+    st.tuples(st.floats(-400, 400), st.floats(-100, 100), st.floats(0, 2), st.floats(0, 2)).map(lambda t: box(t[0], t[1], t[0] + t[2], t[1] + t[3])),
+))
+def test_polygon_to_cells(polygon):
+    ok, res = outcome(dggs.polygon_to_cells, polygon, 4)
+    if ok:
+        assert isinstance(res, np.ndarray) and res.ndim == 1
+        if res.size:
+            assert (dggs.get_level(res) == 4).all()
+    else:
+        assert isinstance(res, dggs.DggsValueError)
+
+
+@pytest.mark.xfail(reason="index/polyfill.py (not this change's file): _wrap_polygon loops once per 360 degrees of longitude")
+def test_polygon_with_huge_longitudes_does_not_hang():
+    with time_limit(3):
+        with pytest.raises(dggs.DggsValueError):
+            dggs.polygon_to_cells(box(0, 0, 1e300, 1), 3)
+
+
+@pytest.mark.xfail(reason="index/points.py (not this change's file): properties that are not rows or columns")
+def test_geojson_properties_of_the_wrong_shape():
+    for props in (5, [1, 2], "ab", {"a": 5}):
+        with pytest.raises(dggs.DggsValueError):
+            dggs.cells_to_geojson(["C401", "C402"], properties=props)
+
+
+def test_functions_without_ids():
+    assert dggs.get_base_cells().shape == (20,) and dggs.get_base_cells(as_int=True).dtype == np.uint64
+    assert len(dggs.level_table(np.int64(2))) == 3
+    for bad in ("m2", None, 3):
+        with pytest.raises(dggs.DggsValueError, match=repr(bad)):
+            dggs.cell_area("C", bad)
+
+
+# --------------------------------------------------------------------------
+# The command line
+# --------------------------------------------------------------------------
+
+
+def _cli_ok(args: list[str]) -> None:
+    res = CliRunner().invoke(main, args)
+    assert res.exit_code in (0, 1, 2), (args, res.output, res.exception)
+    if res.exception is not None:
+        assert isinstance(res.exception, SystemExit), (args, res.exception)
+    assert "Traceback" not in res.output
+    if res.exit_code == 1:
+        lines = [line for line in res.output.splitlines() if line.strip()]
+        assert len(lines) == 1 and lines[0].startswith("Error: "), res.output
+
+
+cli_text = st.one_of(st.sampled_from(["nan", "inf", "-inf", "1e308", "91", "-0", "C9", "A0\x01", "é", "", "29", "-1", "2.5", "--", "C401"]), st.text(max_size=6).filter(lambda s: "\x00" not in s))
+
+
+@settings(max_examples=EXAMPLES)
+@given(a=cli_text, b=cli_text, c=cli_text, command=st.sampled_from(["from-latlng", "info", "boundary", "levels"]))
+def test_cell_commands(a, b, c, command):
+    args = {
+        "from-latlng": ["cell", "from-latlng", a, b, "--level", c],
+        "info": ["cell", "info", a, "--json"],
+        "boundary": ["cell", "boundary", a, "--densify", c],
+        "levels": ["cell", "levels", "--max-level", a],
+    }[command]
+    _cli_ok(args)
+
+
+def test_cli_errors_in_a_real_process():
+    for args in (["cell", "info", "C9"], ["cell", "from-latlng", "nan", "0", "--level", "3"], ["cell", "levels", "--max-level", "29"],
+                 ["cell", "boundary", "C401", "--densify", "-1"]):
+        proc = subprocess.run([sys.executable, "-m", "dggs.cli", *args], capture_output=True, text=True, timeout=300)
+        assert proc.returncode == 1, (args, proc.stderr)
+        assert "Traceback" not in proc.stderr and proc.stdout == ""
+        assert len(proc.stderr.strip().splitlines()) == 1 and proc.stderr.startswith("Error: "), proc.stderr
+    proc = subprocess.run([sys.executable, "-m", "dggs.cli", "cell", "from-latlng", "51.05", "-114.07", "--level", "9"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0 and proc.stdout.strip() == "F200021102"
+    script = Path(sys.executable).with_name("dggs")  # the installed console script
+    if script.exists():
+        proc = subprocess.run([str(script), "cell", "info", "A0\u00e9"], capture_output=True, text=True, timeout=300)
+        assert proc.returncode == 1 and "Traceback" not in proc.stderr
+        assert proc.stderr.strip().splitlines() == [proc.stderr.strip()] and "'A0\u00e9'" in proc.stderr, proc.stderr
