@@ -14,7 +14,7 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon, mapping
 
-from dggs.errors import DggsValueError
+from dggs.errors import CoordinateError, DggsValueError
 from dggs.geometry._parallel import parallel
 
 from . import _codec, _kpoints
@@ -80,11 +80,19 @@ def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
     ['C32', 'A50']
     """
     if type(lat) in _SCALARS and type(lng) in _SCALARS and type(level) is int and 0 <= level <= MAX_LEVEL:
-        found = int(_kpoints.one_point(lat, lng, level))  # the single-point path: no numpy
+        try:
+            a, b = float(lat), float(lng)
+        except OverflowError:
+            raise CoordinateError(f"coordinates ({lat!r}, {lng!r}) are too large to be numbers of degrees") from None
+        found = int(_kpoints.one_point(a, b, level))  # the single-point path: no numpy
         if found:
             return found if as_int else _codec.format_int(found)
     level = check_level(level)
-    if np.ndim(lat) == 0 and np.ndim(lng) == 0:
+    try:
+        scalar = np.ndim(lat) == 0 and np.ndim(lng) == 0
+    except ValueError:  # a ragged nested list
+        raise CoordinateError("coordinates must be numbers or equal-length arrays of numbers, not ragged lists") from None
+    if scalar:
         a, b = as_float_scalar(lat, "latitude"), as_float_scalar(lng, "longitude")
         cell = int(_kpoints.one_point(a, b, level))
         if cell == 0:
@@ -252,15 +260,23 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     if properties is None:
         rows = ({} for _ in range(n))
     elif isinstance(properties, dict):
+        bad = [k for k, v in properties.items() if isinstance(v, (str, bytes)) or not hasattr(v, "__len__")]
+        if bad:
+            raise DggsValueError(f"property {bad[0]!r} must be a column (a sequence of {n} values), not {properties[bad[0]]!r}")
         cols = {k: list(v) for k, v in properties.items()}
         for k, col in cols.items():
             if len(col) != n:
                 raise DggsValueError(f"property {k!r} has {len(col)} values for {n} cells")
         rows = ({k: _plain(col[i]) for k, col in cols.items()} for i in range(n))
     else:
+        if isinstance(properties, (str, bytes)) or not hasattr(properties, "__iter__"):
+            raise DggsValueError(f"properties must be a dict of columns or a list of dicts, not {properties!r}")
         listed = list(properties)
         if len(listed) != n:
             raise DggsValueError(f"properties has {len(listed)} rows for {n} cells")
+        odd = next((r for r in listed if not hasattr(r, "keys")), None)
+        if odd is not None:
+            raise DggsValueError(f"properties rows must be dicts, not {odd!r}")
         rows = ({k: _plain(v) for k, v in dict(r).items()} for r in listed)
     from . import _khier
 
