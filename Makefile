@@ -13,7 +13,7 @@ BENCH_STAMP := $(BENCH_VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray]'
+	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector]'
 	touch $(STAMP)
 
 demo: $(STAMP)

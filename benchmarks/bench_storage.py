@@ -9,6 +9,13 @@ Run::
 
     .venv/bin/python benchmarks/bench_storage.py            # 1,000,000 points
     .venv/bin/python benchmarks/bench_storage.py --rows 100000 --level 10
+    .venv/bin/python benchmarks/bench_storage.py --baseline 125802  # ratio to an earlier run
+
+``--baseline`` takes the end-to-end ``ingest_csv`` rows/s of an earlier run
+(e.g. the hand-written CSV parser before pyarrow: 125,802 rows/s on the
+reference machine) and reports this run's ratio to it.  The "CSV reader
+alone" row times :func:`dggs.storage.readers_csv.csv_batches` without a store
+(pyarrow parse, record and line accounting, numeric conversion).
 """
 
 from __future__ import annotations
@@ -50,6 +57,14 @@ def make_csv(path: Path, rows: int, seed: int = 0) -> None:
             )
 
 
+def read_only(path: Path, batch_size: int) -> int:
+    """Run the CSV reader over ``path`` as an ingest would (numeric types known), no store."""
+    from dggs.storage.readers_csv import csv_batches
+
+    types = {"count": "INTEGER", "value": "REAL"}
+    return sum(b.consumed for b in csv_batches(path, "lat", "lng", ["count", "value"], batch_size, types=types))
+
+
 def timed(fn, repeat: int = 5) -> float:
     """Median wall time of ``fn()`` in seconds."""
     times = []
@@ -67,6 +82,8 @@ def main() -> None:
     parser.add_argument("--level", type=int, default=12)
     parser.add_argument("--batch-size", type=int, default=10_000)
     parser.add_argument("--dir", default=None, help="work directory (default: a temp dir)")
+    parser.add_argument("--baseline", type=float, default=None,
+                        help="ingest_csv rows/s of an earlier run, to report the ratio")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(dir=args.dir) as tmp:
@@ -95,6 +112,24 @@ def main() -> None:
             ),
         ]
         results.append(("  CPU time of the ingest (both threads)", f"load average before: {load_before:.1f}", f"{cpu:.2f} s"))
+        if args.baseline:
+            results.append(
+                ("  ratio to the baseline", f"{args.baseline:,.0f} rows/s", f"**{args.rows / ingest / args.baseline:.2f}x**")
+            )
+        t0 = time.perf_counter()
+        with CellStore(Path(tmp) / "text.db") as store:
+            store.ingest_csv(
+                csv_path, values={"id": str, "count": int, "value": float}, level=args.level,
+                batch_size=args.batch_size,
+            )
+        t = time.perf_counter() - t0
+        results.append(
+            ("ingest_csv with a text column too (id:str)", f"level {args.level}", f"{t:.2f} s = **{args.rows / t:,.0f} rows/s**")
+        )
+        t = timed(lambda: read_only(csv_path, args.batch_size), repeat=1)
+        results.append(
+            ("CSV reader alone (pyarrow, no store)", f"batch {args.batch_size:,}", f"{t:.2f} s = {args.rows / t:,.0f} rows/s")
+        )
         t0 = time.perf_counter()
         with CellStore(db_path) as store:
             again = store.ingest_csv(csv_path, values=["count", "value"], level=args.level)

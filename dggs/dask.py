@@ -28,12 +28,13 @@ Examples
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 
 import numpy as np
 
 from dggs.errors import DggsValueError
-from dggs.index.cellid import check_level
+from dggs.index.cellid import check_level, int_to_str
 from dggs.index.points import latlng_to_cell
 
 try:  # the optional extra
@@ -113,11 +114,64 @@ def aggregate(
     return out
 
 
-def to_parquet(ddf: dd.DataFrame, path: str, cell: str = "cell", **kwargs) -> None:
-    """Write Parquet partitioned by base cell (``face=A`` ... ``face=T`` folders)."""
+def _write_faces(pdf: pd.DataFrame, path: str, cell: str, part: int, densify: int | None, kwargs: dict) -> int:
+    """Write one partition as GeoParquet files ``path/face=X/part.{part}.parquet``; return the rows written."""
+    from dggs.arrow import cells_to_table, write_geoparquet
+
+    if not len(pdf):
+        return 0
+    ids = pdf[cell]
+    if ids.dtype.kind in "iu":
+        ids = pd.Series(int_to_str(ids.to_numpy(np.uint64)), index=pdf.index)
+    faces = ids.astype(str).str.slice(0, 1).to_numpy()
+    props = pdf.drop(columns=[cell])
+    for face in np.unique(faces):
+        rows = np.flatnonzero(faces == face)
+        table = cells_to_table(pdf[cell].iloc[rows].to_numpy(), props.iloc[rows].reset_index(drop=True), densify)
+        if cell != "cell":
+            table = table.rename_columns([cell if c == "cell" else c for c in table.column_names])
+        folder = os.path.join(path, f"face={face}")
+        os.makedirs(folder, exist_ok=True)
+        write_geoparquet(table, os.path.join(folder, f"part.{part}.parquet"), **kwargs)
+    return len(pdf)
+
+
+def to_parquet(
+    ddf: dd.DataFrame, path: str, cell: str = "cell", *, geometry: bool = True, densify: int | None = 16, **kwargs
+) -> None:
+    """Write Parquet partitioned by base cell (``face=A`` ... ``face=T`` folders).
+
+    With ``geometry`` (the default) every file is GeoParquet 1.1, written by
+    pyarrow from each partition (:func:`dggs.arrow.cells_to_table`): the
+    string id column ``cell``, an int64 ``cell_id`` column, the other
+    columns, a ``bbox`` covering struct and a WKB ``geometry`` column (the
+    cell polygon, ``densify`` points per curved edge), with ``geo``
+    metadata; each file is written under a temporary name and renamed when
+    complete.  ``geopandas.read_parquet(path)``, DuckDB's
+    ``read_parquet(path || '/*/*.parquet', hive_partitioning = true)`` and
+    :func:`read_parquet` read it.  ``kwargs`` go to
+    ``pyarrow.parquet.write_table``.  A frame indexed by cell (the output of
+    :func:`aggregate`) is written with its index as the ``cell`` column.
+
+    ``geometry=False`` writes plain Parquet through Dask (``kwargs`` go to
+    ``dask.dataframe.to_parquet``).
+    """
+    if cell not in ddf.columns and ddf.index.name == cell:
+        ddf = ddf.reset_index()
     if cell not in ddf.columns:
         raise DggsValueError(f"column {cell!r} is not in the dataframe")
-    ddf.assign(face=ddf[cell].str.slice(0, 1)).to_parquet(path, partition_on=["face"], **kwargs)
+    if not geometry:
+        ddf.assign(face=ddf[cell].astype(str).str.slice(0, 1)).to_parquet(path, partition_on=["face"], **kwargs)
+        return
+    for name in ("cell_id", "bbox", "geometry", "face"):
+        if name in ddf.columns and name != cell:
+            raise DggsValueError(f"column {name!r} would clash with a column GeoParquet output adds; rename it")
+    import dask
+
+    os.makedirs(path, exist_ok=True)
+    parts = ddf.to_delayed()
+    write = dask.delayed(_write_faces, pure=False)
+    dask.compute(*(write(part, path, cell, i, densify, kwargs) for i, part in enumerate(parts)))
 
 
 def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs) -> dd.DataFrame:

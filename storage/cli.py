@@ -91,6 +91,8 @@ def _value_types(values: tuple[str, ...]) -> list[str] | dict[str, str]:
               help="Stop at the first bad row, or skip bad rows (kept in table rejects).")
 @click.option("--replace", is_flag=True, help="Forget what an earlier ingest of INPUT stored, then ingest it.")
 @click.option("--encoding", default="utf-8", show_default=True, help="Text encoding of a CSV.")
+@click.option("--layer", default=None,
+              help="Layer of a GeoPackage (or other multi-layer file) [default: the first].")
 @click.option("--progress/--no-progress", default=None, help="Progress bar [default: on a terminal].")
 def bin_(
     input_path: str,
@@ -104,9 +106,11 @@ def bin_(
     on_error: str,
     replace: bool,
     encoding: str,
+    layer: str | None,
     progress: bool | None,
 ) -> None:
-    """Bin the points of INPUT (CSV or GeoJSON) into cells and store them in DB.
+    """Bin the points of INPUT (CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf
+    or GeoParquet) into cells and store them in DB.
 
     Batches commit atomically; running the same command again resumes an
     interrupted ingest (or does nothing if it finished), never duplicating
@@ -134,6 +138,10 @@ def bin_(
             if kind == "csv":
                 result = store.ingest_csv(
                     input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common
+                )
+            elif kind == "vector":
+                result = store.ingest_vector(
+                    input_path, layer=layer, values=declared or None, crs=crs, **common
                 )
             else:
                 result = store.ingest_geojson(input_path, values=declared or None, **common)
@@ -198,17 +206,37 @@ def query(
 @click.argument("db", type=click.Path(exists=True, dir_okay=False))
 @click.option("--level", type=int, required=True, help="Level to roll up to.")
 @click.option("--column", default=None, help="Value column to summarise (count only without).")
-@click.option("--geojson", "out", required=True, type=click.Path(dir_okay=False), help="GeoJSON file to write.")
-def export(db: str, level: int, column: str | None, out: str) -> None:
-    """Write the --level cells of DB with their statistics as GeoJSON polygons.
+@click.option("--out", "-o", "out", type=click.Path(dir_okay=False), default=None,
+              help="File to write (.geojson, .parquet, .gpkg, .fgb).")
+@click.option("--format", "fmt", type=click.Choice(["geojson", "geoparquet", "gpkg", "fgb"]), default=None,
+              help="Output format [default: from the --out extension].")
+@click.option("--geojson", "geojson", type=click.Path(dir_okay=False), default=None,
+              help="GeoJSON file to write (the same as --out FILE --format geojson).")
+@click.option("--densify", type=click.IntRange(min=0), default=16, show_default=True,
+              help="Points added along each curved cell edge.")
+def export(db: str, level: int, column: str | None, out: str | None, fmt: str | None, geojson: str | None,
+           densify: int) -> None:
+    """Write the --level cells of DB with their statistics as polygons.
+
+    GeoJSON (RFC 7946), GeoParquet 1.1 (WKB geometry, bbox covering, cell
+    and cell_id columns), GeoPackage or FlatGeobuf (these two need geopandas
+    and pyogrio).  The file appears whole or not at all.
 
     \b
-    Example:
+    Examples:
       dggs export cities.db --level 5 --column population --geojson cells.geojson
+      dggs export cities.db --level 5 --column population -o cells.parquet
+      dggs export cities.db --level 5 --format gpkg -o cells.gpkg
     """
+    if geojson is not None:
+        if out is not None or fmt not in (None, "geojson"):
+            raise click.UsageError("--geojson FILE is --out FILE --format geojson: give one or the other")
+        out, fmt = geojson, "geojson"
+    if out is None:
+        raise click.UsageError("give the file to write: --out FILE (or --geojson FILE)")
     with _open(db) as store:
-        collection = store.to_geojson(level, column, out)
-    click.echo(f"wrote {len(collection['features']):,} cells to {out}")
+        written = store.export(out, level, column, format=fmt, densify=densify)
+    click.echo(f"wrote {written:,} cells to {out}")
 
 
 @click.command()

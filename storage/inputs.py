@@ -16,13 +16,13 @@ from typing import Any
 
 from dggs.errors import DggsValueError, StorageError
 
-from . import readers, readers_arrays, readers_geojson
+from . import readers, readers_arrays, readers_csv, readers_geojson, readers_vector
 from .connection import Connection
 from .ingest import IngestOptions, IngestResult, run_ingest
 from .schema import BASE_COLUMNS, check_column_name
 from .sources import file_info, find_earlier_version
 
-__all__ = ["ingest_csv", "ingest_geojson", "ingest_records", "ingest_points", "ingest_dataframe"]
+__all__ = ["ingest_csv", "ingest_geojson", "ingest_vector", "ingest_records", "ingest_points", "ingest_dataframe"]
 
 Values = Sequence[str] | Mapping[str, Any] | None
 
@@ -87,7 +87,7 @@ def ingest_csv(
         raise DggsValueError(f"delimiter must be one character (not a quote or newline), not {delimiter!r}")
     level = store.resolve_level(level)
     names, declared = value_spec(values)
-    header = readers.csv_header(file, delimiter, encoding)
+    header = readers_csv.csv_header(file, delimiter, encoding)
     readers.check_columns(file, header, [lat, lng, *names])  # before the source is registered
     info = _identity(store, "csv", file, str(path), options.replace)
     batch_size = options.batch_size
@@ -97,7 +97,7 @@ def ingest_csv(
         kind="csv",
         name=str(path),
         params={"format": "csv", "lat": lat, "lng": lng, "values": names, "delimiter": delimiter},
-        batches=lambda skip, types: readers.csv_batches(
+        batches=lambda skip, types: readers_csv.csv_batches(
             file, lat, lng, names, batch_size, skip, delimiter, types, encoding
         ),
         level=level,
@@ -148,6 +148,61 @@ def ingest_geojson(
         level=level,
         declared=declared,
         options=options,
+        merge_rows=merge_rows,
+        file_info=info,
+    )
+
+
+def _default_values(path: Any, keys: Iterable[Any]) -> list[str]:
+    """Every property name except the built-in columns; refuse names differing only in case."""
+    seen: dict[str, str] = {}
+    for key in keys:
+        if isinstance(key, str) and key.lower() not in BASE_COLUMNS:
+            if key.lower() in seen and seen[key.lower()] != key:
+                raise DggsValueError(
+                    f"{path}: properties {seen[key.lower()]!r} and {key!r} differ only in case "
+                    "(SQLite column names ignore case); pass values= to choose"
+                )
+            seen.setdefault(key.lower(), key)
+    return list(seen.values())
+
+
+def ingest_vector(
+    store: Connection,
+    path: str | os.PathLike[str],
+    layer: str | int | None,
+    values: Values,
+    level: int | None,
+    options: IngestOptions,
+    *,
+    merge_rows: int,
+) -> IngestResult:
+    file = _source_file(path)
+    level = store.resolve_level(level)
+    fields, file_crs = readers_vector.layer_fields(file, layer)
+    if values is None:
+        values = _default_values(path, fields)
+    names, declared = value_spec(values)
+    readers.check_columns(file, fields, names)  # before the source is registered
+    crs = options.crs if options.crs is not None else file_crs
+    readers_vector._to_wgs84(crs)  # an unknown CRS fails here
+    name = str(path) if layer is None else f"{path}:{layer}"
+    info = _identity(store, "vector", file, name, options.replace)
+    batch_size = options.batch_size
+    return run_ingest(
+        store,
+        key=f"file:{info['sha256']}" + ("" if layer is None else f":{layer}"),
+        kind="vector",
+        name=name,
+        params={"format": "vector", "layer": layer, "values": names},
+        batches=lambda skip, types: readers_vector.vector_batches(
+            file, layer, names, level, batch_size, skip, crs
+        ),
+        level=level,
+        declared=declared,
+        options=IngestOptions(
+            options.batch_size, options.on_error, options.replace, None, options.progress, options.source
+        ),
         merge_rows=merge_rows,
         file_info=info,
     )

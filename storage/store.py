@@ -20,7 +20,6 @@ Examples
 
 from __future__ import annotations
 
-import json
 import os
 from collections.abc import Sequence
 from typing import Any
@@ -29,17 +28,17 @@ import dggs
 from dggs.errors import DggsValueError
 
 from . import queries
-from .atomic import atomic_write
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
 from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
+from .store_export import ExportMethods
 from .store_ingest import IngestMethods
 
 __all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
 
-class CellStore(IngestMethods):
+class CellStore(IngestMethods, ExportMethods):
     """Points binned into cells at one level, stored in SQLite.
 
     Parameters
@@ -319,38 +318,6 @@ class CellStore(IngestMethods):
         cell = queries.one_cell(cell)
         (level,) = queries.check_cells(self._store, [cell])
         return queries.rows_under(self._store, list(dggs.grid_disk(cell, k)), level)
-
-    @guarded
-    def to_geojson(
-        self,
-        level: int,
-        column: str | None = None,
-        path: str | os.PathLike[str] | None = None,
-        stats: Sequence[str] | None = None,
-    ) -> dict[str, Any]:
-        """Roll up to ``level`` and return (and write) a GeoJSON FeatureCollection.
-
-        One Polygon feature per non-empty cell, with properties ``cell`` and
-        the stats (default count, sum, mean, min, max of ``column``).
-
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0], [2.0], 4, {"v": [3.0]})
-        ...     fc = store.to_geojson(2, "v")
-        ...     fc["features"][0]["properties"]["sum"]
-        3.0
-        """
-        if stats is None:
-            stats = ("count", "sum", "mean", "min", "max") if column else ("count",)
-        rows = self.aggregate(level, column, stats)
-        cells = [row["cell"] for row in rows]
-        props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
-        collection = dggs.cells_to_geojson(cells, properties=props)
-        if path is not None:
-            with atomic_write(path) as fh:
-                json.dump(collection, fh)
-        return collection
 
     @guarded
     def info(self) -> dict[str, Any]:

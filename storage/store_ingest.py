@@ -32,9 +32,12 @@ class IngestMethods:
     path: str
 
     def ingest(self, source: Any, **kwargs: Any) -> IngestResult:
-        """Ingest a file path (CSV or GeoJSON), DataFrame or iterable of dicts.
+        """Ingest a file path (CSV, GeoJSON, GeoPackage...), DataFrame or iterable of dicts.
 
-        Dispatches to :meth:`ingest_csv`, :meth:`ingest_geojson`,
+        Dispatches on a path's extension to :meth:`ingest_csv` (``.csv``,
+        ``.tsv``, ``.txt``), :meth:`ingest_geojson` (``.geojson``, ``.json``)
+        or :meth:`ingest_vector` (``.gpkg``, ``.shp``, ``.fgb``, ``.parquet``),
+        otherwise to
         :meth:`ingest_dataframe` or :meth:`ingest_records`.
 
         Examples
@@ -44,8 +47,11 @@ class IngestMethods:
         1
         """
         if isinstance(source, (str, os.PathLike)):
-            if readers.sniff_kind(source) == "csv":
+            kind = readers.sniff_kind(source)
+            if kind == "csv":
                 return self.ingest_csv(source, **kwargs)
+            if kind == "vector":
+                return self.ingest_vector(source, **kwargs)
             return self.ingest_geojson(source, **kwargs)
         if type(source).__name__ == "DataFrame" and hasattr(source, "columns"):
             return self.ingest_dataframe(source, **kwargs)
@@ -172,6 +178,44 @@ class IngestMethods:
         """
         options = IngestOptions(batch_size, on_error, replace, None, progress)
         return inputs.ingest_geojson(self._store, path, values, level, options, merge_rows=self.merge_rows)
+
+    @guarded
+    def ingest_vector(
+        self,
+        path: str | os.PathLike[str],
+        layer: str | int | None = None,
+        values: Values | None = None,
+        level: int | None = None,
+        *,
+        crs: Any = None,
+        batch_size: int = 10_000,
+        on_error: str = "fail",
+        replace: bool = False,
+        progress: Progress | None = None,
+    ) -> IngestResult:
+        """Bin the features of a GeoPackage, Shapefile, FlatGeobuf or GeoParquet layer.
+
+        Read in batches through pyogrio (GDAL), which is the optional extra
+        ``dggs[vector]``.  Points, MultiPoints, Polygons and MultiPolygons
+        are stored as :meth:`ingest_geojson` stores them.  Coordinates are
+        transformed to WGS84 from the layer's CRS (``crs`` overrides it, for
+        a file that names none or names it wrongly).  ``layer`` is a name or
+        index (default: the first layer).  ``values=None`` keeps every
+        attribute field.  Other parameters as :meth:`ingest_csv`; progress
+        and row numbers count features.
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> import geopandas as gpd  # doctest: +SKIP
+        >>> from shapely.geometry import Point  # doctest: +SKIP
+        >>> path = os.path.join(tempfile.mkdtemp(), "p.gpkg")  # doctest: +SKIP
+        >>> gpd.GeoDataFrame({"v": [1]}, geometry=[Point(2.35, 48.85)], crs=4326).to_file(path)  # doctest: +SKIP
+        >>> CellStore().ingest_vector(path, level=5).rows_inserted  # doctest: +SKIP
+        1
+        """
+        options = IngestOptions(batch_size, on_error, replace, crs, progress)
+        return inputs.ingest_vector(self._store, path, layer, values, level, options, merge_rows=self.merge_rows)
 
     @guarded
     def ingest_records(

@@ -159,3 +159,34 @@ def test_demo_runs_twice_without_duplicates(runner, tmp_path):
 
     printed = [m.group(1) for m in re.finditer(r"^ ?\d+  ([A-T][0-5][0-2]*) ", first.output, re.M)]
     assert printed == [t["cell"] for t in top]
+
+
+def test_export_formats(runner, cities_csv, tmp_path):
+    """--format / --out: GeoParquet (read by geopandas and DuckDB), GeoPackage, FlatGeobuf, GeoJSON."""
+    geopandas = pytest.importorskip("geopandas")
+    duckdb = pytest.importorskip("duckdb")
+    pytest.importorskip("pyogrio")
+    db = tmp_path / "c.db"
+    assert _bin(runner, cities_csv, db).exit_code == 0
+    pq_path = tmp_path / "cells.parquet"
+    res = runner.invoke(main, ["export", str(db), "--level", "4", "--column", "population", "-o", str(pq_path)])
+    assert res.exit_code == 0 and "wrote 4 cells" in res.output, res.output
+    frame = geopandas.read_parquet(pq_path)
+    assert frame["sum"].sum() == 24_449_407 and frame.crs.to_string() == "OGC:CRS84"
+    assert frame["cell_id"].tolist() == [int(i) for i in dggs.str_to_int(frame["cell"].tolist())]
+    total = duckdb.sql(f"SELECT sum(\"sum\"), count(geometry) FROM read_parquet('{pq_path}')").fetchall()[0]
+    assert total == (24_449_407, 4)
+    for fmt, name in (("gpkg", "cells.gpkg"), ("fgb", "cells.fgb"), ("geojson", "cells.out")):
+        out = tmp_path / name
+        res = runner.invoke(main, ["export", str(db), "--level", "3", "--format", fmt, "--out", str(out)])
+        assert res.exit_code == 0, res.output
+        back = geopandas.read_file(out) if fmt != "geojson" else json.loads(out.read_text())["features"]
+        assert len(back) == 4
+    res = runner.invoke(main, ["export", str(db), "--level", "3", "-o", str(tmp_path / "cells.txt")])
+    assert res.exit_code == 1 and "extension" in res.output
+    res = runner.invoke(main, ["export", str(db), "--level", "3"])
+    assert res.exit_code == 2 and "--out" in res.output
+    res = runner.invoke(main, ["export", str(db), "--level", "3", "--geojson", "a.geojson", "--format", "fgb"])
+    assert res.exit_code == 2
+    cells = sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith(("c.db", "cities")))
+    assert cells == ["cells.fgb", "cells.gpkg", "cells.out", "cells.parquet"]  # no temporary file is left

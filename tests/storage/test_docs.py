@@ -26,6 +26,7 @@ MODULES = [
     "dggs.storage.ingest",
     "dggs.storage.store",
     "dggs.storage.store_ingest",
+    "dggs.storage.store_export",
     "dggs.storage.connection",
     "dggs.storage.sources",
     "dggs.storage.inputs",

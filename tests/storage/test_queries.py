@@ -193,3 +193,25 @@ def test_within_a_country_outline(store):
     )
     names = {r["name"] for r in store.within(italy, 6)}
     assert names == {"Rome", "Naples"}
+
+
+def test_to_arrow_and_export_match_aggregate(tmp_path):
+    pa = pytest.importorskip("pyarrow")
+    pq = pytest.importorskip("pyarrow.parquet")
+    with CellStore() as store:
+        _fill(store, 11, 400, 8)
+        rows = store.aggregate(4, "w", ("count", "sum", "max"))
+        table = store.to_arrow(4, "w", ("count", "sum", "max"), densify=2)
+        assert table.column_names == ["cell", "cell_id", "count", "sum", "max", "bbox", "geometry"]
+        assert table.column("cell").to_pylist() == [r["cell"] for r in rows]
+        for stat in ("count", "sum", "max"):
+            assert table.column(stat).to_pylist() == [r[stat] for r in rows]
+        assert table.column("cell_id").type == pa.int64()
+        assert store.export(tmp_path / "a.parquet", 4, "w", ("count", "sum", "max"), densify=2) == len(rows)
+        assert pq.read_table(tmp_path / "a.parquet").equals(table)
+        assert store.export(tmp_path / "a.geojson", 4) == len(rows)
+        with pytest.raises(dggs.DggsValueError, match="format"):
+            store.export(tmp_path / "a.parquet", 4, format="shp")
+        with pytest.raises(dggs.DggsValueError, match="extension"):
+            store.export(tmp_path / "a", 4)
+        assert store.to_arrow(2, "w").num_rows == len(store.aggregate(2))

@@ -1,0 +1,467 @@
+"""Cells as Apache Arrow geometry: WKB and GeoArrow arrays, GeoParquet 1.1 tables.
+
+Every dggs function already takes and returns pyarrow arrays of ids.  This
+module adds the geometry side without a Python loop per cell:
+
+* :func:`cells_to_geoarrow` gives the cells' polygons as a pyarrow array,
+  WKB (``binary``) or native GeoArrow (``polygon`` / ``multipolygon``
+  nested lists of ``struct<x, y>``).  Ordinary cells' WKB is written
+  straight from the kernel's boundary arrays with numpy (one fixed-size
+  record per cell); only the few cells that touch a pole or cross the
+  antimeridian go through shapely.
+* :func:`cells_to_table` gives a GeoParquet 1.1 table: ``cell`` (string id),
+  ``cell_id`` (int64 id), any property columns, a ``bbox`` covering struct
+  and a WKB ``geometry`` column, with the ``geo`` schema metadata.
+* :func:`write_geoparquet` writes such a table whole or not at all.
+
+Coordinates are (lng, lat) degrees on WGS84, i.e. OGC:CRS84, the GeoParquet
+default, so the ``geo`` metadata leaves ``crs`` out.
+
+Examples
+--------
+>>> import pyarrow as pa
+>>> from dggs.arrow import cells_to_geoarrow, cells_to_table
+>>> wkb = cells_to_geoarrow(pa.array(["C401", "C402"]))
+>>> wkb.type, len(wkb)
+(DataType(binary), 2)
+>>> import shapely
+>>> shapely.from_wkb(wkb.to_numpy(zero_copy_only=False))[0].geom_type
+'Polygon'
+>>> cells_to_table(["C401"], {"n": [3]}).column_names
+['cell', 'cell_id', 'n', 'bbox', 'geometry']
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import re
+import shutil
+import tempfile
+from collections.abc import Iterator, Mapping
+from typing import Any
+
+import numpy as np
+import shapely
+
+from dggs.errors import DggsValueError, StorageError
+from dggs.index import _kpoints
+from dggs.index._convert import cells_in
+from dggs.index._coords import check_densify
+from dggs.index._polygons import default_densify, ring_to_geometry, special_rings
+from dggs.index.cellid import int_to_str
+from dggs.index.points import _boundaries
+
+try:
+    import pyarrow as pa
+except ImportError as exc:  # pragma: no cover - pyarrow is in every extra that needs this module
+    raise ImportError("dggs.arrow needs pyarrow: pip install pyarrow") from exc
+
+__all__ = [
+    "cells_to_geoarrow",
+    "cells_to_table",
+    "geo_metadata",
+    "geoarrow_field",
+    "write_geoparquet",
+    "write_cells",
+    "export_format",
+    "EXPORT_FORMATS",
+    "to_geodataframe",
+    "GEOPARQUET_VERSION",
+]
+
+GEOPARQUET_VERSION = "1.1.0"
+_ENCODINGS = ("wkb", "geoarrow")
+_BBOX = pa.struct([("xmin", pa.float64()), ("ymin", pa.float64()), ("xmax", pa.float64()), ("ymax", pa.float64())])
+_XY = pa.struct([("x", pa.float64()), ("y", pa.float64())])
+_WKB_POLYGON = 3
+
+
+def _check_encoding(encoding: str) -> str:
+    if encoding not in _ENCODINGS:
+        raise DggsValueError(f"encoding {encoding!r} is not one of {', '.join(map(repr, _ENCODINGS))}")
+    return encoding
+
+
+def _groups(ids: np.ndarray, densify: int | None) -> list[tuple[np.ndarray, int]]:
+    """(row indices, densify) per group of rows built alike: one group, or one per level's default."""
+    if densify is not None:
+        return [(np.arange(ids.shape[0]), check_densify(densify))]
+    from dggs.index import _khier
+
+    lv = _khier.levels(ids)
+    groups: dict[int, list[np.ndarray]] = {}
+    for level in np.unique(lv):
+        groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
+    return [(np.sort(np.concatenate(parts)), n) for n, parts in groups.items()]
+
+
+def _special_geometries(ids: np.ndarray, densify: int) -> np.ndarray:
+    """Shapely geometries of cells that touch a pole or cross the antimeridian (exact kernel rings)."""
+    out = np.empty(ids.shape[0], dtype=object)
+    buf = np.empty((3 * (densify + 1) + _kpoints.SPECIAL_EXTRA, 2))
+    for i in range(ids.shape[0]):
+        m = _kpoints.special_ring(ids[i], densify, buf)
+        out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
+    return out
+
+
+def _wkb_records(coords: np.ndarray) -> np.ndarray:
+    """(N, L) uint8: the little-endian WKB Polygon of each closed (lng, lat) ring of ``coords`` (N, M, 2)."""
+    n, m = coords.shape[0], coords.shape[1]
+    record = np.dtype([("order", "u1"), ("type", "<u4"), ("rings", "<u4"), ("points", "<u4"), ("xy", "<f8", (m, 2))])
+    out = np.empty(n, dtype=record)
+    out["order"] = 1
+    out["type"] = _WKB_POLYGON
+    out["rings"] = 1
+    out["points"] = m
+    out["xy"] = coords
+    return out.view(np.uint8).reshape(n, record.itemsize)
+
+
+def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: int) -> pa.Array:
+    """A binary array of ``n`` rows from (rows, offsets-from-0, data) chunks, put back in row order."""
+    rows = np.concatenate([c[0] for c in chunks]) if chunks else np.empty(0, np.int64)
+    lengths = np.concatenate([np.diff(c[1]) for c in chunks]) if chunks else np.empty(0, np.int64)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(lengths, out=offsets[1:])
+    data = np.concatenate([c[2] for c in chunks]) if chunks else np.empty(0, np.uint8)
+    arr = pa.LargeBinaryArray.from_buffers(pa.large_binary(), n, [None, pa.py_buffer(offsets), pa.py_buffer(data)])
+    if not np.array_equal(rows, np.arange(n)):
+        order = np.empty(n, dtype=np.int64)
+        order[rows] = np.arange(n)
+        arr = arr.take(pa.array(order))
+    return arr.cast(pa.binary()) if offsets[-1] < 2**31 - 1 else arr
+
+
+def _wkb(ids: np.ndarray, densify: int | None) -> tuple[pa.Array, np.ndarray, set[str]]:
+    """WKB of each cell, its (N, 4) bounds and the geometry types present."""
+    n = ids.shape[0]
+    chunks = []
+    bounds = np.empty((n, 4))
+    types: set[str] = set()
+    for rows, d in _groups(ids, densify):
+        coords = _boundaries(ids[rows], d, lnglat=True)
+        special = special_rings(coords)
+        plain = rows[~special]
+        if plain.size:
+            block = _wkb_records(coords[~special])
+            offsets = np.arange(plain.size + 1, dtype=np.int64) * block.shape[1]
+            chunks.append((plain, offsets, block.reshape(-1)))
+            xy = coords[~special]
+            bounds[plain, :2] = xy.min(axis=1)
+            bounds[plain, 2:] = xy.max(axis=1)
+            types.add("Polygon")
+        if special.any():
+            sel = rows[special]
+            geoms = _special_geometries(ids[sel], d)
+            blobs = shapely.to_wkb(geoms, byte_order=1, output_dimension=2)
+            lengths = np.fromiter((len(b) for b in blobs), dtype=np.int64, count=blobs.shape[0])
+            offsets = np.concatenate([[0], np.cumsum(lengths)])
+            chunks.append((sel, offsets, np.frombuffer(b"".join(blobs), dtype=np.uint8)))
+            bounds[sel] = shapely.bounds(geoms)
+            types.update(g.geom_type for g in geoms)
+    return _binary_array(chunks, n), bounds, types
+
+
+def _geometries(ids: np.ndarray, densify: int | None) -> np.ndarray:
+    """Shapely geometries of the cells (the vectorized path of :func:`dggs.cell_to_polygon`)."""
+    out = np.empty(ids.shape[0], dtype=object)
+    for rows, d in _groups(ids, densify):
+        coords = _boundaries(ids[rows], d, lnglat=True)
+        special = special_rings(coords)
+        out[rows[~special]] = shapely.polygons(coords[~special])
+        if special.any():
+            out[rows[special]] = _special_geometries(ids[rows[special]], d)
+    return out
+
+
+def _geoarrow(ids: np.ndarray, densify: int | None) -> tuple[pa.Array, str]:
+    """Native GeoArrow polygons (or multipolygons where any cell is split), separated x/y."""
+    geoms = _geometries(ids, densify)
+    if geoms.size == 0:
+        kind, coords, offsets = shapely.GeometryType.POLYGON, np.empty((0, 2)), (np.zeros(1, np.int64),) * 2
+    else:
+        kind, coords, offsets = shapely.to_ragged_array(geoms)
+    xy = pa.StructArray.from_arrays([pa.array(coords[:, 0]), pa.array(coords[:, 1])], fields=list(_XY))
+    arr: pa.Array = xy
+    for off in offsets:
+        if off[-1] < 2**31 - 1:
+            arr = pa.ListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int32)), arr)
+        else:  # over 2**31 coordinates (or rings): 64-bit offsets
+            arr = pa.LargeListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int64)), arr)
+    name = "geoarrow.multipolygon" if kind == shapely.GeometryType.MULTIPOLYGON else "geoarrow.polygon"
+    return arr, name
+
+
+def cells_to_geoarrow(cells: Any, densify: int | None = 0, encoding: str = "wkb") -> pa.Array:
+    """The cells' polygons (lng, lat; split at the antimeridian) as a pyarrow geometry array.
+
+    Parameters
+    ----------
+    cells : str, int or array_like of ids (list, numpy, pandas, pyarrow)
+        Cell ids, flattened in order.
+    densify : int or None, default 0
+        Points added along each curved edge; None gives
+        :func:`dggs.cell_to_polygon`'s area-exact default per level.
+    encoding : {"wkb", "geoarrow"}
+        ``"wkb"``: a ``binary`` array of little-endian ISO WKB (``large_binary``
+        past 2 GiB), the same bytes as ``shapely.to_wkb(dggs.cell_to_polygon(cells, densify))``.
+        ``"geoarrow"``: native GeoArrow, ``list<list<struct<x, y>>>``
+        (``geoarrow.polygon``), or one more list level
+        (``geoarrow.multipolygon``) if any cell crosses the antimeridian,
+        as ``geopandas`` does.  :func:`geoarrow_field` gives the field with
+        the extension name for either.
+
+    Returns
+    -------
+    pyarrow.Array
+        One geometry per cell, no nulls.
+
+    Raises
+    ------
+    InvalidCellError, DggsValueError
+        A bad id, densify or encoding.
+
+    Examples
+    --------
+    >>> cells_to_geoarrow(["C401"], encoding="geoarrow").type
+    ListType(list<item: list<item: struct<x: double, y: double>>>)
+    """
+    _check_encoding(encoding)
+    if densify is not None:
+        densify = check_densify(densify)
+    ids, _ = cells_in(cells)
+    ids = ids.reshape(-1)
+    if encoding == "wkb":
+        return _wkb(ids, densify)[0]
+    return _geoarrow(ids, densify)[0]
+
+
+def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = None, densify: int | None = 0) -> pa.Field:
+    """A pyarrow field for a geometry column, with its GeoArrow extension name and CRS.
+
+    ``encoding="wkb"`` gives ``geoarrow.wkb``; for ``"geoarrow"`` pass the
+    ``cells`` (and ``densify``) to learn whether they need
+    ``geoarrow.multipolygon`` rather than ``geoarrow.polygon``.
+
+    Examples
+    --------
+    >>> geoarrow_field().metadata[b"ARROW:extension:name"]
+    b'geoarrow.wkb'
+    """
+    _check_encoding(encoding)
+    meta = {b"ARROW:extension:metadata": json.dumps({"crs": "OGC:CRS84", "crs_type": "authority_code"}).encode()}
+    if encoding == "wkb":
+        return pa.field(name, pa.binary(), nullable=False, metadata={b"ARROW:extension:name": b"geoarrow.wkb", **meta})
+    if cells is None:
+        raise DggsValueError('geoarrow_field(encoding="geoarrow") needs the cells, to tell polygon from multipolygon')
+    ids, _ = cells_in(cells)
+    arr, ext = _geoarrow(ids.reshape(-1), densify if densify is None else check_densify(densify))
+    return pa.field(name, arr.type, nullable=False, metadata={b"ARROW:extension:name": ext.encode(), **meta})
+
+
+def geo_metadata(geometry_types: Any, bbox: Any = None, column: str = "geometry", covering: str | None = "bbox") -> dict:
+    """The GeoParquet 1.1 ``geo`` metadata of a table with one WKB column in OGC:CRS84.
+
+    Examples
+    --------
+    >>> geo_metadata(["Polygon"])["columns"]["geometry"]["covering"]["bbox"]["xmin"]
+    ['bbox', 'xmin']
+    """
+    col: dict[str, Any] = {"encoding": "WKB", "geometry_types": sorted(set(geometry_types))}
+    if bbox is not None:
+        col["bbox"] = [float(v) for v in bbox]
+    if covering:
+        col["covering"] = {"bbox": {k: [covering, k] for k in ("xmin", "ymin", "xmax", "ymax")}}
+    return {"version": GEOPARQUET_VERSION, "primary_column": column, "columns": {column: col}}
+
+
+def _bbox_array(bounds: np.ndarray) -> pa.StructArray:
+    return pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(_BBOX))
+
+
+def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densify: int | None = 16) -> pa.Table:
+    """A GeoParquet 1.1 table of cells: ids, properties, ``bbox`` covering and WKB ``geometry``.
+
+    Parameters
+    ----------
+    cells : str, int or array_like of ids
+        One row per id, in order.
+    properties : dict of columns, pyarrow Table or pandas DataFrame, optional
+        Extra columns, one value per cell (placed after the ids).
+    densify : int or None, default 16
+        Points per curved edge (as :func:`dggs.cells_to_geojson`).
+
+    Returns
+    -------
+    pyarrow.Table
+        Columns ``cell`` (string id), ``cell_id`` (int64 id, same order),
+        the properties, ``bbox`` (struct xmin, ymin, xmax, ymax) and
+        ``geometry`` (WKB); schema metadata ``geo`` as GeoParquet 1.1.
+
+    Raises
+    ------
+    DggsValueError
+        A property column without one value per cell, or named like a
+        column this function writes.
+
+    Examples
+    --------
+    >>> t = cells_to_table(["C401", "C402"], {"n": [1, 2]})
+    >>> t.num_rows, t.column("cell_id").type
+    (2, DataType(int64))
+    """
+    if densify is not None:
+        densify = check_densify(densify)
+    ids, _ = cells_in(cells)
+    ids = ids.reshape(-1)
+    n = ids.shape[0]
+    geometry, bounds, types = _wkb(ids, densify)
+    columns: dict[str, Any] = {
+        "cell": pa.array(int_to_str(ids) if n else np.empty(0, dtype=str), type=pa.string()),
+        "cell_id": pa.array(ids.astype(np.int64), type=pa.int64()),
+    }
+    if properties is not None:
+        if isinstance(properties, pa.Table):
+            props: dict[str, Any] = {name: properties.column(name) for name in properties.column_names}
+        elif hasattr(properties, "columns") and hasattr(properties, "to_numpy"):  # a pandas DataFrame
+            props = {str(name): pa.array(properties[name], from_pandas=True) for name in properties.columns}
+        else:
+            props = dict(properties)
+        for name, values in props.items():
+            if name in ("cell", "cell_id", "bbox", "geometry"):
+                raise DggsValueError(f"property {name!r} clashes with a column of the table; rename it")
+            arr = values if isinstance(values, (pa.Array, pa.ChunkedArray)) else pa.array(values)
+            if len(arr) != n:
+                raise DggsValueError(f"property {name!r} has {len(arr)} values for {n} cells")
+            columns[name] = arr
+    columns["bbox"] = _bbox_array(bounds)
+    columns["geometry"] = geometry
+    table = pa.table(columns)
+    fields = [table.schema.field(i) for i in range(table.num_columns)]
+    fields[-1] = pa.field("geometry", geometry.type, nullable=False)
+    total = None
+    if n:
+        total = [bounds[:, 0].min(), bounds[:, 1].min(), bounds[:, 2].max(), bounds[:, 3].max()]
+    meta = {b"geo": json.dumps(geo_metadata(types, total)).encode()}
+    return table.cast(pa.schema(fields, metadata=meta))
+
+
+
+@contextlib.contextmanager
+def _atomic_file(path: str | os.PathLike[str]) -> Iterator[str]:
+    """A temporary path in a fresh folder next to ``path`` (same name, so GDAL sees the extension);
+    renamed over ``path`` when the block completes, removed otherwise.
+
+    The same contract as :func:`dggs.storage.atomic.atomic_path`, without
+    importing the storage package.
+    """
+    target = os.fspath(path)
+    try:
+        folder = tempfile.mkdtemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp",
+                                  dir=os.path.dirname(target) or ".")
+    except OSError as exc:
+        raise StorageError(f"cannot write {target}: {exc.strerror or exc}") from exc
+    try:
+        tmp = os.path.join(folder, os.path.basename(target))
+        yield tmp
+        with open(tmp, "rb+") as fh:
+            os.fsync(fh.fileno())
+        os.replace(tmp, target)
+    except OSError as exc:
+        raise StorageError(
+            f"cannot write {target}: {exc.strerror or exc}; nothing was written (an existing file is unchanged)"
+        ) from exc
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def write_geoparquet(table: pa.Table, path: str | os.PathLike[str], **kwargs: Any) -> None:
+    """Write a table of :func:`cells_to_table` to a GeoParquet file, whole or not at all.
+
+    The file is written under a temporary name in the same folder and
+    renamed over ``path`` when complete.  ``kwargs`` go to
+    ``pyarrow.parquet.write_table`` (default compression zstd).
+
+    Raises
+    ------
+    StorageError
+        If the file cannot be written; ``path`` is then untouched.
+    """
+    import pyarrow.parquet as pq
+
+    if b"geo" not in (table.schema.metadata or {}):
+        raise DggsValueError("the table has no 'geo' metadata: build it with dggs.arrow.cells_to_table")
+    kwargs.setdefault("compression", "zstd")
+    with _atomic_file(path) as tmp:
+        pq.write_table(table, tmp, **kwargs)
+
+
+#: GDAL drivers of the formats :func:`write_cells` writes through pyogrio.
+_DRIVERS = {"geojson": "GeoJSON", "gpkg": "GPKG", "fgb": "FlatGeobuf"}
+#: The formats :func:`write_cells` writes, and the file extensions that name them.
+EXPORT_FORMATS = ("geojson", "geoparquet", "gpkg", "fgb")
+_EXTENSIONS = {".geojson": "geojson", ".json": "geojson", ".parquet": "geoparquet", ".geoparquet": "geoparquet",
+               ".gpkg": "gpkg", ".fgb": "fgb"}
+
+
+def export_format(path: str | os.PathLike[str], format: str | None = None) -> str:
+    """The format named (checked), or the one the extension of ``path`` implies.
+
+    Examples
+    --------
+    >>> export_format("cells.parquet"), export_format("cells.out", "gpkg")
+    ('geoparquet', 'gpkg')
+    """
+    if format is not None:
+        if format not in EXPORT_FORMATS:
+            raise DggsValueError(f"format {format!r} is not one of {', '.join(EXPORT_FORMATS)}")
+        return format
+    suffix = os.path.splitext(os.fspath(path))[1].lower()
+    if suffix not in _EXTENSIONS:
+        raise DggsValueError(
+            f"cannot tell the format of {os.fspath(path)!r} from its extension {suffix or '(none)'!r}: "
+            f"give a format ({', '.join(EXPORT_FORMATS)}) or use one of {', '.join(_EXTENSIONS)}"
+        )
+    return _EXTENSIONS[suffix]
+
+
+def to_geodataframe(table: pa.Table) -> Any:
+    """A GeoDataFrame (EPSG:4326 axis order lng, lat) of a :func:`cells_to_table` table, without ``bbox``."""
+    import geopandas
+
+    frame = table.drop_columns([c for c in ("bbox", "geometry") if c in table.column_names]).to_pandas()
+    geometry = geopandas.GeoSeries.from_wkb(table.column("geometry").to_numpy(zero_copy_only=False), crs="OGC:CRS84")
+    return geopandas.GeoDataFrame(frame, geometry=geometry.values, crs="OGC:CRS84")
+
+
+def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | None = None) -> str:
+    """Write a :func:`cells_to_table` table as GeoParquet, or through pyogrio as GeoJSON, GeoPackage or FlatGeobuf.
+
+    ``format`` is ``"geoparquet"``, ``"geojson"``, ``"gpkg"`` or ``"fgb"``;
+    by default the extension of ``path`` tells (``.parquet``,
+    ``.geoparquet``, ``.geojson``, ``.json``, ``.gpkg``, ``.fgb``).
+
+    The file is written under a temporary name and renamed over ``path``
+    when complete.  GeoParquet needs only pyarrow; the GDAL formats need
+    geopandas and pyogrio.  Returns the format written.
+
+    Raises
+    ------
+    DggsValueError
+        An unknown format, or a path whose extension names none.
+    StorageError
+        The file cannot be written (``path`` is untouched).
+    """
+    format = export_format(path, format)
+    if format == "geoparquet":
+        write_geoparquet(table, path)
+        return format
+    frame = to_geodataframe(table)
+    layer = re.sub(r"\W", "_", os.path.splitext(os.path.basename(os.fspath(path)))[0]) or "cells"
+    multi = format in ("gpkg", "fgb") and "MultiPolygon" in set(frame.geom_type)
+    with _atomic_file(path) as tmp:
+        frame.to_file(tmp, driver=_DRIVERS[format], engine="pyogrio", layer=layer, promote_to_multi=multi)
+    return format

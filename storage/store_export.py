@@ -1,0 +1,135 @@
+"""The output methods of :class:`~dggs.storage.store.CellStore`: GeoJSON, Arrow and files.
+
+A mixin, so that ``store.py`` stays a short facade; every method rolls the
+store up with :meth:`CellStore.aggregate` and writes whole files only
+(a temporary name renamed over the target).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Sequence
+from typing import Any
+
+import dggs
+
+from . import queries
+from .atomic import atomic_write
+from .connection import guarded
+
+__all__ = ["ExportMethods"]
+
+
+class ExportMethods:
+    """``to_geojson``, ``to_arrow`` and ``export`` (mixed into CellStore)."""
+
+    aggregate: Any  # provided by CellStore
+
+    @guarded
+    def to_geojson(
+        self,
+        level: int,
+        column: str | None = None,
+        path: str | os.PathLike[str] | None = None,
+        stats: Sequence[str] | None = None,
+        densify: int | None = 16,
+    ) -> dict[str, Any]:
+        """Roll up to ``level`` and return (and write) a GeoJSON FeatureCollection.
+
+        One Polygon feature per non-empty cell, with properties ``cell`` and
+        the stats (default count, sum, mean, min, max of ``column``).
+
+        Examples
+        --------
+        >>> with dggs.storage.CellStore() as store:
+        ...     _ = store.ingest_points([1.0], [2.0], 4, {"v": [3.0]})
+        ...     fc = store.to_geojson(2, "v")
+        ...     fc["features"][0]["properties"]["sum"]
+        3.0
+        """
+        rows = self.aggregate(level, column, queries.export_stats(column, stats))
+        cells = [row["cell"] for row in rows]
+        props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
+        collection = dggs.cells_to_geojson(cells, properties=props, densify=densify)
+        if path is not None:
+            with atomic_write(path) as fh:
+                json.dump(collection, fh)
+        return collection
+
+    @guarded
+    def to_arrow(
+        self,
+        level: int,
+        column: str | None = None,
+        stats: Sequence[str] | None = None,
+        densify: int | None = 16,
+    ) -> Any:
+        """Roll up to ``level`` and return a GeoParquet-ready pyarrow Table (needs pyarrow).
+
+        One row per non-empty cell: ``cell`` (string id), ``cell_id`` (int64
+        id), the stats (default count, sum, mean, min, max of ``column``),
+        ``bbox`` (struct xmin, ymin, xmax, ymax) and ``geometry`` (WKB
+        polygons in lng/lat, OGC:CRS84), with GeoParquet 1.1 ``geo`` metadata
+        (:func:`dggs.arrow.cells_to_table`).
+
+        Examples
+        --------
+        >>> with dggs.storage.CellStore() as store:
+        ...     _ = store.ingest_points([1.0, 1.1], [2.0, 2.1], 4, {"v": [3.0, 4.0]})
+        ...     table = store.to_arrow(2, "v", ("count", "sum"))
+        ...     table.column_names, table.column("sum").to_pylist()
+        (['cell', 'cell_id', 'count', 'sum', 'bbox', 'geometry'], [7.0])
+        """
+        from dggs.arrow import cells_to_table
+
+        stats = queries.export_stats(column, stats)
+        rows = self.aggregate(level, column, stats)
+        return cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
+
+    @guarded
+    def export(
+        self,
+        path: str | os.PathLike[str],
+        level: int,
+        column: str | None = None,
+        stats: Sequence[str] | None = None,
+        *,
+        format: str | None = None,
+        densify: int | None = 16,
+    ) -> int:
+        """Roll up to ``level`` and write the cells with their stats to a file; return the cell count.
+
+        ``format`` is ``"geojson"`` (RFC 7946, no extra needed),
+        ``"geoparquet"`` (GeoParquet 1.1, see :meth:`to_arrow`; needs
+        pyarrow), ``"gpkg"`` or ``"fgb"`` (through geopandas and pyogrio);
+        by default it follows the extension of ``path`` (``.geojson``,
+        ``.json``, ``.parquet``, ``.geoparquet``, ``.gpkg``, ``.fgb``).  The
+        file is written under a temporary name and renamed over ``path``
+        when complete: an error leaves the old file (or none).
+
+        Raises
+        ------
+        DggsValueError
+            An unknown format or extension, or bad level/column/stats
+            (as :meth:`aggregate`).
+        StorageError
+            If the file cannot be written.
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> out = os.path.join(tempfile.mkdtemp(), "cells.geojson")
+        >>> with dggs.storage.CellStore() as store:
+        ...     _ = store.ingest_points([1.0, 50.0], [2.0, 60.0], 4)
+        ...     store.export(out, 1)
+        2
+        """
+        fmt = queries.export_format(path, format)
+        if fmt == "geojson":
+            return len(self.to_geojson(level, column, path, stats, densify)["features"])
+        from dggs.arrow import write_cells
+
+        table = self.to_arrow(level, column, stats, densify)
+        write_cells(table, path, fmt)
+        return int(table.num_rows)
