@@ -1,4 +1,4 @@
-"""Polygon fill: the cells whose centres lie in a (Multi)Polygon."""
+"""Polygon fill: the cells whose centres lie in, that lie wholly in, or that touch a (Multi)Polygon."""
 
 from __future__ import annotations
 
@@ -13,9 +13,13 @@ from dggs.errors import DggsValueError
 from . import _codec, _khier, _kpoints
 from .cellid import check_level
 from .hierarchy import check_size, get_base_cells
+from ._polygons import default_densify, rings_to_geometries
 from .points import _boundaries
 
-__all__ = ["polygon_to_cells"]
+__all__ = ["polygon_to_cells", "FILL_MODES"]
+
+#: The fill modes of :func:`polygon_to_cells`.
+FILL_MODES = ("center", "contains", "overlaps")
 
 def _wrap_polygon(poly):
     """Fold parts of a lng/lat polygon beyond +-180 back into -180..180."""
@@ -166,14 +170,36 @@ def _centres_inside(target, ids: np.ndarray) -> np.ndarray:
     return shapely.contains_xy(target, lng, lat)
 
 
-def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int | None = None) -> np.ndarray:
-    """Cells at ``level`` whose centres lie inside a polygon (lng/lat, WGS84).
+def polygon_to_cells(
+    polygon, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
+) -> np.ndarray:
+    """Cells at ``level`` whose centres lie in, that lie wholly in, or that touch a polygon (lng/lat, WGS84).
 
     Holes are respected.  A polygon that crosses the antimeridian may be given
     with longitudes beyond 180 (e.g. 170..190) or as a MultiPolygon split at
     180.  The search descends the hierarchy: cells far outside are dropped
     early, cells well inside are expanded without testing, and only cells on
-    the polygon's boundary have their centres tested.
+    the polygon's boundary are tested.
+
+    ``mode`` chooses the test (h3's containment modes):
+
+    - ``"center"`` (default): cells whose centre lies inside the polygon.
+      Each point goes to one cell, so fills of polygons that tile the plane
+      tile the cells.
+    - ``"contains"``: cells lying wholly inside the polygon (a subset of
+      ``"center"``).
+    - ``"overlaps"``: every cell that touches the polygon, its boundary
+      included; their union covers the polygon (a superset of ``"center"``).
+
+    Cells have curved edges.  ``"contains"`` and ``"overlaps"`` judge each
+    boundary cell by its densified polygon, exactly the one
+    :func:`dggs.cell_to_polygon` gives (256 points per edge at levels 2-12,
+    see docs/grid.md), with shapely's planar predicates in lng/lat
+    (``contains`` and ``intersects``), the same plane in which the polygon's
+    own edges are straight: a cell with an edge on the polygon's boundary is
+    contained, a cell that meets it at one point overlaps.  Cells far from the
+    polygon's boundary are decided by footprint circles 1.5x their
+    centre-to-corner distance, never by an edge test.
 
     Parameters
     ----------
@@ -181,6 +207,8 @@ def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int |
         Coordinates as (lng, lat) degrees.
     level : int
         Level of the cells to return.
+    mode : {"center", "contains", "overlaps"}
+        Which cells to return (above).
     as_int : bool
         Return 64-bit integer ids (uint64) instead of strings.
     max_cells : int, optional
@@ -195,7 +223,7 @@ def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int |
     Raises
     ------
     DggsValueError
-        Not a (valid) shapely polygon, or latitudes outside -90..90.
+        Not a (valid) shapely polygon, latitudes outside -90..90, or an unknown ``mode``.
     TooManyCellsError
         The result would exceed ``max_cells``.
 
@@ -205,19 +233,41 @@ def polygon_to_cells(polygon, level: int, as_int: bool = False, max_cells: int |
     >>> cells = polygon_to_cells(box(-10, -10, 10, 10), 6)
     >>> len(cells), str(cells[0])
     (276, 'C300002')
+    >>> [len(polygon_to_cells(box(-10, -10, 10, 10), 6, mode=m)) for m in ("contains", "center", "overlaps")]
+    [232, 276, 338]
     """
     level = check_level(level)
+    if mode not in FILL_MODES:
+        raise DggsValueError(f"mode {mode!r} must be one of {', '.join(map(repr, FILL_MODES))}")
     if not isinstance(polygon, (Polygon, MultiPolygon)):
         raise DggsValueError(f"polygon must be a shapely Polygon or MultiPolygon, not {type(polygon).__name__}")
-    found = _fill(polygon, level, max_cells) if not polygon.is_empty else np.zeros(0, dtype=np.uint64)
+    found = _fill(polygon, level, max_cells, mode=mode) if not polygon.is_empty else np.zeros(0, dtype=np.uint64)
     if as_int:
         return found
     codes, _ = _codec.format_u32(found)
     return codes.view(f"<U{max(codes.shape[1], 1)}").reshape(-1)
 
 
-def _fill(polygon, level: int, max_cells: int | None, work: dict | None = None) -> np.ndarray:
-    """Sorted uint64 ids of the cells at ``level`` whose centres lie in ``polygon``.
+def _cell_geometries(ids: np.ndarray, level: int) -> np.ndarray:
+    """The cells' polygons as :func:`dggs.cell_to_polygon` draws them (default densification)."""
+    n = default_densify(level)
+    return rings_to_geometries(_boundaries(ids, n, lnglat=True), ids, n)
+
+
+def _edge_test(target, ids: np.ndarray, level: int, mode: str) -> np.ndarray:
+    """Which cells lie wholly in (``"contains"``) or touch (``"overlaps"``) the target."""
+    if ids.size == 0:
+        return np.zeros(0, dtype=bool)
+    geoms = _cell_geometries(ids, level)
+    if mode == "contains":
+        return shapely.contains(target, geoms)
+    return shapely.intersects(target, geoms)
+
+
+def _fill(
+    polygon, level: int, max_cells: int | None, work: dict | None = None, mode: str = "center"
+) -> np.ndarray:
+    """Sorted uint64 ids of the cells at ``level`` in ``polygon`` by ``mode`` (see :func:`polygon_to_cells`).
 
     ``work``, if given, counts the cells classified (``"classified"``) and the
     centres tested at the target level (``"tested"``): the work, independent of
@@ -240,7 +290,19 @@ def _fill(polygon, level: int, max_cells: int | None, work: dict | None = None) 
     accepted: list[np.ndarray] = []
     total = 0
     for current in range(level + 1):
-        if current >= level - _DIRECT and current >= _COARSE or current == level:
+        if mode != "center" and current == level:
+            # the target level: footprints decide the cells far from the boundary, the
+            # cells' own (densified) polygons the others
+            hit, inside = _classify(target, candidates, current, buffers)
+            if work is not None:
+                work["classified"] += int(candidates.shape[0])
+            edge = candidates[hit & ~inside]
+            if work is not None:
+                work["tested"] += int(edge.shape[0])
+            accepted.append(candidates[inside])
+            accepted.append(edge[_edge_test(target, edge, level, mode)])
+            break
+        if mode == "center" and (current >= level - _DIRECT and current >= _COARSE or current == level):
             # the last levels: every descendant's centre is tested, no classification
             count, _ = _khier.count_children(candidates, level)
             check_size(total + count, max_cells, "polygon_to_cells")

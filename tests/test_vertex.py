@@ -1,0 +1,149 @@
+"""Vertices: the cells around each corner, against the geometry (shared corner points)."""
+
+from __future__ import annotations
+
+from collections import Counter, defaultdict
+
+import numpy as np
+import pytest
+
+import dggs
+from dggs.errors import DggsValueError, InvalidCellError
+from dggs.index.vertex import (
+    cell_to_vertexes,
+    grid_disk_vertex,
+    is_valid_vertex,
+    vertex_neighbors,
+    vertex_to_cells,
+    vertex_to_latlng,
+)
+
+DECIMALS = 9  # unit-vector coordinates rounded to 1e-9 (6 mm): corners are >= 80 cm apart, computed to ~1e-12
+
+
+def _xyz(latlng: np.ndarray) -> np.ndarray:
+    lat, lng = np.radians(latlng[..., 0]), np.radians(latlng[..., 1])
+    return np.stack([np.cos(lat) * np.cos(lng), np.cos(lat) * np.sin(lng), np.sin(lat)], axis=-1)
+
+
+def geometric_fans(cells: np.ndarray) -> dict[tuple, set[str]]:
+    """Rounded corner point -> the cells whose boundary has that corner."""
+    corners = np.round(_xyz(dggs.cell_to_boundary(cells)), DECIMALS) + 0.0  # no -0.0
+    fans: dict[tuple, set[str]] = defaultdict(set)
+    for cell, pts in zip(cells.tolist(), corners):
+        for p in pts:
+            fans[tuple(p)].add(cell)
+    return fans
+
+
+@pytest.mark.parametrize("level", [0, 1, 2, 3])
+def test_vertex_neighbors_match_shared_corners_whole_level(level):
+    cells = dggs.cell_to_children(dggs.get_base_cells(), level)
+    fans = geometric_fans(cells)
+    expected = defaultdict(set)
+    for members in fans.values():
+        for c in members:
+            expected[c] |= members - {c}
+    got = vertex_neighbors(cells)
+    for cell, row in zip(cells.tolist(), got.tolist()):
+        assert {c for c in row if c} == expected[cell], cell
+    sizes = Counter(len(m) for m in fans.values())
+    if level == 0:
+        assert set(sizes) == {5}
+    else:  # level 1: 30-degree corners only at the icosahedron vertices
+        assert set(sizes) == ({4, 6, 10} if level == 1 else {4, 6, 10, 12})
+        assert sizes[10] == 12  # one per icosahedron vertex
+
+
+@pytest.mark.parametrize("level", [0, 2, 3])
+def test_vertex_ids_name_shared_corners_once(level):
+    cells = dggs.cell_to_children(dggs.get_base_cells(), level)
+    fans = geometric_fans(cells)
+    vids = cell_to_vertexes(cells)
+    assert vids.shape == (cells.size, 3)
+    corners = np.round(_xyz(dggs.cell_to_boundary(cells)), DECIMALS) + 0.0
+    by_point: dict[tuple, set[str]] = defaultdict(set)
+    for row, pts in zip(vids.tolist(), corners):
+        for v, p in zip(row, pts):
+            by_point[tuple(p)].add(v)
+    assert all(len(v) == 1 for v in by_point.values())  # one id per corner point
+    assert len(set(vids.ravel().tolist())) == len(fans)  # and one corner point per id
+    # V - E + F = 2 on the sphere: E = 3F / 2
+    assert len(fans) - 3 * cells.size // 2 + cells.size == 2
+    for point, (vid,) in list(by_point.items())[:200]:
+        assert set(vertex_to_cells(vid)) == fans[point]
+        assert is_valid_vertex(vid)
+        np.testing.assert_allclose(_xyz(np.array(vertex_to_latlng(vid))), point, atol=2e-9)
+
+
+RANDOM = np.random.default_rng(7)
+
+
+def _random_cells(n: int, level: int) -> list[str]:
+    lat = np.degrees(np.arcsin(RANDOM.uniform(-1, 1, n)))
+    lng = RANDOM.uniform(-180, 180, n)
+    return dggs.latlng_to_cell(lat, lng, level).tolist()
+
+
+SPECIAL = [
+    dggs.latlng_to_cell(90, 0, 12),
+    dggs.latlng_to_cell(-90, 0, 12),
+    dggs.latlng_to_cell(10, 180, 12),
+    dggs.latlng_to_cell(58.2825255885, 11.25, 12),  # an icosahedron vertex
+    dggs.latlng_to_cell(58.2825255885, 11.25, 20),
+]
+
+
+@pytest.mark.parametrize("cell", _random_cells(12, 9) + _random_cells(6, 18) + _random_cells(3, 27) + SPECIAL)
+def test_vertex_neighbors_match_geometry_deep(cell):
+    candidates = np.array(dggs.grid_disk(cell, 8))
+    fans = geometric_fans(candidates)
+    expected = set().union(*(m for m in fans.values() if cell in m)) - {cell}
+    assert set(vertex_neighbors(cell)) == expected
+    assert set(dggs.edge_neighbors(cell)) <= expected
+
+
+@pytest.mark.parametrize("cell", _random_cells(10, 7) + SPECIAL)
+def test_vertex_adjacency_is_symmetric(cell):
+    for other in vertex_neighbors(cell):
+        assert cell in vertex_neighbors(other)
+
+
+def test_fan_sizes_around_special_points():
+    v = cell_to_vertexes(dggs.latlng_to_cell(58.2825255885, 11.25, 5))
+    assert sorted(len(vertex_to_cells(x)) for x in v) == [4, 6, 10]
+    assert len(vertex_to_cells(cell_to_vertexes("C40120")[0])) in (4, 6, 12)
+
+
+def test_grid_disk_vertex_rings():
+    c = "C40120"
+    assert grid_disk_vertex(c, 0) == [c]
+    one = grid_disk_vertex(c, 1)
+    assert one == sorted([c, *vertex_neighbors(c)])
+    two = grid_disk_vertex(c, 2)
+    assert set(two) == set(one).union(*(vertex_neighbors(x) for x in one))
+    assert set(dggs.grid_disk(c, 2)) <= set(two)
+
+
+def test_forms_and_arrays():
+    cell = "C40120"
+    as_int = dggs.str_to_int(cell)
+    assert dggs.int_to_str(grid_disk_vertex(as_int, 1)) == grid_disk_vertex(cell, 1)
+    assert dggs.int_to_str(vertex_neighbors(as_int)) == vertex_neighbors(cell)
+    assert cell_to_vertexes(as_int) == cell_to_vertexes(cell)
+    arr = grid_disk_vertex(np.array([cell, "C401"]), 1)
+    assert arr.shape == (2, 17)
+    assert [x for x in arr[1] if x] == grid_disk_vertex("C401", 1)
+
+
+def test_errors():
+    with pytest.raises(InvalidCellError):
+        vertex_neighbors("Z9")
+    with pytest.raises(DggsValueError):
+        grid_disk_vertex("C401", -1)
+    with pytest.raises(dggs.TooManyCellsError):
+        grid_disk_vertex("C40120000", 5, max_cells=50)
+    for bad in ("C401", "C401:3", "C401:0", 5, "Z1:0"):
+        assert not is_valid_vertex(bad)
+        with pytest.raises(DggsValueError):
+            vertex_to_latlng(bad)
