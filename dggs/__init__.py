@@ -57,6 +57,17 @@ from dggs.index.hierarchy import (
 # Traversal
 from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
 
+# Vertices, distances, lines
+from dggs.index.vertex import (
+    cell_to_vertexes,
+    grid_disk_vertex,
+    is_valid_vertex,
+    vertex_neighbors,
+    vertex_to_cells,
+    vertex_to_latlng,
+)
+from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
+
 # Regions and measures
 from dggs.index.polyfill import polygon_to_cells
 from dggs.index.measure import cell_area, level_table
@@ -99,6 +110,16 @@ __all__ = [
     "grid_disk",
     "grid_ring",
     "grid_distance",
+    # vertices, distances, lines
+    "cell_to_vertexes",
+    "vertex_to_latlng",
+    "vertex_to_cells",
+    "is_valid_vertex",
+    "vertex_neighbors",
+    "grid_disk_vertex",
+    "great_circle_distance",
+    "cell_centers_distance",
+    "geodesic_to_cells",
     # regions and measures
     "polygon_to_cells",
     "cell_area",

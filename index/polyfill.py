@@ -26,6 +26,11 @@ def _wrap_polygon(poly):
     minx, _, maxx, _ = poly.bounds
     if minx >= -180.0 and maxx <= 180.0:
         return poly
+    if maxx - minx > 720.0 or minx < -540.0 or maxx > 540.0:
+        raise DggsValueError(
+            f"polygon longitudes {minx}..{maxx} are out of range: give them in -180..180, "
+            "or up to one turn beyond for polygons across the antimeridian"
+        )
     parts = []
     for k in range(int(math.floor((minx + 180) / 360)), int(math.floor((maxx + 180) / 360)) + 1):
         piece = poly.intersection(box(-180.0 + 360 * k, -90.0, 180.0 + 360 * k, 90.0))

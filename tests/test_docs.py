@@ -26,6 +26,9 @@ MODULES = [
     "dggs.index.grid",
     "dggs.index.measure",
     "dggs.index.polyfill",
+    "dggs.index.vertex",
+    "dggs.index.lines",
+    "dggs.storage.store_export",
 ]
 try:  # the optional dask extra
     import dask.dataframe  # noqa: F401
