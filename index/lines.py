@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import math
 
+from functools import lru_cache
+
 import numpy as np
-import pyproj
 
 from dggs.errors import CoordinateError, DggsValueError
 
@@ -28,7 +29,14 @@ from .vertex import _fans
 
 __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells", "DISTANCE_UNITS"]
 
-_GEOD = pyproj.Geod(ellps="WGS84")
+
+
+@lru_cache(maxsize=1)
+def _geod():
+    """pyproj's WGS84 geodesic solver, made on first use (``import dggs`` stays free of pyproj)."""
+    import pyproj
+
+    return pyproj.Geod(ellps="WGS84")
 #: Units of the distance functions: metres and kilometres on WGS84, radians on the sphere.
 DISTANCE_UNITS = ("m", "km", "rad")
 
@@ -45,7 +53,7 @@ def _distance(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.nda
         dlat, dlng = p2 - p1, np.radians(lng2 - lng1)
         h = np.sin(dlat / 2) ** 2 + np.cos(p1) * np.cos(p2) * np.sin(dlng / 2) ** 2
         return 2 * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
-    _, _, d = _GEOD.inv(lng1, lat1, lng2, lat2)
+    _, _, d = _geod().inv(lng1, lat1, lng2, lat2)
     d = np.asarray(d, dtype=np.float64)
     return d / 1000.0 if unit == "km" else d
 
@@ -153,7 +161,7 @@ _CORNER_M = 1e-4
 def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int) -> np.ndarray:
     lat1, lng1, az = line
     n = s.shape[0]
-    lng, lat, _ = _GEOD.fwd(np.full(n, lng1), np.full(n, lat1), np.full(n, az), s)
+    lng, lat, _ = _geod().fwd(np.full(n, lng1), np.full(n, lat1), np.full(n, az), s)
     return latlng_to_cell(np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64), level, as_int=True)
 
 
@@ -247,7 +255,7 @@ def geodesic_to_cells(lat1, lng1, lat2, lng2, level: int, as_int: bool = False, 
         as_float_scalar(v, n) for v, n in ((lat1, "latitude"), (lng1, "longitude"), (lat2, "latitude"), (lng2, "longitude"))
     )
     _check_range(np.array([lat1, lat2]), np.array([lng1, lng2]), "a")
-    az, _, dist = _GEOD.inv(lng1, lat1, lng2, lat2)
+    az, _, dist = _geod().inv(lng1, lat1, lng2, lat2)
     edge = level_table(level)[level]["short_edge_m"]
     check_size(int(math.ceil(2.0 * dist / edge)) + 1, max_cells, "geodesic_to_cells")
     line = (lat1, lng1, az)
