@@ -24,13 +24,12 @@ Conventions
 
 from __future__ import annotations
 
-import llvmlite.ir as llvm_ir
 import numpy as np
 from numba import njit, prange, types
 from numba.extending import intrinsic
 
 from . import _kgrid_tables as _t
-from ._bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL
+from ._bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL, level_of
 from ._bits import is_valid as _bits_is_valid
 from ._kgrid_tables import chart_distance, disk_size_bound, ring_size_bound
 
@@ -60,17 +59,6 @@ _U63 = np.uint64(63)
 
 
 @intrinsic
-def _cttz(typingctx, x):
-    """Trailing zero bits of a nonzero uint64 (one instruction)."""
-    sig = types.uint64(types.uint64)
-
-    def codegen(context, builder, signature, args):
-        return builder.cttz(args[0], llvm_ir.Constant(llvm_ir.IntType(1), 1))
-
-    return sig, codegen
-
-
-@intrinsic
 def _popcount(typingctx, x):
     sig = types.uint64(types.uint64)
 
@@ -78,15 +66,6 @@ def _popcount(typingctx, x):
         return builder.ctpop(args[0])
 
     return sig, codegen
-
-
-@njit(cache=True, nogil=True, inline="always")
-def level_of(cell: np.uint64) -> int:
-    """Level of a valid id: its lowest filled field (as ``_bits.level_of``, by one trailing-zero count)."""
-    low = cell & _LOW54
-    if low:
-        return int(MAX_LEVEL - np.int64(_cttz(low)) // 2)  # type: ignore[call-arg]
-    return 1 if (cell >> np.uint64(54)) & np.uint64(7) else 0
 
 
 # ---------------------------------------------------------------------------
