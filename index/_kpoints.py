@@ -50,8 +50,8 @@ def encode_point(face: int, x: float, y: float, level: int) -> np.uint64:
 def _one_point(lat: float, lng: float, level: int) -> np.uint64:
     if not (-90.0 <= lat <= 90.0) or not np.isfinite(lng):
         return _U0
-    px, py, pz = gk.geodetic_to_unit_fast(lat, lng)
-    face, x, y = gk.forward_unit_fast(_ISEA_CENTRES, _ISEA_FRAMES, px, py, pz)
+    px, py, pz = gk.geodetic_to_unit(lat, lng)
+    face, x, y = gk.forward_unit(_ISEA_CENTRES, _ISEA_FRAMES, px, py, pz)
     return encode_point(face, x, y, level)
 
 

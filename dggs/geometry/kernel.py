@@ -27,7 +27,6 @@ from .snyder import (
     _RT2,
     _SIN_G,
     COT_THETA,
-    FACE_INRADIUS,
     G,
     R_PRIME,
     TAN_G,
@@ -39,7 +38,6 @@ _TWO_PI = 2.0 * math.pi
 _TINY = 2.0**-500
 _UNTINY = 2.0**600
 _SECTOR = 2.0 * math.pi / 3.0
-_INV_SECTOR = 1.0 / _SECTOR
 _SQRT3 = math.sqrt(3.0)
 _HALF_SQRT3 = 0.5 * math.sqrt(3.0)
 _ROT_COS = np.cos(_SECTOR * np.arange(3))
@@ -82,18 +80,6 @@ FACE_CORNERS_CCW = np.ascontiguousarray(FACE_VERTICES[::-1])
 # Latitudes and longitudes
 # ----------------------------------------------------------------------------
 @njit(cache=True, nogil=True)
-def clenshaw_shift(coeffs: np.ndarray, x: float) -> float:
-    """``sum_l coeffs[l-1] sin(2 l x)`` by Clenshaw summation (Karney 2023, eqs. A19-A20)."""
-    s2 = math.sin(2.0 * x)
-    two_c2 = 2.0 * math.cos(2.0 * x)
-    b1 = 0.0
-    b2 = 0.0
-    for i in range(coeffs.shape[0] - 1, -1, -1):
-        b1, b2 = two_c2 * b1 - b2 + coeffs[i], b1
-    return b1 * s2
-
-
-@njit(cache=True, nogil=True)
 def wrap_degrees(lng: float) -> float:
     """A longitude reduced exactly to -180..180 (``fmod`` is exact; no radians first)."""
     if -180.0 <= lng <= 180.0:
@@ -104,16 +90,6 @@ def wrap_degrees(lng: float) -> float:
     elif lng < -180.0:
         lng += 360.0
     return lng
-
-
-@njit(cache=True, nogil=True)
-def geodetic_to_unit(lat_deg: float, lng_deg: float):
-    """Geodetic WGS84 degrees -> unit vector on the authalic sphere."""
-    phi = math.radians(lat_deg)
-    beta = phi + clenshaw_shift(TO_AUTHALIC, phi)
-    lam = math.radians(wrap_degrees(lng_deg))
-    cb = math.cos(beta)
-    return cb * math.cos(lam), cb * math.sin(lam), math.sin(beta)
 
 
 @njit(cache=True, nogil=True)
@@ -137,8 +113,8 @@ def unit_to_geodetic(px: float, py: float, pz: float):
 
 
 @njit(cache=True, nogil=True)
-def geodetic_to_unit_fast(lat_deg: float, lng_deg: float):
-    """:func:`geodetic_to_unit` with two sine-cosine pairs instead of four.
+def geodetic_to_unit(lat_deg: float, lng_deg: float):
+    """Geodetic WGS84 degrees -> unit vector on the authalic sphere, with two sine-cosine pairs.
 
     The authalic shift ``d = beta - phi`` (below 0.0023 rad for WGS84) is
     summed from ``sin 2 phi`` and ``cos 2 phi`` built from ``sin phi`` and
@@ -200,25 +176,7 @@ def sector_forward(sin_az: float, cos_az: float, sin_half_z: float):
 
 @njit(cache=True, nogil=True)
 def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
-    """Unit vector -> ``(face, x, y)`` in the face frame (unit sphere)."""
-    face = nearest_face(centres, px, py, pz)
-    c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
-    n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
-    e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
-    az = math.atan2(e, n)  # eq. 14, clockwise from the reference vertex
-    if az < 0.0:
-        az += _TWO_PI
-    k = min(int(az * _INV_SECTOR), 2)
-    az -= k * _SECTOR
-    sin_half_z = math.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
-    sp, cp = sector_forward(math.sin(az), math.cos(az), sin_half_z)
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    return face, sp * rc + cp * rs, cp * rc - sp * rs
-
-
-@njit(cache=True, nogil=True)
-def forward_unit_fast(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
-    """:func:`forward_unit` choosing the 120-degree sector by half-planes, not an arctangent.
+    """Unit vector -> ``(face, x, y)`` in the face frame (unit sphere); the 120-degree sector by half-planes.
 
     The reduced azimuth's sine and cosine come from rotating (east, north)
     by -120 k degrees, so only the arctangent of ``Az + H`` (eq. 7) remains.
@@ -299,14 +257,6 @@ def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
     oy = cos_z * frames[face, 0, 1] + ct * frames[face, 1, 1] + st * frames[face, 2, 1]
     oz = cos_z * frames[face, 0, 2] + ct * frames[face, 1, 2] + st * frames[face, 2, 2]
     return ox, oy, oz
-
-
-@njit(cache=True, nogil=True)
-def outside_face(x: float, y: float, slack: float) -> bool:
-    """Whether (x, y) lies outside the face triangle by more than ``slack`` (relative)."""
-    s3 = _SQRT3 / 2.0
-    limit = FACE_INRADIUS * (1.0 + slack)
-    return s3 * x + 0.5 * y > limit or -y > limit or -s3 * x + 0.5 * y > limit
 
 
 # ----------------------------------------------------------------------------

@@ -137,31 +137,26 @@ def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
     sin_az, cos_az = np.sin(az), np.cos(az)
     # sin(z/2) without cancellation near the centre: 1 - cos z = sin^2 z / (1 + cos z)
     sin_half_z = np.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
-    sin_p, cos_p = sector_forward(sin_az, cos_az, sin_half_z, NUMPY_OPS)
+    sin_p, cos_p = sector_forward(sin_az, cos_az, sin_half_z)
     rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
     x = sin_p * rc + cos_p * rs
     y = cos_p * rc - sin_p * rs
     return face, x, y
 
 
-#: (sqrt, hypot, atan2, sin) for arrays and for Python floats: the sector formulas serve both.
-NUMPY_OPS = (np.sqrt, np.hypot, np.arctan2, np.sin)
-MATH_OPS = (math.sqrt, math.hypot, math.atan2, math.sin)
+def sector_forward(sin_az, cos_az, sin_half_z):
+    """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')`` (arrays).
 
-
-def sector_forward(sin_az, cos_az, sin_half_z, ops=NUMPY_OPS):
-    """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')``.
-
-    Takes the reduced azimuth's sine and cosine and ``sin(z/2)``; arrays with
-    :data:`NUMPY_OPS`, Python floats with :data:`MATH_OPS`.
+    Takes the reduced azimuth's sine and cosine and ``sin(z/2)``.  The
+    compiled kernel has the per-point twin (:func:`dggs.geometry.kernel.sector_forward`);
+    this numpy form serves :func:`forward_xyz` and the thesis's experiments.
     """
-    sqrt, hypot, atan2, _ = ops
     # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
     u = cos_az + sin_az * COT_THETA
-    sin_half_q = sqrt(0.5 * (1.0 - u / hypot(TAN_G, u)))
+    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
     cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
-    sin_h = sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
-    az_plus_h = atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
+    sin_h = np.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
+    az_plus_h = np.arctan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
     az_plus_h = az_plus_h + (az_plus_h < 0) * (2 * math.pi)
     area = az_plus_h + (G - math.pi)  # eq. 7, spherical excess of triangle ABD
     # eq. 8: Az' = atan2(2 A_G, R'^2 tan^2 g - 2 A_G cot theta), kept as sin/cos.
@@ -249,27 +244,25 @@ def _az_closed(area: np.ndarray) -> np.ndarray:
     )
 
 
-def _az_closed_sincos(area, ops=None):
+def _az_closed_sincos(area):
     """``(sin Az, cos Az)`` of :func:`_az_closed` without the arctangent."""
-    sqrt, hypot, atan2, sin = NUMPY_OPS if ops is None else ops
-    num = 2.0 * sin(G - 0.5 * area) * sin(0.5 * area)
-    den = sin(G - area) - _SIN_G * _COS_SMALL_G
-    r = hypot(num, den)
+    num = 2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area)
+    den = np.sin(G - area) - _SIN_G * _COS_SMALL_G
+    r = np.hypot(num, den)
     return num / r, den / r
 
 
-def sector_distance(sin_az, cos_az, sin_a, cos_a, rho, ops=None):
-    """``(cos z, sin z)`` of a planar point at distance ``rho``, spherical/planar azimuths given.
+def sector_distance(sin_az, cos_az, sin_a, cos_a, rho):
+    """``(cos z, sin z)`` of planar points at distance ``rho``, spherical/planar azimuths given (arrays).
 
-    Snyder's eqs. 9-12 inverted; arrays with :data:`NUMPY_OPS`, floats with :data:`MATH_OPS`.
+    Snyder's eqs. 9-12 inverted.
     """
-    sqrt, hypot, atan2, sin = NUMPY_OPS if ops is None else ops
     u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = sqrt(0.5 * (1.0 - u / hypot(TAN_G, u)))
+    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
     d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
     s = rho / d_prime * sin_half_q  # sin(z/2), eqs. 11-12 inverted
     s = s - (s > 1.0) * (s - 1.0)  # at most 1 (rounding at face vertices)
-    return 1.0 - 2.0 * s * s, 2.0 * s * sqrt(1.0 - s * s)
+    return 1.0 - 2.0 * s * s, 2.0 * s * np.sqrt(1.0 - s * s)
 
 
 def _newton(area: np.ndarray, az0: np.ndarray, tol: float, max_iter: int):
