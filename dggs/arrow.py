@@ -33,19 +33,17 @@ Examples
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import re
-import shutil
-import tempfile
-from collections.abc import Iterator, Mapping
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 import shapely
 
-from dggs.errors import DggsValueError, StorageError
+from dggs._formats import EXPORT_FORMATS, export_format
+from dggs.errors import DggsValueError
 from dggs.index import _kpoints
 from dggs.index._convert import cells_in
 from dggs.index._coords import check_densify
@@ -350,34 +348,6 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
 
 
 
-@contextlib.contextmanager
-def _atomic_file(path: str | os.PathLike[str]) -> Iterator[str]:
-    """A temporary path in a fresh folder next to ``path`` (same name, so GDAL sees the extension);
-    renamed over ``path`` when the block completes, removed otherwise.
-
-    The same contract as :func:`dggs.storage.atomic.atomic_path`, without
-    importing the storage package.
-    """
-    target = os.fspath(path)
-    try:
-        folder = tempfile.mkdtemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp",
-                                  dir=os.path.dirname(target) or ".")
-    except OSError as exc:
-        raise StorageError(f"cannot write {target}: {exc.strerror or exc}") from exc
-    try:
-        tmp = os.path.join(folder, os.path.basename(target))
-        yield tmp
-        with open(tmp, "rb+") as fh:
-            os.fsync(fh.fileno())
-        os.replace(tmp, target)
-    except OSError as exc:
-        raise StorageError(
-            f"cannot write {target}: {exc.strerror or exc}; nothing was written (an existing file is unchanged)"
-        ) from exc
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-
-
 def write_geoparquet(table: pa.Table, path: str | os.PathLike[str], **kwargs: Any) -> None:
     """Write a table of :func:`cells_to_table` to a GeoParquet file, whole or not at all.
 
@@ -394,40 +364,15 @@ def write_geoparquet(table: pa.Table, path: str | os.PathLike[str], **kwargs: An
 
     if b"geo" not in (table.schema.metadata or {}):
         raise DggsValueError("the table has no 'geo' metadata: build it with dggs.arrow.cells_to_table")
+    from dggs.storage.atomic import atomic_path
+
     kwargs.setdefault("compression", "zstd")
-    with _atomic_file(path) as tmp:
+    with atomic_path(path, keep_name=True) as tmp:
         pq.write_table(table, tmp, **kwargs)
 
 
 #: GDAL drivers of the formats :func:`write_cells` writes through pyogrio.
 _DRIVERS = {"geojson": "GeoJSON", "gpkg": "GPKG", "fgb": "FlatGeobuf"}
-#: The formats :func:`write_cells` writes, and the file extensions that name them.
-EXPORT_FORMATS = ("geojson", "geoparquet", "gpkg", "fgb")
-_EXTENSIONS = {".geojson": "geojson", ".json": "geojson", ".parquet": "geoparquet", ".geoparquet": "geoparquet",
-               ".gpkg": "gpkg", ".fgb": "fgb"}
-
-
-def export_format(path: str | os.PathLike[str], format: str | None = None) -> str:
-    """The format named (checked), or the one the extension of ``path`` implies.
-
-    Examples
-    --------
-    >>> export_format("cells.parquet"), export_format("cells.out", "gpkg")
-    ('geoparquet', 'gpkg')
-    """
-    if format is not None:
-        if format not in EXPORT_FORMATS:
-            raise DggsValueError(f"format {format!r} is not one of {', '.join(EXPORT_FORMATS)}")
-        return format
-    suffix = os.path.splitext(os.fspath(path))[1].lower()
-    if suffix not in _EXTENSIONS:
-        raise DggsValueError(
-            f"cannot tell the format of {os.fspath(path)!r} from its extension {suffix or '(none)'!r}: "
-            f"give a format ({', '.join(EXPORT_FORMATS)}) or use one of {', '.join(_EXTENSIONS)}"
-        )
-    return _EXTENSIONS[suffix]
-
-
 def to_geodataframe(table: pa.Table) -> Any:
     """A GeoDataFrame (EPSG:4326 axis order lng, lat) of a :func:`cells_to_table` table, without ``bbox``."""
     import geopandas
@@ -455,6 +400,8 @@ def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | Non
     StorageError
         The file cannot be written (``path`` is untouched).
     """
+    from dggs.storage.atomic import atomic_path
+
     format = export_format(path, format)
     if format == "geoparquet":
         write_geoparquet(table, path)
@@ -462,6 +409,6 @@ def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | Non
     frame = to_geodataframe(table)
     layer = re.sub(r"\W", "_", os.path.splitext(os.path.basename(os.fspath(path)))[0]) or "cells"
     multi = format in ("gpkg", "fgb") and "MultiPolygon" in set(frame.geom_type)
-    with _atomic_file(path) as tmp:
+    with atomic_path(path, keep_name=True) as tmp:
         frame.to_file(tmp, driver=_DRIVERS[format], engine="pyogrio", layer=layer, promote_to_multi=multi)
     return format

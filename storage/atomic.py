@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -31,10 +32,14 @@ __all__ = ["atomic_write", "atomic_path"]
 
 
 @contextlib.contextmanager
-def atomic_path(path: str | os.PathLike[str], suffix: str = "") -> Iterator[str]:
+def atomic_path(path: str | os.PathLike[str], suffix: str = "", keep_name: bool = False) -> Iterator[str]:
     """Yield a temporary path next to ``path``; rename it over ``path`` on success.
 
-    For writers that want a file name (e.g. ``matplotlib.savefig``).
+    For writers that want a file name (e.g. ``matplotlib.savefig``).  With
+    ``keep_name`` the temporary file has ``path``'s own name, in a fresh
+    hidden folder beside it (for writers such as GDAL that choose the format
+    from the extension and refuse an existing empty file); the folder and
+    anything the writer left in it are removed afterwards.
 
     Raises
     ------
@@ -44,9 +49,14 @@ def atomic_path(path: str | os.PathLike[str], suffix: str = "") -> Iterator[str]
         is left behind.
     """
     target = Path(path)
+    folder = None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix + ".tmp", dir=target.parent or ".")
-        os.close(fd)
+        if keep_name:
+            folder = tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
+            tmp = os.path.join(folder, target.name)
+        else:
+            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix + ".tmp", dir=target.parent or ".")
+            os.close(fd)
     except OSError as exc:
         raise StorageError(f"cannot write {path}: {exc.strerror or exc}") from exc
     try:
@@ -60,8 +70,11 @@ def atomic_path(path: str | os.PathLike[str], suffix: str = "") -> Iterator[str]
             "(an existing file is unchanged): free space or choose another place"
         ) from exc
     finally:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
+        if folder is not None:
+            shutil.rmtree(folder, ignore_errors=True)
+        else:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
 
 
 @contextlib.contextmanager

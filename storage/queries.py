@@ -9,12 +9,12 @@ any of the cells*, each row once even if the cells overlap.
 from __future__ import annotations
 
 import json
-import os
 from collections.abc import Sequence
 from typing import Any
 
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
+
 
 from .connection import Connection
 from .schema import quote
@@ -244,32 +244,11 @@ def rows_under(store: Connection, cells: Sequence[str], level: int) -> list[dict
         return list(store.query(sql, (json.dumps([str(c) for c in cells]), level + 1)))
 
 
-# The same table as dggs.arrow's (which needs pyarrow; the GeoJSON export must not): a test keeps them equal.
-EXPORT_FORMATS = ("geojson", "geoparquet", "gpkg", "fgb")
-_EXTENSIONS = {".geojson": "geojson", ".json": "geojson", ".parquet": "geoparquet", ".geoparquet": "geoparquet",
-               ".gpkg": "gpkg", ".fgb": "fgb"}
-
-
 def export_stats(column: str | None, stats: Sequence[str] | None) -> tuple[str, ...]:
     """The stats an export writes: all five of ``column`` by default, the count alone without one."""
     if stats is None:
         return ("count", "sum", "mean", "min", "max") if column else ("count",)
     return tuple(stats)
-
-
-def export_format(path: Any, format: str | None) -> str:
-    """The export format named, or the one the extension of ``path`` implies."""
-    if format is not None:
-        if format not in EXPORT_FORMATS:
-            raise DggsValueError(f"format {format!r} is not one of {', '.join(EXPORT_FORMATS)}")
-        return format
-    suffix = os.path.splitext(os.fspath(path))[1].lower()
-    if suffix not in _EXTENSIONS:
-        raise DggsValueError(
-            f"cannot tell the format of {os.fspath(path)!r} from its extension {suffix or '(none)'!r}: "
-            f"give a format ({', '.join(EXPORT_FORMATS)}) or one of {', '.join(_EXTENSIONS)}"
-        )
-    return _EXTENSIONS[suffix]
 
 
 def stat_columns(rows: list[dict[str, Any]], stats: Sequence[str]) -> dict[str, list[Any]]:

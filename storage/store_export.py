@@ -14,6 +14,8 @@ from typing import Any
 
 import dggs
 
+from dggs._formats import export_format
+
 from . import queries
 from .atomic import atomic_write
 from .connection import guarded
@@ -125,7 +127,7 @@ class ExportMethods:
         ...     store.export(out, 1)
         2
         """
-        fmt = queries.export_format(path, format)
+        fmt = export_format(path, format)
         if fmt == "geojson":
             return len(self.to_geojson(level, column, path, stats, densify)["features"])
         from dggs.arrow import write_cells

@@ -29,6 +29,7 @@ MODULES = [
     "dggs.index.vertex",
     "dggs.index.lines",
     "dggs.storage.store_export",
+    "dggs._formats",
 ]
 try:  # the optional dask extra
     import dask.dataframe  # noqa: F401
