@@ -128,13 +128,7 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
         disk = _kgrid.disk_of(one, k).tolist()
         if disk:
             return [_codec.format_int(c) for c in disk] if type(cell) is str else disk
-    ids, kind = cells_in(cell)
-    width = _kgrid.disk_size_bound(k)
-    check_size(ids.shape[0] * width, max_cells, f"grid_disk with k={k}")
-    out = np.empty((ids.shape[0], width), dtype=np.uint64)
-    run = _kgrid.disk if parallel(ids.shape[0] * width) else _kgrid.disk_serial
-    run(ids, k, out, np.empty(ids.shape[0], dtype=np.int64))
-    return cells_out(out, kind, (width,))
+    return _rows(cell, k, max_cells, "grid_disk", _kgrid.disk_size_bound(k), _kgrid.disk, _kgrid.disk_serial)
 
 
 def grid_ring(cell, k: int = 1, max_cells: int | None = None):
@@ -149,11 +143,15 @@ def grid_ring(cell, k: int = 1, max_cells: int | None = None):
     """
     k = _check_radius(k, "grid_ring")
     check_max_cells(max_cells)
+    return _rows(cell, k, max_cells, "grid_ring", _kgrid.ring_size_bound(k), _kgrid.ring, _kgrid.ring_serial)
+
+
+def _rows(cell, k: int, max_cells, what: str, width: int, threaded, serial):
+    """One sorted row of ``width`` per cell, padded with the null id, from a disk or ring kernel."""
     ids, kind = cells_in(cell)
-    width = _kgrid.ring_size_bound(k)
-    check_size(ids.shape[0] * width, max_cells, f"grid_ring with k={k}")
+    check_size(ids.shape[0] * width, max_cells, f"{what} with k={k}")
     out = np.empty((ids.shape[0], width), dtype=np.uint64)
-    run = _kgrid.ring if parallel(ids.shape[0] * width) else _kgrid.ring_serial
+    run = threaded if parallel(ids.shape[0] * width) else serial
     run(ids, k, out, np.empty(ids.shape[0], dtype=np.int64))
     return cells_out(out, kind, (width,))
 
