@@ -132,6 +132,16 @@ def test_uncompact_rejects_finer_cells():
         dggs.uncompact_cells(["C4011"], 3)
 
 
+def test_shipped_jump_table_equals_the_computed_one():
+    """The kernel loads split26's jump table from dggs/geometry/jump_table.npz: it must be that table."""
+    from dggs.geometry import kernel
+
+    table, packed, maps = kernel.jump_constants()
+    assert np.array_equal(kernel.JUMP_TABLE, table)
+    assert np.array_equal(kernel.JUMP_PACKED, packed)
+    assert np.array_equal(kernel.JUMP_MAPS, maps)
+
+
 def test_jump_table_locate_equals_per_level_descent():
     """The 4-levels-at-once table reproduces the per-level comparisons exactly."""
     from dggs.geometry import snyder

@@ -15,6 +15,7 @@ Functions that take an ``orientation`` take its tables as arrays instead.
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 from numba import njit, prange
@@ -59,8 +60,8 @@ CHILD_T = np.ascontiguousarray(_T)
 LEVEL1_CORNERS = np.ascontiguousarray(LEVEL1)
 
 
-def _jump_constants():
-    """split26's 4-level jump table as flat constants: cell codes, packed digit codes, maps."""
+def jump_constants():
+    """split26's 4-level jump table as flat arrays: cell codes, packed digit codes, maps (computed, ~0.5 s)."""
     table, digit_rows, coef = _jump_table()
     # the 4 digit codes (digit + 1) of each path, packed 2 bits each, first level highest
     packed = np.zeros(81, dtype=np.uint64)
@@ -69,7 +70,21 @@ def _jump_constants():
     return np.ascontiguousarray(table), packed, np.ascontiguousarray(np.stack(coef, axis=1))
 
 
-JUMP_TABLE, JUMP_PACKED, JUMP_MAPS = _jump_constants()
+#: The jump table shipped with the package, so that import does not recompute it
+#: (tests/test_hierarchy.py checks it equals :func:`jump_constants`;
+#: :func:`write_jump_file` rewrites it).
+JUMP_FILE = os.path.join(os.path.dirname(__file__), "jump_table.npz")
+
+
+def _load_jump_constants():
+    try:
+        with np.load(JUMP_FILE) as data:
+            return data["table"], data["packed"], data["maps"]
+    except (OSError, KeyError, ValueError):  # missing or unreadable: compute it
+        return jump_constants()
+
+
+JUMP_TABLE, JUMP_PACKED, JUMP_MAPS = _load_jump_constants()
 _JUMP_SX = _GRID_W / math.sqrt(3.0)
 _JUMP_W2 = _GRID_W + 2
 #: A base cell's corners counter-clockwise: the face vertices in reverse (azimuth) order.
@@ -367,3 +382,10 @@ def inverse_deg(face, x, y, frames, lat, lng):
         px, py, pz = inverse_unit(frames, face[i], x[i], y[i])
         lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
         lng[i] = math.degrees(math.atan2(py, px))
+
+
+
+def write_jump_file() -> None:
+    """Rewrite the shipped jump table from :func:`jump_constants` (after a change to split26)."""
+    table, packed, maps = jump_constants()
+    np.savez_compressed(JUMP_FILE, table=table, packed=packed, maps=maps)
