@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import shapely
 from hypothesis import example, given
 from hypothesis import strategies as st
 
@@ -24,13 +25,27 @@ def to_xyz(lat, lng):
     return np.stack([np.cos(beta) * np.cos(lng), np.cos(beta) * np.sin(lng), np.sin(beta)], axis=-1)
 
 
-def inside_spherical_ring(ring_latlng, lat, lng, slack):
-    """Point inside a CCW ring of points, edges taken as great-circle arcs (on the authalic sphere)."""
+def inside_spherical_ring(ring_latlng, lat, lng, tol):
+    """Point inside (or within ``tol`` radians of) a ring whose edges are great-circle arcs.
+
+    The gnomonic projection about the ring's centre maps great circles to straight lines, so the
+    spherical test becomes a planar one that holds for curved (non-convex) cell edges too; a
+    min-over-edges half-space test does not (it rejected points beside a bowed edge).
+    """
     ring = to_xyz(ring_latlng[:, 0], ring_latlng[:, 1])
     p = to_xyz(np.array([lat]), np.array([lng]))[0]
-    nxt = np.roll(ring, -1, axis=0)
-    side = np.einsum("ij,j->i", np.cross(ring, nxt), p)
-    return side.min() >= -slack
+    centre = ring.mean(axis=0)
+    centre /= np.linalg.norm(centre)
+    e1 = np.cross(centre, [0.0, 0.0, 1.0] if abs(centre[2]) < 0.9 else [1.0, 0.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(centre, e1)
+
+    def plane(v):
+        v = v / (v @ centre)[..., None]  # gnomonic: great circles -> lines
+        return np.stack([v @ e1, v @ e2], axis=-1)
+
+    polygon = shapely.Polygon(plane(ring))
+    return polygon.distance(shapely.Point(plane(p))) <= tol
 
 
 @given(latlngs(), levels())
@@ -38,17 +53,18 @@ def inside_spherical_ring(ring_latlng, lat, lng, slack):
 @example((-90.0, 0.0), dggs.MAX_LEVEL)
 @example((0.0, 180.0), 17)
 @example((0.0, -180.0), 17)
+@example((0.5, 0.0), 3)  # beside a bowed edge: failed CI with a half-space oracle
 @example((58.282525588539, 11.25), 9)
 @example((58.282525588539, 11.25), dggs.MAX_LEVEL)
 def test_point_lies_in_its_cell(p, level):
     lat, lng = p
     cell = dggs.latlng_to_cell(lat, lng, level)
     assert dggs.get_level(cell) == level
-    # the densified boundary (64 points per edge) contains the point; slack covers the
-    # chord-vs-curve gap between boundary points and rounding at deep levels
+    # the densified boundary (64 points per edge) contains the point; the tolerance covers the
+    # arc-vs-curve gap between boundary points (~size/64**2) and rounding at deep levels
     ring = np.array(dggs.cell_to_boundary(cell, densify=64))
     size = np.linalg.norm(np.diff(to_xyz(ring[[0, 65], 0], ring[[0, 65], 1]), axis=0))
-    assert inside_spherical_ring(ring, lat, lng, slack=max(1e-3 * size**2, 1e-15) + 1e-6 * size * size)
+    assert inside_spherical_ring(ring, lat, lng, tol=1e-4 * size + 1e-13)
 
 
 def test_special_points_every_level():
