@@ -11,7 +11,8 @@ API that is not there yet is skipped with a note (see ``_common.note``).
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import Any
+from collections.abc import Callable
 
 import numpy as np
 

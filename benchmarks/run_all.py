@@ -1,6 +1,6 @@
 """Run every benchmark and write BENCHMARKS.md at the repository root.
 
-Runs ``bench_kernel.py``, ``bench_snyder.py`` and ``bench_storage.py`` (each
+Runs ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py`` and ``bench_ingest.py`` (each
 skipped with a note if it is missing or fails) as subprocesses with this
 interpreter, collects the markdown each prints, and writes BENCHMARKS.md: the
 machine, the command, the date, the code state (commit, dirty or clean), the
@@ -30,7 +30,7 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300}  # seconds
+TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400}  # seconds
 
 
 def run_script(name: str, args: list[str], env: dict[str, str]) -> tuple[str, str | None, float]:
@@ -42,8 +42,8 @@ def run_script(name: str, args: list[str], env: dict[str, str]) -> tuple[str, st
     print(f"running {name} {' '.join(args)}", file=sys.stderr, flush=True)
     t0 = time.perf_counter()
     try:
-        proc = subprocess.run([sys.executable, str(path), *args], cwd=ROOT, env=env, stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True, timeout=TIMEOUT[name])
+        proc = subprocess.run([sys.executable, str(path), *args], cwd=ROOT, env=env, capture_output=True,
+                              text=True, timeout=TIMEOUT[name])
     except subprocess.TimeoutExpired:
         return "", f"`benchmarks/{name}` did not finish in {TIMEOUT[name]} s; skipped.", time.perf_counter() - t0
     secs = time.perf_counter() - t0
@@ -78,6 +78,7 @@ def main() -> None:
             # one core for both sides (bench_snyder's own thread options are off here)
             ("bench_snyder.py", ["--points", "100000"] if args.quick else [], thread_env(True)),
             ("bench_storage.py", ["--rows", "100000"] if args.quick else [], thread_env(False)),
+            ("bench_ingest.py", ["--rows", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
         ]
         results = [(name, *run_script(name, a, env)) for name, a, env in runs if name not in skip]
         kernel = json.loads(kjson.read_text()) if kjson.exists() else None

@@ -204,7 +204,8 @@ def run_ingest(
     done = source["rows_done"]
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = Producer(
-        batches(source["rows_done"], known), level, known, declared, transformer, threaded, name
+        batches(source["rows_done"], known), level, known, declared, transformer, threaded, name,
+        options.batch_size,
     )
     try:
         for batch, prepared, types, new in work:
