@@ -8,37 +8,56 @@ BENCH_VENV := .venv-bench
 BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
-.PHONY: demo test test-all bench clean
+.PHONY: demo test test-all test-browser static bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector]'
+	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve]'
 	touch $(STAMP)
 
-demo: $(STAMP)
+# The web map's front-end dependency (MapLibre GL JS) from npm, pinned by the lock file,
+# copied into the package's static folder (git-ignored) so `dggs serve` needs no internet.
+STATIC := dggs/server/static/vendor/.installed
+$(STATIC): dggs/server/package.json dggs/server/package-lock.json
+	npm ci --prefix dggs/server --no-audit --no-fund --loglevel=error
+	rm -rf dggs/server/static/vendor && mkdir -p dggs/server/static/vendor
+	cp -r dggs/server/node_modules/maplibre-gl/dist dggs/server/static/vendor/maplibre-gl
+	touch $(STATIC)
+
+static: $(STATIC)
+
+demo: $(STAMP) $(STATIC)
 	$(VENV)/bin/dggs demo
 
-test: $(STAMP)
+test: $(STAMP) $(STATIC)
 	$(PY) -m ruff check dggs index storage tests examples
 	$(PY) -m mypy
 	$(PY) -m pytest -q
 
-test-all: $(STAMP)
+test-all: $(STAMP) $(STATIC)
 	$(PY) -m ruff check dggs index storage tests examples
 	$(PY) -m mypy
 	$(PY) -m pytest -q -m ''
+
+# The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
+# needs root), driven by selenium against a `dggs serve` process on 127.0.0.1.
+test-browser: $(STAMP) $(STATIC)
+	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
+		(apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q chromium chromium-driver)
+	$(PY) -m pytest -q -m browser tests/server
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
 	$(PYTHON) -m venv $(BENCH_VENV)
 	$(BENCH_PY) -m pip install --quiet --upgrade pip
-	$(BENCH_PY) -m pip install --quiet -e '.[test]' -r benchmarks/requirements.txt
+	$(BENCH_PY) -m pip install --quiet -e '.[test,serve]' -r benchmarks/requirements.txt
 	touch $(BENCH_STAMP)
 
 bench: $(BENCH_STAMP)
 	$(BENCH_PY) benchmarks/run_all.py
 
 clean:
-	rm -rf $(VENV) $(BENCH_VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png
+	rm -rf $(VENV) $(BENCH_VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png \
+		dggs/server/node_modules dggs/server/static/vendor
 	find . -path ./.venv -prune -o \( -name "*.nbi" -o -name "*.nbc" \) -print | xargs rm -f  # numba caches
