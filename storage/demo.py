@@ -193,6 +193,8 @@ def run_demo(
     if wrote_png:
         echo(f"map:         {png_path.resolve()}")
     echo(f"done in {time.perf_counter() - start:.1f} s")
+    echo("")
+    echo(f"See it on a globe: dggs serve {db_path}   then open http://127.0.0.1:8000/")
     return {
         "db": db_path,
         "geojson": geojson_path,

@@ -145,6 +145,7 @@ def test_demo_runs_twice_without_duplicates(runner, tmp_path):
     first = runner.invoke(main, ["demo", "--out", str(tmp_path)])
     assert first.exit_code == 0, first.output
     assert "The ten most populous" in first.output
+    assert f"dggs serve {tmp_path / 'demo.db'}" in first.output  # how to open the globe
     for name in ("demo.db", "demo-cells.geojson", "demo-map.png"):
         assert (tmp_path / name).exists(), name
     second = runner.invoke(main, ["demo", "--out", str(tmp_path)])
