@@ -36,12 +36,12 @@ demo: $(STAMP) static-if-npm
 	$(VENV)/bin/dggs demo
 
 test: $(STAMP) static-if-npm
-	$(PY) -m ruff check dggs index storage tests examples
+	$(PY) -m ruff check dggs index storage experiments tests examples
 	$(PY) -m mypy
 	$(PY) -m pytest -q
 
 test-all: $(STAMP) static-if-npm
-	$(PY) -m ruff check dggs index storage tests examples
+	$(PY) -m ruff check dggs index storage experiments tests examples
 	$(PY) -m mypy
 	$(PY) -m pytest -q -m ''
 

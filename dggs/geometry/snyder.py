@@ -27,14 +27,13 @@ Examples
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import numpy as np
 
 from dggs.geometry._validate import as_latlng
 from dggs.geometry.authalic import WGS84, Ellipsoid
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots, xyz_to_latlng
+from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots
 
 __all__ = [
     "forward",
@@ -42,7 +41,6 @@ __all__ = [
     "forward_xyz",
     "inverse_xyz",
     "Projection",
-    "METHODS",
     "TAN_G",
     "G",
     "THETA",
@@ -74,10 +72,6 @@ _ROT_SIN = np.sin(_SECTOR * np.arange(3))
 _TINY = 2.0**-500  # planar distances below this are scaled by _UNTINY before 1 / rho
 _UNTINY = 2.0**600
 
-#: Inverse methods: Snyder's Newton-Raphson, Newton from a polynomial start
-#: (thesis §4.1.2), the polynomial alone (thesis §4.1.3), and the exact closed form.
-METHODS = ("closed", "newton", "newton-poly", "poly")
-
 
 # ----------------------------------------------------------------------------
 # Input checks
@@ -98,21 +92,6 @@ def _numbers(value, name: str) -> None:
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
             where = "" if arr.ndim == 0 else f" at index {i}"
             raise CoordinateError(f"{name} {v!r}{where} is not a real number")
-
-
-def _check_inverse_options(degree, tol, max_iter) -> None:
-    """Reject a polynomial degree, Newton tolerance or iteration cap that cannot work, naming it."""
-    if isinstance(degree, (bool, np.bool_)) or not isinstance(degree, (int, np.integer)) or not 1 <= degree <= 9:
-        raise DggsValueError(f"degree {degree!r} must be an integer 1..9")
-    if (
-        isinstance(tol, (bool, np.bool_))
-        or not isinstance(tol, (int, float, np.integer, np.floating))
-        or not math.isfinite(tol)
-        or tol <= 0
-    ):
-        raise DggsValueError(f"tol {tol!r} must be a finite number > 0 (radians)")
-    if isinstance(max_iter, (bool, np.bool_)) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
-        raise DggsValueError(f"max_iter {max_iter!r} must be an integer >= 1")
 
 
 # ----------------------------------------------------------------------------
@@ -265,53 +244,6 @@ def sector_distance(sin_az, cos_az, sin_a, cos_a, rho):
     return 1.0 - 2.0 * s * s, 2.0 * s * np.sqrt(1.0 - s * s)
 
 
-def _newton(area: np.ndarray, az0: np.ndarray, tol: float, max_iter: int):
-    """Snyder's Newton-Raphson for Az (thesis eqs. 3.8-3.9), all points at once."""
-    az = az0.copy()
-    iterations = np.zeros(az.shape, dtype=np.int64)
-    active = np.arange(az.size)
-    for _ in range(max_iter):
-        if active.size == 0:
-            break
-        a = az[active]
-        sa, ca = np.sin(a), np.cos(a)
-        cos_h = sa * (_SIN_G * _COS_SMALL_G) - ca * _COS_G
-        h = np.arccos(np.clip(cos_h, -1.0, 1.0))
-        f = area[active] - (a + G + h - math.pi)
-        fprime = (ca * (_SIN_G * _COS_SMALL_G) + sa * _COS_G) / np.sqrt(1.0 - cos_h * cos_h) - 1.0
-        step = f / fprime
-        az[active] = a - step
-        iterations[active] += 1
-        active = active[np.abs(step) > tol]
-    return az, iterations
-
-
-@lru_cache(maxsize=8)
-def polynomial(degree: int = 3) -> np.ndarray:
-    """Least-squares polynomial Az ~ P(Az') over Az' in [0, 60] degrees (thesis §4.1.2).
-
-    Coefficients, highest power first (for :func:`numpy.polyval`), in radians.
-    The fit uses the exact closed form on 4,001 Chebyshev-spaced azimuths; the
-    other half of the 120-degree sector follows by symmetry about 60 degrees.
-    """
-    if not 1 <= degree <= 9:
-        raise DggsValueError(f"polynomial degree {degree!r} is out of range 1..9")
-    half = math.pi / 3
-    t = 0.5 * half * (1 - np.cos(np.linspace(0.0, math.pi, 4001)))
-    az = _az_closed(_area_from_planar(np.sin(t), np.cos(t)))
-    coeffs = np.polyfit(t, az, degree)
-    coeffs.setflags(write=False)
-    return coeffs
-
-
-def _az_poly(a: np.ndarray, degree: int) -> np.ndarray:
-    """Polynomial Az of planar Az' in [0, 120) degrees, symmetric about 60."""
-    coeffs = polynomial(degree)
-    upper = a > math.pi / 3
-    t = np.where(upper, _SECTOR - a, a)
-    az = np.polyval(coeffs, t)
-    return np.where(upper, _SECTOR - az, az)
-
 
 def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
     """True where (x, y) lies outside the face triangle by more than ``slack``."""
@@ -323,22 +255,15 @@ def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
     )
 
 
-def inverse_xyz(
-    face,
-    x,
-    y,
-    orientation: Orientation = ISEA,
-    method: str = "closed",
-    *,
-    degree: int = 3,
-    tol: float = 1e-13,
-    max_iter: int = 10,
-):
-    """Inverse of :func:`forward_xyz`: unit vectors (N, 3) and Newton iteration counts.
 
-    No checks; see :func:`inverse` for the checked public version.
+
+def planar_azimuth(x: np.ndarray, y: np.ndarray):
+    """Reduce face-plane points to one 120-degree sector (arrays; the first step of the inverse).
+
+    Returns ``(ap, k, sin_a, cos_a, rho)``: the reduced planar azimuth Az' in
+    [0, 120) degrees (radians), the sector ``k`` (0..2), Az''s sine and cosine
+    and the distance from the face centre.
     """
-    geo = orientation.geometry
     rho = np.hypot(x, y)
     ap = np.arctan2(x, y)
     ap += np.where(ap < 0, 2 * math.pi, 0.0)
@@ -353,97 +278,41 @@ def inverse_xyz(
     inv_rho = 1.0 / np.where(srho > 0, srho, 1.0)
     sin_a = (sx * rc - sy * rs) * inv_rho
     cos_a = np.where(srho > 0, (sy * rc + sx * rs) * inv_rho, 1.0)
-    area = _area_from_planar(sin_a, cos_a)
-    iterations = np.zeros(ap.shape, dtype=np.int64)
-    if method == "closed":
-        sin_az, cos_az = _az_closed_sincos(area)
-    else:
-        if method == "newton":
-            az, iterations = _newton(area, ap, tol, max_iter)
-        elif method == "newton-poly":
-            az, iterations = _newton(area, _az_poly(ap, degree), tol, max_iter)
-        elif method == "poly":
-            az = _az_poly(ap, degree)
-        else:
-            raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
-        sin_az, cos_az = np.sin(az), np.cos(az)
+    return ap, k, sin_a, cos_a, rho
+
+
+def sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation: Orientation = ISEA) -> np.ndarray:
+    """Unit vectors (N, 3) of points given their spherical azimuth Az in sector ``k`` (the inverse's last step)."""
     cos_z, sin_z = sector_distance(sin_az, cos_az, sin_a, cos_a, rho)
+    rc, rs = _ROT_COS[k], _ROT_SIN[k]
     ct = cos_az * rc - sin_az * rs  # Az + 120 k
     st = sin_az * rc + cos_az * rs
-    frame = geo.frames[np.asarray(face)]  # rows: centre, north, east
+    frame = orientation.geometry.frames[np.asarray(face)]  # rows: centre, north, east
     coef = np.stack([cos_z, sin_z * ct, sin_z * st], axis=1)
-    xyz = np.einsum("ni,nij->nj", coef, frame)
-    return xyz, iterations
+    return np.einsum("ni,nij->nj", coef, frame)
 
 
-def inverse(
-    face,
-    x,
-    y,
-    method: str = "closed",
-    orientation: Orientation = ISEA,
-    *,
-    degree: int = 3,
-    tol: float = 1e-13,
-    max_iter: int = 10,
-    return_iterations: bool = False,
-):
-    """Map face-plane ``(x, y)`` on face ``face`` back to latitude/longitude (degrees).
+def inverse_xyz(face, x, y, orientation: Orientation = ISEA) -> np.ndarray:
+    """Inverse of :func:`forward_xyz`: unit vectors (N, 3), by the exact closed form.
 
-    Parameters
-    ----------
-    face : int or array_like of int
-        Face index 0..19.
-    x, y : float or array_like
-        Planar coordinates in the face frame, unit sphere.
-    method : {"closed", "newton", "newton-poly", "poly"}
-        ``"closed"`` (default) is the exact non-iterative formula;
-        ``"newton"`` is Snyder's Newton-Raphson from ``Az0 = Az'``;
-        ``"newton-poly"`` starts Newton from a polynomial in ``Az'`` of
-        ``degree`` (thesis §4.1.2); ``"poly"`` uses the polynomial alone
-        (thesis §4.1.3, approximate: at degree 3 about 300 m on average and
-        1.7 km at worst on the Earth, degree 7 about 3.5 m / 17 m; kept to
-        reproduce the thesis, the exact closed form is nearly as fast).
-    orientation : Orientation
-        The icosahedron's orientation.
-    degree : int
-        Polynomial degree for the polynomial methods (1-9).
-    tol, max_iter : float, int
-        Newton stops when the step is below ``tol`` radians or after
-        ``max_iter`` iterations.
-    return_iterations : bool
-        Also return the number of Newton iterations of each point.
+    No checks; see :func:`inverse` for the checked public version.
+    """
+    _, k, sin_a, cos_a, rho = planar_azimuth(x, y)
+    sin_az, cos_az = _az_closed_sincos(_area_from_planar(sin_a, cos_a))
+    return sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation)
 
-    Returns
-    -------
-    lat, lng : float or ndarray
-        Spherical latitude and longitude, degrees; longitude in -180..180.
-    iterations : ndarray of int, optional
-        Only with ``return_iterations=True``.
+
+def checked_face_xy(face, x, y):
+    """Check inverse input, naming the first bad value; return flat arrays, the shape and scalar-ness.
+
+    Returns ``(face, x, y, shape, scalar)`` with 1-d int64 / float64 arrays.
 
     Raises
     ------
     CoordinateError
-        A face outside 0..19, coordinates that are not real numbers (strings,
-        bools, None), NaN or infinite, or a point off its face.
-    DggsValueError
-        An unknown ``method``, or a ``degree`` outside 1..9, a ``tol`` that is
-        not a finite number > 0, or a ``max_iter`` below 1 (each named).
-
-    Notes
-    -----
-    Points within 2**-500 of the face centre (subnormal ones too) map to the
-    face centre for every method.
-
-    Examples
-    --------
-    >>> lat, lng = inverse(0, 0.0, 0.0)
-    >>> round(float(lat), 6), round(float(lng), 6)
-    (69.094843, -78.75)
+        A face outside 0..19, coordinates that are not real numbers, NaN or
+        infinite, mismatched shapes, or a point off its face.
     """
-    if method not in METHODS:
-        raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
-    _check_inverse_options(degree, tol, max_iter)
     _numbers(face, "face")
     _numbers(x, "x")
     _numbers(y, "y")
@@ -476,27 +345,61 @@ def inverse(
         raise CoordinateError(
             f"point ({float(x_a[i])!r}, {float(y_a[i])!r}) at index {i} is off face {int(face_a[i])}"
         )
-    n = face_a.shape[0]
-    if method == "closed":
-        from . import kernel
+    return face_a, x_a, y_a, shape, scalar
 
-        lat, lng = np.empty(n), np.empty(n)
-        iterations = np.zeros(n, dtype=np.int64)
-        kernel.inverse_deg(
-            np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a), np.ascontiguousarray(y_a),
-            np.ascontiguousarray(orientation.geometry.frames), lat, lng,
-        )
-    else:
-        xyz, iterations = inverse_xyz(
-            face_a, x_a, y_a, orientation, method, degree=degree, tol=tol, max_iter=max_iter
-        )
-        la, lo = xyz_to_latlng(xyz)
-        lat, lng = np.degrees(la), np.degrees(lo)
+
+def inverse(face, x, y, orientation: Orientation = ISEA):
+    """Map face-plane ``(x, y)`` on face ``face`` back to latitude/longitude (degrees).
+
+    The exact, non-iterative closed form of the azimuth (``shared/SNYDER.md``
+    §4).  Snyder's Newton-Raphson and the thesis's polynomial inverses
+    (§4.1.2-4.1.3) are research code: :mod:`dggs.experiments.inverse`.
+
+    Parameters
+    ----------
+    face : int or array_like of int
+        Face index 0..19.
+    x, y : float or array_like
+        Planar coordinates in the face frame, unit sphere.
+    orientation : Orientation
+        The icosahedron's orientation.
+
+    Returns
+    -------
+    lat, lng : float or ndarray
+        Spherical latitude and longitude, degrees; longitude in -180..180.
+
+    Raises
+    ------
+    CoordinateError
+        A face outside 0..19, coordinates that are not real numbers (strings,
+        bools, None), NaN or infinite, or a point off its face.
+
+    Notes
+    -----
+    Points within 2**-500 of the face centre (subnormal ones too) map to the
+    face centre.
+
+    Examples
+    --------
+    >>> lat, lng = inverse(0, 0.0, 0.0)
+    >>> round(float(lat), 6), round(float(lng), 6)
+    (69.094843, -78.75)
+    """
+    if not isinstance(orientation, Orientation):
+        raise DggsValueError(f"orientation {orientation!r} is not an Orientation")
+    face_a, x_a, y_a, shape, scalar = checked_face_xy(face, x, y)
+    from . import kernel
+
+    n = face_a.shape[0]
+    lat, lng = np.empty(n), np.empty(n)
+    kernel.inverse_deg(
+        np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a), np.ascontiguousarray(y_a),
+        np.ascontiguousarray(orientation.geometry.frames), lat, lng,
+    )
     if scalar:
-        pair = (float(lat[0]), float(lng[0]))
-        return (*pair, int(iterations[0])) if return_iterations else pair
-    arrays = (lat.reshape(shape), lng.reshape(shape))
-    return (*arrays, iterations.reshape(shape)) if return_iterations else arrays
+        return float(lat[0]), float(lng[0])
+    return lat.reshape(shape), lng.reshape(shape)
 
 
 # ----------------------------------------------------------------------------
@@ -542,8 +445,8 @@ class Projection:
             return int(face[0]), float(x[0]), float(y[0])
         return face, x, y
 
-    def inverse(self, face, x, y, method: str = "closed"):
+    def inverse(self, face, x, y):
         """``(face, x, y)`` in metres -> geodetic ``(lat, lng)`` in degrees."""
-        lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), method, self.orientation)
+        lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), self.orientation)
         lat = self.ellipsoid.authalic_to_geodetic_deg(lat)
         return (float(lat), lng) if np.ndim(lat) == 0 else (lat, lng)

@@ -38,7 +38,7 @@ def test_subdivision_json():
 def test_subdivision_table_shows_thesis_values():
     r = run("subdivision", "--scheme", "1:3", "--levels", "2")
     assert r.exit_code == 0
-    assert "33.73 (33.73)" in r.output
+    assert "33.73= (33.73)" in r.output
 
 
 @pytest.mark.parametrize(

@@ -57,7 +57,11 @@ class LevelMetrics:
         ``max |A_face / A_expected - 1| * 100`` with
         ``A_expected = base area / faces`` (§6.3.2, Table 6.6).
     max_face_error_km2 : float
-        That error on a 510,072,000 km^2 Earth (Table 6.7).
+        That error on a 510,072,000 km^2 Earth as the thesis computes it
+        (Table 6.7): ``max_face_error_pct / 100 * Earth * (1 + deviation) / F``,
+        the mesh's own total area standing for the Earth (the factor is 1 where
+        the area is preserved; with it Table 6.7's Catmull-Clark and 1:5 cells
+        follow from Tables 6.1 and 6.6).
     face_errors_pct : numpy.ndarray
         Signed per-face errors (``+`` = too big), for the figures.
     """
@@ -129,6 +133,6 @@ def measure(
         avg_displacement_km=float(disp.mean() * EARTH_RADIUS_KM),
         max_displacement_km=float(disp.max() * EARTH_RADIUS_KM),
         max_face_error_pct=max_err,
-        max_face_error_km2=max_err / 100.0 * EARTH_AREA_KM2 / n,
+        max_face_error_km2=max_err / 100.0 * EARTH_AREA_KM2 * (total / base) / n,
         face_errors_pct=errors,
     )

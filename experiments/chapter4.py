@@ -55,6 +55,7 @@ from collections.abc import Callable
 import click
 import numpy as np
 
+from dggs.experiments import inverse as thesis_inverse
 from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation
 from dggs.geometry.split26 import FACE_VERTICES
@@ -372,8 +373,8 @@ def spherical_triangle_areas(xyz: np.ndarray, triangles: np.ndarray) -> np.ndarr
 
 
 def _library_poly(degree: int) -> Callable[[np.ndarray], np.ndarray]:
-    """The library's ``method="poly"`` azimuth (:func:`dggs.geometry.snyder.polynomial`, mirrored at 60)."""
-    return lambda ap: snyder._az_poly(ap, degree)
+    """The library's ``method="poly"`` azimuth (:func:`dggs.experiments.inverse.polynomial`, mirrored at 60)."""
+    return lambda ap: thesis_inverse.az_poly(ap, degree)
 
 
 # ----------------------------------------------------------------------------
@@ -385,7 +386,7 @@ def error_rows(qualities=QUALITIES, degrees=(3, 7)) -> list[dict[str, Any]]:
     One face suffices: every face has the same planar frame and the inverse
     differs from face to face only by a rotation.  For each quality and each
     polynomial (``"thesis"``: our full-sector, area-spaced fit of Table 4.1;
-    ``"library"``: :func:`dggs.geometry.snyder.polynomial`, 0-60 degrees mirrored):
+    ``"library"``: :func:`dggs.experiments.inverse.polynomial`, 0-60 degrees mirrored):
 
     ``dist_avg``/``dist_max`` are great-circle distances in units of the radius;
     ``area_abs_avg_pct`` the mean of ``|dA| / A`` in %, ``area_signed_avg_pct``
@@ -446,13 +447,13 @@ def iteration_rows(qualities=QUALITIES, tol: float = TOL, max_iter: int = 20) ->
         pts, _ = face_mesh(q)
         ap, area = _sector_azimuths(pts[:, 0], pts[:, 1])
         row: dict[str, Any] = {"quality": q, "tol": tol}
-        _, it = snyder._newton(area, ap, tol, max_iter)
+        _, it = thesis_inverse.newton(area, ap, tol, max_iter)
         row["O"] = float(it.mean())
         row["O_histogram"] = np.bincount(it).tolist()
         for d in (3, 7):
-            _, it = snyder._newton(area, snyder._az_poly(ap, d), tol, max_iter)
+            _, it = thesis_inverse.newton(area, thesis_inverse.az_poly(ap, d), tol, max_iter)
             row[f"I{d}_library"] = float(it.mean())
-            _, it = snyder._newton(area, fit_sector(d)(ap), tol, max_iter)
+            _, it = thesis_inverse.newton(area, fit_sector(d)(ap), tol, max_iter)
             row[f"I{d}_thesis"] = float(it.mean())
         rows.append(row)
     return rows
@@ -473,7 +474,7 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
     """Median time of the whole inverse and of the ``Az`` step alone, per method (thesis Table 4.2).
 
     The workload is the quality-``q`` mesh vertices of all 20 faces, inverted
-    in one vectorized call (:func:`dggs.geometry.snyder.inverse_xyz`, no input checks).
+    in one vectorized call (:func:`dggs.experiments.inverse.inverse_xyz`, no input checks).
     Methods: O = ``"newton"``, I = ``"newton-poly"`` (cubic), E = ``"poly"``
     (cubic), C = ``"closed"``; the cubic is the library's.  The ``Az`` step
     alone times only the solve for ``Az`` from ``A_G`` (and ``Az'``).  Methods are
@@ -484,12 +485,12 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
     for q in qualities:
         face, x, y = _all_faces(q)
         ap, area = _sector_azimuths(x, y)
-        whole = {m: (lambda name=name: snyder.inverse_xyz(face, x, y, method=name, degree=3, tol=tol))
+        whole = {m: (lambda name=name: thesis_inverse.inverse_xyz(face, x, y, method=name, degree=3, tol=tol))
                  for m, name in methods.items()}
         step = {
-            "O": lambda: snyder._newton(area, ap, tol, 20),
-            "I": lambda: snyder._newton(area, snyder._az_poly(ap, 3), tol, 20),
-            "E": lambda: snyder._az_poly(ap, 3),
+            "O": lambda: thesis_inverse.newton(area, ap, tol, 20),
+            "I": lambda: thesis_inverse.newton(area, thesis_inverse.az_poly(ap, 3), tol, 20),
+            "E": lambda: thesis_inverse.az_poly(ap, 3),
             "C": lambda: snyder._az_closed(area),
         }
         t_whole: dict[str, list[float]] = {m: [] for m in methods}
@@ -506,8 +507,8 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
                 step[m]()
                 t_step[m].append(time.perf_counter() - t0)
         n = len(x)
-        _, iters_o = snyder.inverse_xyz(face, x, y, method="newton", tol=tol)
-        _, iters_i = snyder.inverse_xyz(face, x, y, method="newton-poly", degree=3, tol=tol)
+        _, iters_o = thesis_inverse.inverse_xyz(face, x, y, method="newton", tol=tol)
+        _, iters_i = thesis_inverse.inverse_xyz(face, x, y, method="newton-poly", degree=3, tol=tol)
         med_w = {m: statistics.median(v) for m, v in t_whole.items()}
         med_s = {m: statistics.median(v) for m, v in t_step.items()}
         for m in methods:
@@ -531,12 +532,12 @@ def degree7_check(tolerances=TOLERANCES, quality: int = 100) -> dict[str, Any]:
     iters = []
     for tol in tolerances:
         row: dict[str, Any] = {"tol": tol}
-        _, it = snyder._newton(area, ap, tol, 20)
+        _, it = thesis_inverse.newton(area, ap, tol, 20)
         row["O"] = float(it.mean())
         for kind in ("library", "thesis"):
             for d in (3, 7):
-                start = snyder._az_poly(ap, d) if kind == "library" else fit_sector(d)(ap)
-                _, it = snyder._newton(area, start, tol, 20)
+                start = thesis_inverse.az_poly(ap, d) if kind == "library" else fit_sector(d)(ap)
+                _, it = thesis_inverse.newton(area, start, tol, 20)
                 row[f"I{d}_{kind}"] = float(it.mean())
             row[f"fewer_pct_{kind}"] = 100.0 * (1.0 - row[f"I7_{kind}"] / row[f"I3_{kind}"])
         iters.append(row)
@@ -619,7 +620,7 @@ def _format(res: dict[str, Any]) -> str:
     w("  Points exactly on the sector's symmetry rays (Az' = 0, 60 deg) converge in 1 iteration: the")
     w("  thesis's rise of O with quality (Figure 4.3) comes from their shrinking share.")
     w("")
-    w(f"  Speed: all 20 faces, one call of dggs.geometry.snyder.inverse_xyz (one pass, one thread), median of"
+    w(f"  Speed: all 20 faces, one call of dggs.experiments.inverse.inverse_xyz (one pass, one thread), median of"
       f" {s['timing_repeats']}")
     w("  (time.perf_counter, methods interleaved); ratio = time / time of O; impr. = 1 - ratio")
     w(f"  {'q':>4} {'m':>2} {'points':>7} {'iter':>5} {'time ms':>8} {'points/s':>10} {'ratio':>6}"
@@ -638,7 +639,7 @@ def _format(res: dict[str, Any]) -> str:
     w("Table 4.3 analogue  Errors of E (polynomial only) against the exact inverse, one face")
     w("  dist: great-circle distance in units of the radius (x 6371 km for metres; the thesis used")
     w("  6369 km); area: relative error of the quality triangles (%).  'thesis' = the full-sector")
-    w("  area-spaced fit of Table 4.1; 'library' = dggs.geometry.snyder.polynomial (0-60 deg, mirrored).")
+    w("  area-spaced fit of Table 4.1; 'library' = dggs.experiments.inverse.polynomial (0-60 deg, mirrored).")
     w(f"  {'q':>4} {'deg':>3} {'fit':>8} {'avg dist':>10} {'max dist':>10} {'avg m':>9} {'max m':>9}"
       f" {'avg|dA|%':>10} {'avg dA %':>10} {'max|dA|%':>10}")
     for q in QUALITIES:

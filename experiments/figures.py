@@ -139,6 +139,7 @@ def write_figures(
     schemes: Iterable[str] | None = None,
     levels: int | None = None,
     progress: bool = False,
+    variant: str = "dggs",
 ) -> list[Path]:
     """Write the highlighting and distribution PNGs for each scheme.
 
@@ -152,6 +153,9 @@ def write_figures(
         Deepest level (default: the thesis's depth, at most 5).
     progress : bool
         tqdm progress bar.
+    variant : str
+        ``"dggs"`` or ``"thesis"`` (the thesis's rules for 2:6, Catmull-Clark
+        and 1:5; their files get a ``_thesis`` suffix).
 
     Returns
     -------
@@ -170,10 +174,11 @@ def write_figures(
     out.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     for name in schemes or SCHEMES:
-        scheme = get_scheme(name)
+        scheme = get_scheme(name, variant)
         depth = min(scheme.thesis_levels, 5) if levels is None else levels
         meshes = list(iter_levels(scheme, depth, progress))[1:]
-        fig_a, fig_d = FIGURE_NUMBERS[scheme.key]
+        numbers = FIGURE_NUMBERS.get(scheme.key)  # none for chapter 7's latlng
+        fig_a, fig_d = (f" (cf. Figure {f})" for f in numbers) if numbers else ("", "")
         ncol = max(len(meshes), 1)
         fig, axes = plt.subplots(1, ncol, figsize=(2.6 * ncol + 0.8, 3.0), squeeze=False)
         for ax, (mesh, m) in zip(axes[0], meshes):
@@ -181,15 +186,15 @@ def write_figures(
             ax.set_title(f"level {m.level}: max {m.max_face_error_pct:.2f} %", fontsize=8)
             cb = fig.colorbar(coll, ax=ax, orientation="horizontal", fraction=0.05, pad=0.02)
             cb.ax.tick_params(labelsize=6)
-        fig.suptitle(f"Area highlighting - {scheme.title} (cf. Figure {fig_a}); blue larger, purple smaller", fontsize=9)
-        slug = scheme.key.replace(":", "_")
+        fig.suptitle(f"Area highlighting - {scheme.title}{fig_a}; blue larger, purple smaller", fontsize=9)
+        slug = scheme.key.replace(":", "_") + ("_thesis" if scheme.variant == "thesis" else "")
         path = out / f"area_highlighting_{slug}.png"
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)
         written.append(path)
         fig, ax = plt.subplots(figsize=(6.0, 3.6))
         plot_error_distribution(ax, {m.level: m.face_errors_pct for _, m in meshes})
-        ax.set_title(f"Face area error distribution - {scheme.title} (cf. Figure {fig_d})", fontsize=9)
+        ax.set_title(f"Face area error distribution - {scheme.title}{fig_d}", fontsize=9)
         path = out / f"error_distribution_{slug}.png"
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)

@@ -132,10 +132,14 @@ DGGS_BEST_MAX_FACE_ERROR_PCT = 16.63
 NOTES: tuple[str, ...] = (
     "Table 6.7, 2:6 level 6 prints 2.27e04 km^2; Table 6.6's 12.96 % of "
     "510,072,000/29,160 km^2 is 2.27e03 (a factor-10 typo).",
+    "Table 6.6, 2:6 level 6 prints 12.96 %; the thesis's own rule gives 12.69 % "
+    "(digits swapped; every other cell of the row reproduces).",
+    "Table 6.7, 1:5 level 6 prints 5.69e05 km^2, a typo for 5.69e04.",
     "Table 6.7, 1:3 and 1:6 level 1 print 85.0 and 42.5 km^2 where Table 6.6 "
     "prints 0.00 %: about 1e-5 relative, the thesis's floating-point noise.",
-    "Table 6.7, Catmull-Clark level 1 (7.38e06) and 1:5 level 1 (3.97e06) do "
-    "not follow from Table 6.6 (55.78 % and 22.17 % give 4.74e06 and 3.53e06).",
+    "Table 6.7 is Table 6.6 times the mesh's total area, Earth (1 + Table 6.1) / F: "
+    "so Catmull-Clark level 1 (55.78 % of 1.5578 Earth / 60 = 7.39e06, printed 7.38e06) "
+    "and 1:5 level 1 (3.97e06) follow from Tables 6.1 and 6.6.",
     "Table 6.3, 1:5 level 6 prints 0.00 % between 0.10 % and 0.01 %; Table 6.5 "
     "(2.13 km = 0.03 %) suggests 0.03.",
     "§6.4.2 says Table 6.1 shows Split (1:3)'s 8,525 % error; it is Table 6.6.",

@@ -1,1 +1,0 @@
-"""Reproductions of the thesis's experiments (chapters 4-6)."""
