@@ -29,10 +29,12 @@ def main() -> None:
 def _register() -> None:
     from dggs.cell_cli import cell
     from dggs.experiments.cli import experiments
+    from dggs.server.cli import serve  # click only: fastapi is imported when the command runs
     from dggs.storage.cli import register as register_storage
 
     main.add_command(cell)
     main.add_command(experiments)
+    main.add_command(serve)
     register_storage(main)  # bin, query, export, plot, info, demo
 
 

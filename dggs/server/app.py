@@ -1,0 +1,114 @@
+"""The ASGI application of ``dggs serve``: OGC API - DGGS (Part 1) and the web map over one cell store.
+
+Examples
+--------
+>>> from fastapi.testclient import TestClient
+>>> from dggs.storage import CellStore
+>>> import tempfile, os
+>>> path = os.path.join(tempfile.mkdtemp(), "demo.db")
+>>> with CellStore(path) as s:
+...     _ = s.ingest_points([51.05, 48.85], [-114.07, 2.35], 6, {"pop": [1, 2]})
+>>> app = create_app(path)
+>>> with TestClient(app) as client:
+...     client.get("/collections").json()["collections"][0]["id"]
+...     client.get("/dggs/DGGS-Split26-ISEA/zones", params={"zone-level": 0}).json()["zones"]
+'demo'
+['C', 'F']
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import AsyncIterator
+from pathlib import Path
+from typing import Any
+
+from fastapi import FastAPI
+
+from . import mapdata, ogc, zones
+from .errors import install_handlers
+from .params import Context
+from .reader import StoreReader
+
+__all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "STATIC"]
+
+#: Default limit on the zones of one zone listing (``.../zones``).
+MAX_ZONES = 100_000
+#: Default limit on the features of ``/map/cells`` and on the sub-zone values of zone data.
+MAX_FEATURES = 50_000
+#: The web map's files (written by the front end; served at ``/static`` and ``/``).
+STATIC = Path(__file__).parent / "static"
+
+
+def create_app(
+    store_path: str | os.PathLike[str],
+    *,
+    max_zones: int = MAX_ZONES,
+    max_features: int = MAX_FEATURES,
+    static: str | os.PathLike[str] | None = None,
+) -> FastAPI:
+    """Build the server's ASGI app over the cell store at ``store_path`` (opened read-only).
+
+    Parameters
+    ----------
+    store_path : str or Path
+        A cell store file (:class:`dggs.storage.CellStore`).  The collection
+        id is its stem (``demo.db`` -> ``demo``).
+    max_zones : int, default 100,000
+        Most zones one zone listing returns (HTTP 413 beyond).
+    max_features : int, default 50,000
+        Most features of ``/map/cells``, and most sub-zones of one zone-data
+        request (HTTP 413 beyond).
+    static : path, optional
+        The web map's folder (default: ``dggs/server/static``).
+
+    Raises
+    ------
+    StorageError
+        If the file is missing, not a SQLite database or not a cell store.
+    DggsValueError
+        For a limit below 1.
+    """
+    from dggs.errors import DggsValueError
+
+    for name, value in (("max_zones", max_zones), ("max_features", max_features)):
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            raise DggsValueError(f"{name} must be a whole number >= 1, not {value!r}")
+    reader = StoreReader(store_path)
+    ctx = Context(reader=reader, max_zones=max_zones, max_features=max_features)
+    folder = Path(static) if static is not None else STATIC
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app: Any) -> AsyncIterator[None]:
+        yield
+        reader.close()
+
+    app = FastAPI(
+        title=f"dggs: {reader.collection_id}",
+        description=(
+            "OGC API - DGGS (Part 1) over a cell store of equal-area triangular zones "
+            "(Split (2:6) on the ISEA icosahedron, Snyder's equal-area projection), and the JSON of its web map."
+        ),
+        version=_version(),
+        openapi_url="/api",
+        docs_url="/api.html",
+        redoc_url=None,
+        lifespan=lifespan,
+    )
+    app.state.ctx = ctx
+    install_handlers(app)
+    ogc.register(app, ctx, folder)
+    zones.register(app, ctx)
+    mapdata.register(app, ctx)
+    if folder.is_dir():
+        from fastapi.staticfiles import StaticFiles
+
+        app.mount("/static", StaticFiles(directory=folder), name="static")
+    return app
+
+
+def _version() -> str:
+    import dggs
+
+    return str(getattr(dggs, "__version__", "0"))

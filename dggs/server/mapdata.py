@@ -1,0 +1,116 @@
+"""The JSON behind the web map: ``/map/layers`` and ``/map/cells`` (not part of the OGC standard).
+
+The contract the front end (``static/index.html``) relies on:
+
+- ``GET /map/layers`` gives ``{"collection", "stored_level", "levels": [0..L], "columns": {name: SQL type},
+  "numeric_columns", "bbox": [w, s, e, n], "count", "max_zones"}``; ``max_zones`` is the most features
+  ``/map/cells`` returns.
+- ``GET /map/cells?level=L&bbox=w,s,e,n&column=C&stat=count|sum|mean|min|max`` gives a GeoJSON
+  FeatureCollection, one feature per non-empty cell at level ``L`` whose polygon meets the bbox (``w > e``
+  crosses the antimeridian), with properties ``zone_id``, ``level``, ``area_km2``, ``count`` and ``value``
+  (the statistic of the column, or the count without a column).
+
+The roll-up of a level is cached until the store changes (:class:`~dggs.server.reader.StoreReader`) and
+cell geometries are cached for good, so panning the map re-reads nothing.
+
+Examples
+--------
+>>> from fastapi.testclient import TestClient
+>>> from dggs.server.app import create_app
+>>> from dggs.storage import CellStore
+>>> import tempfile, os
+>>> path = os.path.join(tempfile.mkdtemp(), "towns.db")
+>>> with CellStore(path) as s:
+...     _ = s.ingest_points([51.05, 51.06, -33.9], [-114.07, -114.08, 151.2], 5, {"pop": [3, 4, 5]})
+>>> with TestClient(create_app(path)) as client:
+...     client.get("/map/layers").json()["levels"]
+...     cells = client.get("/map/cells", params={"level": 1, "column": "pop", "stat": "sum"}).json()
+...     [(f["properties"]["zone_id"], f["properties"]["value"]) for f in cells["features"]]
+[0, 1, 2, 3, 4, 5]
+[('F2', 7), ('S4', 5)]
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import FastAPI, Query
+from fastapi.responses import JSONResponse, Response
+
+import dggs
+
+from .errors import BadRequest, TooManyZones
+from .geojson import GEOJSON, clean, feature_collection
+from .params import Context, check_level, parse_bbox
+from .reader import cells_meeting_bbox
+
+__all__ = ["register", "MAP_STATS"]
+
+#: Statistics the map can show.
+MAP_STATS = ("count", "sum", "mean", "min", "max")
+
+
+def layers(ctx: Context) -> dict[str, Any]:
+    """What the map can show (``/map/layers``)."""
+    summary = ctx.reader.summary()
+    stored = summary.level
+    return {
+        "collection": ctx.reader.collection_id,
+        "stored_level": stored,
+        "levels": [] if stored is None else list(range(stored + 1)),
+        "columns": summary.columns,
+        "numeric_columns": summary.numeric_columns,
+        "bbox": list(summary.bbox) if summary.bbox is not None else [-180.0, -90.0, 180.0, 90.0],
+        "count": summary.count,
+        "max_zones": ctx.max_features,
+    }
+
+
+def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, stat: str) -> Response:
+    """The non-empty cells at ``level`` meeting ``bbox`` as GeoJSON (``/map/cells``)."""
+    summary = ctx.reader.summary()
+    check_level("level", level, summary.level)
+    bbox = parse_bbox(bbox_raw) if bbox_raw is not None else (-180.0, -90.0, 180.0, 90.0)
+    if stat not in MAP_STATS:
+        raise BadRequest(f"stat {stat!r} is not one of {', '.join(MAP_STATS)}")
+    if column is not None and column not in summary.numeric_columns:
+        known = ", ".join(summary.numeric_columns) or "(none)"
+        raise BadRequest(f"column {column!r} is not a numeric column of {ctx.reader.collection_id}; "
+                         f"numeric columns: {known}")
+    if column is None and stat != "count":
+        raise BadRequest(f"stat {stat!r} needs a column; numeric columns: "
+                         f"{', '.join(summary.numeric_columns) or '(none)'}")
+    if summary.level is None:
+        return Response(feature_collection([], [], [], {"numberReturned": 0}), media_type=GEOJSON)
+    data = ctx.reader.level_data(level, column, stat)
+    found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_features)
+    if found is None:
+        raise TooManyZones(f"more than {ctx.max_features} cells of level {level} hold data in bbox {bbox_raw!r}; "
+                           "use a coarser level or a smaller bbox")
+    index, _, texts = found
+    area = float(dggs.cell_area(level, "km^2"))
+    ids = data.ids[index].tolist()
+    counts = data.counts[index].tolist()
+    props = [
+        {"zone_id": z, "level": level, "area_km2": area, "count": n, "value": clean(data.values[i])}
+        for z, n, i in zip(ids, counts, index.tolist())
+    ]
+    return Response(feature_collection(ids, texts, props, {"numberReturned": len(ids)}), media_type=GEOJSON)
+
+
+def register(app: FastAPI, ctx: Context) -> None:
+    """Add ``/map/layers`` and ``/map/cells``."""
+
+    @app.get("/map/layers", tags=["Web map"], summary="What the web map can show")
+    def map_layers() -> JSONResponse:
+        return JSONResponse(layers(ctx))
+
+    @app.get("/map/cells", tags=["Web map"], summary="Non-empty cells of a level in a bbox (GeoJSON)",
+             response_class=Response, responses={200: {"content": {GEOJSON: {}}}})
+    def map_cells(
+        level: int = Query(..., description="Level 0..stored level"),
+        bbox: str | None = Query(None, description="w,s,e,n (degrees; w > e crosses 180); default the world"),
+        column: str | None = Query(None, description="A numeric column; default: the row count"),
+        stat: str = Query("count", description="count, sum, mean, min or max of the column"),
+    ) -> Response:
+        return cells(ctx, level, bbox, column, stat)

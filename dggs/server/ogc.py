@@ -1,0 +1,194 @@
+"""Landing page, conformance, collections and DGGRS resources (OGC API - Common, DGGS Part 1 §7, §14, §15).
+
+- ``/`` landing page (OGC API - Common Part 1, ``openapi/schemas/common-core/landingPage.yaml``);
+  a browser (``Accept: text/html``) gets the web map instead, when it is installed;
+- ``/conformance`` the classes implemented (``confClasses.yaml``);
+- ``/collections`` and ``/collections/{collectionId}`` (Common Part 2, ``collections.yaml``,
+  ``collectionDesc.yaml``): one collection, the store, named after its file;
+- ``.../dggs`` the DGGRS list (/req/core/dggrs-list), ``.../dggs/{dggrsId}`` its description
+  (/req/core/dggrs-description), ``.../dggs/{dggrsId}/definition`` the definition (Annex B);
+- ``/robots.txt`` keeping crawlers out of the zones (/rec/core/robots-txt).
+
+Examples
+--------
+>>> [c.rsplit("/", 1)[-1] for c in CONFORMANCE if "dggs" in c][:4]
+['core', 'data-retrieval', 'data-custom-depths', 'zone-query']
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from fastapi import FastAPI, Query, Request
+from fastapi.responses import FileResponse, JSONResponse, PlainTextResponse, Response
+
+from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
+from .params import Context, base_url, check_collection, check_dggrs
+
+__all__ = ["register", "CONFORMANCE"]
+
+_DGGS = "https://www.opengis.net/spec/ogcapi-dggs-1/1.0/conf/"
+_COMMON = "http://www.opengis.net/spec/ogcapi-common-1/1.0/conf/"
+
+#: The conformance classes implemented (core/sections/clause_2_conformance.adoc and the requirements classes).
+CONFORMANCE = [
+    _COMMON + "core",
+    _COMMON + "landing-page",
+    _COMMON + "json",
+    _COMMON + "oas30",
+    "http://www.opengis.net/spec/ogcapi-common-2/1.0/conf/collections",
+    _DGGS + "core",  # /dggs, /dggs/{dggrsId}, zone information
+    _DGGS + "data-retrieval",  # .../zones/{zoneId}/data
+    _DGGS + "data-custom-depths",  # zone-depth: d, lo-hi, a,b,c
+    _DGGS + "zone-query",  # .../zones with zone-level, compact-zones, bbox
+    _DGGS + "root-dggs",  # /dggs at the root
+    _DGGS + "collection-dggs",  # /collections/{collectionId}/dggs
+    _DGGS + "data-json",  # DGGS-JSON
+    _DGGS + "data-geojson",  # zone data as GeoJSON
+    _DGGS + "zone-geojson",  # zone lists as GeoJSON
+]
+
+
+def _link(href: str, rel: str, kind: str = "application/json", title: str | None = None) -> dict[str, Any]:
+    link = {"href": href, "rel": rel, "type": kind}
+    if title:
+        link["title"] = title
+    return link
+
+
+def landing(ctx: Context, request: Request) -> dict[str, Any]:
+    """The landing page (OGC API - Common, /req/landing-page; /req/root-dggs/dggs)."""
+    base = base_url(request)
+    cid = ctx.reader.collection_id
+    return {
+        "title": f"dggs: {cid}",
+        "description": (
+            f"OGC API - DGGS over the cell store {ctx.reader.path.name}: points binned into equal-area "
+            f"triangular zones ({DGGRS_ID}), rolled up to any coarser level."
+        ),
+        "links": [
+            _link(f"{base}/?f=json", "self", title="This document"),
+            _link(f"{base}/api", "service-desc", "application/vnd.oai.openapi+json;version=3.0", "OpenAPI"),
+            _link(f"{base}/api.html", "service-doc", "text/html", "API documentation"),
+            _link(f"{base}/conformance", "conformance", title="Conformance classes"),
+            _link(f"{base}/conformance", REL + "conformance", title="Conformance classes"),
+            _link(f"{base}/collections", "data", title="Collections"),
+            _link(f"{base}/collections", REL + "data", title="Collections"),
+            _link(f"{base}/dggs", REL + "dggrs-list", title="DGGRS list"),
+            _link(f"{base}/map/layers", "related", title="Web map layers"),
+        ],
+    }
+
+
+def collection(ctx: Context, request: Request) -> dict[str, Any]:
+    """The store as a collection (``collectionDesc.yaml``; /req/collection-dggs/dggs)."""
+    base = base_url(request)
+    summary = ctx.reader.summary()
+    cid = ctx.reader.collection_id
+    href = f"{base}/collections/{cid}"
+    bbox = list(summary.bbox) if summary.bbox is not None else [-180.0, -90.0, 180.0, 90.0]
+    out: dict[str, Any] = {
+        "id": cid,
+        "title": cid,
+        "description": (
+            f"{summary.count} points binned into level-{summary.level} zones"
+            f"{'' if not summary.columns else ' with values ' + ', '.join(summary.columns)}."
+        ),
+        "extent": {"spatial": {"bbox": [bbox], "crs": CRS84}},
+        "crs": [CRS84],
+        "storageCrs": CRS84,
+        "links": [
+            _link(href, "self"),
+            _link(f"{base}/collections", "collection", title="All collections"),
+            _link(f"{href}/dggs", REL + "dggrs-list", title="DGGRS list of this collection"),
+            _link(f"{href}/dggs/{DGGRS_ID}/zones", REL + "dggrs-zone-query", title="Zones holding data"),
+        ],
+    }
+    if summary.updated:
+        out["updated"] = summary.updated
+    if summary.created:
+        out["created"] = summary.created
+    return out
+
+
+def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> dict[str, Any]:
+    """The DGGRS list (``rDGGRSList.yaml``; /req/core/dggrs-list)."""
+    base = base_url(request)
+    prefix = "" if collection_id is None else f"/collections/{collection_id}"
+    links = [_link(f"{base}{prefix}/dggs", "self")]
+    if collection_id is None:
+        links.append(_link(f"{base}/", REL + "dataset", title="Landing page"))
+    else:
+        links.append(_link(f"{base}/collections/{collection_id}", REL + "geodata", title=collection_id))
+    return {"links": links, "dggrs": [item(base, prefix)]}
+
+
+def register(app: FastAPI, ctx: Context, static: Path) -> None:
+    """Add the landing page, conformance, collections and DGGRS routes."""
+    page = static / "index.html"
+
+    @app.get("/", tags=["Capabilities"], summary="Landing page (the web map for a browser)")
+    def root(request: Request, f: str | None = Query(None, description="json for the landing page")) -> Response:
+        accept = request.headers.get("accept", "")
+        if f is None and "text/html" in accept and page.is_file():
+            return FileResponse(page, media_type="text/html")
+        return JSONResponse(landing(ctx, request))
+
+    @app.get("/conformance", tags=["Capabilities"], summary="Conformance classes")
+    def conformance() -> JSONResponse:
+        return JSONResponse({"conformsTo": CONFORMANCE})
+
+    @app.get("/collections", tags=["Collections"], summary="Collections (the one store)")
+    def collections(request: Request) -> JSONResponse:
+        base = base_url(request)
+        return JSONResponse({
+            "links": [_link(f"{base}/collections", "self")],
+            "collections": [collection(ctx, request)],
+            "numberMatched": 1,
+            "numberReturned": 1,
+        })
+
+    @app.get("/collections/{collectionId}", tags=["Collections"], summary="The collection")
+    def one_collection(request: Request, collectionId: str) -> JSONResponse:
+        check_collection(ctx, collectionId)
+        return JSONResponse(collection(ctx, request))
+
+    def described(request: Request, collection_id: str | None, dggrs_id: str) -> dict[str, Any]:
+        check_collection(ctx, collection_id)
+        check_dggrs(dggrs_id)
+        prefix = "" if collection_id is None else f"/collections/{collection_id}"
+        return description(base_url(request), prefix, ctx.reader.summary().level, collection_id)
+
+    @app.get("/dggs", tags=["DGGS"], summary="DGGRS list")
+    def dggs_root(request: Request) -> JSONResponse:
+        return JSONResponse(dggrs_list(ctx, request, None))
+
+    @app.get("/dggs/{dggrsId}", tags=["DGGS"], summary="DGGRS description")
+    def dggrs_root(request: Request, dggrsId: str) -> JSONResponse:
+        return JSONResponse(described(request, None, dggrsId))
+
+    @app.get("/dggs/{dggrsId}/definition", tags=["DGGS"], summary="DGGRS definition (Annex B schema)")
+    def dggrs_definition(dggrsId: str) -> JSONResponse:
+        check_dggrs(dggrsId)
+        return JSONResponse(definition())
+
+    @app.get("/collections/{collectionId}/dggs", tags=["Collection DGGS"], summary="DGGRS list of the collection")
+    def dggs_collection(request: Request, collectionId: str) -> JSONResponse:
+        check_collection(ctx, collectionId)
+        return JSONResponse(dggrs_list(ctx, request, collectionId))
+
+    @app.get("/collections/{collectionId}/dggs/{dggrsId}", tags=["Collection DGGS"], summary="DGGRS description")
+    def dggrs_collection(request: Request, collectionId: str, dggrsId: str) -> JSONResponse:
+        return JSONResponse(described(request, collectionId, dggrsId))
+
+    @app.get("/collections/{collectionId}/dggs/{dggrsId}/definition", tags=["Collection DGGS"],
+             summary="DGGRS definition (Annex B schema)")
+    def dggrs_collection_definition(collectionId: str, dggrsId: str) -> JSONResponse:
+        check_collection(ctx, collectionId)
+        check_dggrs(dggrsId)
+        return JSONResponse(definition())
+
+    @app.get("/robots.txt", include_in_schema=False)
+    def robots() -> PlainTextResponse:
+        return PlainTextResponse("User-agent: *\nDisallow: */dggs/*/zones/*\n")

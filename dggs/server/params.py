@@ -1,0 +1,174 @@
+"""Parsing and checking request parameters; every failure is a :class:`BadRequest` naming the value.
+
+Examples
+--------
+>>> parse_bbox("170,-10,-170,10")
+(170.0, -10.0, -170.0, 10.0)
+>>> parse_depths("1-3"), parse_depths("0,2"), parse_depths(None, default=2)
+([1, 2, 3], [0, 2], [2])
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import dggs
+
+from .errors import BadRequest, NotAcceptable, NotFound
+
+__all__ = ["Context", "parse_bbox", "parse_zone", "parse_depths", "check_level", "negotiate", "base_url"]
+
+
+@dataclass
+class Context:
+    """What every handler needs: the store and the limits."""
+
+    reader: Any  # StoreReader
+    max_zones: int  # zones in a zone listing
+    max_features: int  # features (or sub-zone values) in /map/cells and zone data
+
+
+def base_url(request: Any) -> str:
+    """The server's base URL without a trailing slash (for absolute links)."""
+    return str(request.base_url).rstrip("/")
+
+
+def parse_bbox(raw: str | None, name: str = "bbox") -> tuple[float, float, float, float] | None:
+    """``w,s,e,n`` in degrees (CRS84); ``w > e`` crosses the antimeridian.
+
+    Raises
+    ------
+    BadRequest
+        Unless there are 4 finite numbers with -180 <= w, e <= 180, -90 <= s < n <= 90, w != e.
+    """
+    if raw is None:
+        return None
+    parts = raw.split(",")
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise BadRequest(f"{name} {raw!r} must be 4 comma-separated numbers w,s,e,n (degrees)") from None
+    if len(values) != 4 or not all(math.isfinite(v) for v in values):
+        raise BadRequest(f"{name} {raw!r} must be 4 comma-separated finite numbers w,s,e,n (degrees)")
+    w, s, e, n = values
+    if not (-180 <= w <= 180 and -180 <= e <= 180):
+        raise BadRequest(f"{name} {raw!r}: longitudes must lie in -180..180")
+    if not (-90 <= s <= 90 and -90 <= n <= 90):
+        raise BadRequest(f"{name} {raw!r}: latitudes must lie in -90..90")
+    if s >= n:
+        raise BadRequest(f"{name} {raw!r}: south {s:g} must be less than north {n:g}")
+    if w == e:
+        raise BadRequest(f"{name} {raw!r}: west and east are equal (an empty box)")
+    return (w, s, e, n)
+
+
+def parse_zone(raw: str) -> str:
+    """A zone id (text form, e.g. ``C401``), checked.
+
+    Raises
+    ------
+    BadRequest
+        If it is not a valid zone id of this DGGRS.
+    """
+    if not dggs.is_valid_cell(raw):
+        raise BadRequest(
+            f"zoneId {raw!r} is not a zone of this DGGRS: a face letter A-T, a digit 0-5, "
+            f"then digits 0-2, at most {dggs.MAX_LEVEL + 1} characters (e.g. 'C401')"
+        )
+    return raw
+
+
+_DEPTH = re.compile(r"^\d{1,2}$")
+
+
+def parse_depths(raw: str | None, default: int = 0) -> list[int]:
+    """The ``zone-depth`` forms of /req/data-custom-depths/zone-depth: ``d``, ``lo-hi`` or ``a,b,c``.
+
+    Raises
+    ------
+    BadRequest
+        For anything else (negative, empty, reversed range).
+    """
+    if raw is None:
+        return [default]
+    text = raw.strip()
+    bad = BadRequest(
+        f"zone-depth {raw!r} must be a depth (e.g. 2), a range low-high (e.g. 1-3) or a list (e.g. 0,2), "
+        "of whole numbers >= 0"
+    )
+    if "-" in text:
+        lo, _, hi = text.partition("-")
+        if not (_DEPTH.match(lo) and _DEPTH.match(hi)) or int(lo) > int(hi):
+            raise bad
+        return list(range(int(lo), int(hi) + 1))
+    parts = text.split(",")
+    if not all(_DEPTH.match(p) for p in parts):
+        raise bad
+    return sorted({int(p) for p in parts})
+
+
+def check_level(name: str, level: int, stored: int | None) -> int:
+    """A level in 0..MAX_LEVEL and no finer than the stored level (/per/core/beyond-max-refinement)."""
+    if not 0 <= level <= dggs.MAX_LEVEL:
+        raise BadRequest(f"{name} {level} is out of range 0..{dggs.MAX_LEVEL}")
+    if stored is not None and level > stored:
+        raise BadRequest(
+            f"{name} {level} is finer than the stored level {stored} (maxRefinementLevel); use 0..{stored}"
+        )
+    return level
+
+
+_FORMATS = {"json": "application/json", "geojson": "application/geo+json"}
+
+
+def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "geojson")) -> str:
+    """Pick ``json`` or ``geojson``: from ``f`` if given, else from the Accept header.
+
+    Raises
+    ------
+    BadRequest
+        For an unknown ``f``.
+    NotAcceptable
+        When the Accept header names only media types not offered.
+    """
+    if f is not None:
+        if f not in formats:
+            raise BadRequest(f"f {f!r} is not a format of this resource; use one of {', '.join(formats)}")
+        return f
+    accept = request.headers.get("accept", "")
+    if not accept.strip():
+        return formats[0]
+    best, best_q = None, 0.0
+    for part in accept.split(","):
+        media, *options = [p.strip() for p in part.split(";")]
+        q = 1.0
+        for option in options:
+            if option.startswith("q="):
+                try:
+                    q = float(option[2:])
+                except ValueError:
+                    q = 0.0
+        for fmt in formats:
+            if media in (_FORMATS[fmt], "*/*", "application/*") and q > best_q:
+                best, best_q = (formats[0] if media in ("*/*", "application/*") else fmt), q
+    if best is None:
+        offered = ", ".join(_FORMATS[f] for f in formats)
+        raise NotAcceptable(f"Accept {accept!r} names no media type offered here ({offered})")
+    return best
+
+
+def check_collection(ctx: Context, collection: str | None) -> None:
+    """404 unless ``collection`` is None (root paths) or the served collection."""
+    if collection is not None and collection != ctx.reader.collection_id:
+        raise NotFound(f"no collection {collection!r}; this server has {ctx.reader.collection_id!r}")
+
+
+def check_dggrs(dggrs_id: str) -> None:
+    """404 unless ``dggrs_id`` is the DGGRS served."""
+    from .dggrs import DGGRS_ID
+
+    if dggrs_id != DGGRS_ID:
+        raise NotFound(f"no DGGRS {dggrs_id!r}; this server offers {DGGRS_ID!r}")

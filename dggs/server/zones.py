@@ -1,0 +1,325 @@
+"""Zone routes of OGC API - DGGS Part 1: zone information, zone data, zone queries.
+
+Each route is served twice: under ``/dggs/{dggrsId}`` (the API's own DGGRS, the
+*Root DGGS* class, §14) and under ``/collections/{collectionId}/dggs/{dggrsId}``
+(the *Collection DGGS* class, §15); both read the one store.
+
+- ``.../zones/{zoneId}`` — zone information (§7.3, /req/core/zone-info), JSON or a GeoJSON Feature;
+- ``.../zones/{zoneId}/data`` — the store's rows rolled up to the sub-zones (§8,
+  /req/data-retrieval/zone-data; ``zone-depth`` of §10, /req/data-custom-depths/zone-depth),
+  as DGGS-JSON (§16, /req/data-json/content) or GeoJSON (/req/data-geojson/content);
+- ``.../zones`` — the zones holding data (§12, /req/zone-query/zones-list), JSON or GeoJSON
+  (/req/zone-geojson/content), with ``zone-level``, ``compact-zones``, ``bbox`` and ``limit``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from fastapi import FastAPI, Query, Request
+from fastapi.responses import JSONResponse, Response
+
+import dggs
+
+from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
+from .errors import BadRequest, TooManyZones
+from .geojson import GEOJSON, clean, feature_collection
+from .params import Context, base_url, check_collection, check_dggrs, check_level, negotiate, parse_bbox
+from .params import parse_depths, parse_zone
+from .reader import cells_meeting_bbox
+
+__all__ = ["register", "STATS", "sub_zone_count"]
+
+#: Statistics of each numeric column in zone data (property ``{column}_{stat}``).
+STATS = ("sum", "mean", "min", "max")
+
+
+def sub_zone_count(level: int, depth: int) -> int:
+    """Sub-zones of a level-``level`` zone at relative ``depth`` (6 below a face, then 3 per level).
+
+    Examples
+    --------
+    >>> sub_zone_count(0, 2), sub_zone_count(5, 2)
+    (18, 9)
+    """
+    return zone_count(level + depth) // zone_count(level)
+
+
+def _prefix(collection: str | None) -> str:
+    return "" if collection is None else f"/collections/{collection}"
+
+
+def _links(request: Request, collection: str | None, zone: str | None = None) -> list[dict[str, Any]]:
+    base = base_url(request)
+    dggrs = f"{base}{_prefix(collection)}/dggs/{DGGRS_ID}"
+    links = [
+        {"href": str(request.url), "rel": "self", "type": "application/json"},
+        {"href": dggrs, "rel": REL + "dggrs", "type": "application/json"},
+        {"href": f"{dggrs}/definition", "rel": REL + "dggrs-definition", "type": "application/json"},
+    ]
+    if collection is not None:
+        links.append({"href": f"{base}/collections/{collection}", "rel": REL + "geodata",
+                      "type": "application/json"})
+    if zone is not None:
+        links.append({"href": f"{dggrs}/zones/{zone}", "rel": REL + "dggrs-zone-info", "type": "application/json"})
+    return links
+
+
+# -- zone information ---------------------------------------------------------
+
+
+def zone_info(ctx: Context, request: Request, collection: str | None, zone: str, f: str | None) -> Response:
+    """Zone information (/req/core/zone-info, /rec/core/zone-info)."""
+    import shapely
+    from shapely.geometry import mapping
+
+    fmt = negotiate(request, f)
+    level = dggs.get_level(zone)
+    base = base_url(request)
+    dggrs = f"{base}{_prefix(collection)}/dggs/{DGGRS_ID}"
+    poly = dggs.cell_to_polygon(zone)
+    lat, lng = dggs.cell_to_latlng(zone)
+    parent = dggs.cell_to_parent(zone) if level > 0 else None
+    children = dggs.cell_to_children(zone) if level < dggs.MAX_LEVEL else []
+    neighbors = dggs.edge_neighbors(zone)
+    links = _links(request, collection)[:3]
+    links.append({"href": f"{dggrs}/zones/{zone}/data", "rel": REL + "dggrs-zone-data",
+                  "type": "application/json", "title": "Data of the zone (DGGS-JSON)"})
+    if parent is not None:
+        links.append({"href": f"{dggrs}/zones/{parent}", "rel": REL + "dggrs-zone-parent", "type": "application/json"})
+    links += [{"href": f"{dggrs}/zones/{c}", "rel": REL + "dggrs-zone-child", "type": "application/json"}
+              for c in children]
+    links += [{"href": f"{dggrs}/zones/{c}", "rel": REL + "dggrs-zone-neighbor", "type": "application/json"}
+              for c in neighbors]
+    info: dict[str, Any] = {
+        "id": zone,
+        "level": level,
+        "shapeType": "triangle",
+        "crs": CRS84,
+        "centroid": [float(lng), float(lat)],
+        "bbox": [float(v) for v in shapely.bounds(poly)],
+        "areaMetersSquare": float(dggs.cell_area(level)),
+        "uint64Id": str(dggs.str_to_int(zone)),
+        "parent": parent,
+        "children": list(children),
+        "neighbors": list(neighbors),
+        "geometry": mapping(poly),
+        "links": links,
+    }
+    with ctx.reader.snapshot():  # one read transaction: all numbers from the same state of the store
+        summary = ctx.reader.summary()
+        if summary.level is not None and level <= summary.level:
+            # /rec/core/zone-info: summary statistics of each numeric field within the zone.
+            rows = ctx.reader.rollup(zone, level, None, ("count",))
+            info["dataCount"] = int(rows[0]["count"]) if rows else 0
+            stats: dict[str, Any] = {}
+            for column in summary.numeric_columns:
+                found = ctx.reader.rollup(zone, level, column, ("min", "max", "mean"))
+                if found and found[0]["mean"] is not None:
+                    r = found[0]
+                    stats[column] = {"minimum": clean(r["min"]), "maximum": clean(r["max"]),
+                                     "average": clean(r["mean"])}
+            info["statistics"] = stats
+    if fmt == "geojson":
+        props = {k: v for k, v in info.items() if k not in ("id", "geometry")}
+        feature = {"type": "Feature", "id": zone, "geometry": info["geometry"], "properties": {"zoneID": zone, **props}}
+        return JSONResponse(feature, media_type=GEOJSON)
+    return JSONResponse(info)
+
+
+# -- zone data ----------------------------------------------------------------
+
+
+def zone_data(
+    ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None, f: str | None
+) -> Response:
+    """The rows under ``zone`` rolled up to its sub-zones at each requested depth (DGGS-JSON or GeoJSON)."""
+    fmt = negotiate(request, f)
+    with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
+        return _zone_data(ctx, request, collection, zone, depth, fmt)
+
+
+def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
+               fmt: str) -> Response:
+    summary = ctx.reader.summary()
+    stored = summary.level
+    level = dggs.get_level(zone)
+    if stored is not None and level > stored:
+        raise BadRequest(f"zoneId {zone!r} is at level {level}, finer than the stored level {stored}; "
+                         f"data exists for zones of levels 0..{stored}")
+    deepest = dggs.MAX_LEVEL - level if stored is None else stored - level
+    depths = parse_depths(depth, default=min(DEFAULT_DEPTH, deepest))
+    if depths[-1] > deepest:
+        raise BadRequest(f"zone-depth {depth!r} goes below the stored level {stored}: for zone {zone!r} "
+                         f"(level {level}) the deepest is {deepest}")
+    total = sum(sub_zone_count(level, d) for d in depths)
+    if total > ctx.max_features:
+        raise TooManyZones(f"zone-depth {depth!r} of zone {zone!r} gives {total} sub-zones, more than this "
+                           f"server's limit of {ctx.max_features}; ask for a smaller zone-depth or a finer zone")
+    columns = summary.numeric_columns
+    props = ["count"] + [f"{c}_{s}" for c in columns for s in STATS]
+    per_depth: list[tuple[int, list[str], dict[str, list[Any]]]] = []
+    for d in depths:
+        subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
+        where = {c: i for i, c in enumerate(subs)}
+        data: dict[str, list[Any]] = {p: [None] * len(subs) for p in props}
+        data["count"] = [0] * len(subs)
+        for row in ctx.reader.rollup(zone, level + d, None, ("count",)):
+            data["count"][where[row["cell"]]] = int(row["count"])
+        for c in columns:
+            for row in ctx.reader.rollup(zone, level + d, c, STATS):
+                i = where[row["cell"]]
+                for s in STATS:
+                    data[f"{c}_{s}"][i] = clean(row[s])
+        per_depth.append((d, subs, data))
+    if fmt == "geojson":
+        ids: list[str] = []
+        geoms: list[str] = []
+        properties: list[dict[str, Any]] = []
+        for d, subs, data in per_depth:
+            _, texts = ctx.reader.geometries(np.array(subs, dtype=str))
+            ids += subs
+            geoms += texts
+            for i, sub in enumerate(subs):
+                properties.append({"zoneID": sub, "depth": d, "level": level + d,
+                                   **{p: data[p][i] for p in props}})
+        extra = {"dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}", "zoneId": zone,
+                 "depths": depths, "numberReturned": len(ids), "links": _links(request, collection, zone)}
+        return Response(feature_collection(ids, geoms, properties, extra), media_type=GEOJSON)
+    count = {"type": "integer", "title": "rows in the sub-zone"}
+    schema: dict[str, Any] = {"type": "object", "properties": {"count": count}}
+    for c in columns:
+        for s in STATS:
+            schema["properties"][f"{c}_{s}"] = {"type": "number", "title": f"{s} of {c} in the sub-zone"}
+    values = {
+        p: [{"depth": d, "shape": {"count": len(subs), "subZones": len(subs)}, "data": data[p]}
+            for d, subs, data in per_depth]
+        for p in props
+    }
+    body = {
+        "dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}",
+        "zoneId": zone,
+        "depths": depths,
+        "schema": schema,
+        "values": values,
+        "links": _links(request, collection, zone),
+    }
+    return JSONResponse(body)
+
+
+# -- zone query ---------------------------------------------------------------
+
+
+def zones_list(
+    ctx: Context,
+    request: Request,
+    collection: str | None,
+    zone_level: int | None,
+    bbox_raw: str | None,
+    bbox_crs: str | None,
+    compact: bool,
+    limit: int | None,
+    f: str | None,
+) -> Response:
+    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to."""
+    fmt = negotiate(request, f)
+    bbox = parse_bbox(bbox_raw)
+    if bbox is not None and bbox_crs is not None and bbox_crs not in _CRS84_NAMES:
+        # /req/zone-query/bbox-crs: CRS84 (the storage CRS too), as a URI or a safe CURIE.
+        raise BadRequest(f"bbox-crs {bbox_crs!r} is not supported; use {CRS84} (or [OGC:CRS84])")
+    stored = ctx.reader.summary().level
+    level = check_level("zone-level", (stored or 0) if zone_level is None else zone_level, stored)
+    if limit is not None and limit < 1:
+        raise BadRequest(f"limit {limit} must be at least 1")
+    data = ctx.reader.level_data(level)
+    if bbox is None:
+        zones = data.ids.tolist()
+    else:
+        found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_zones)
+        if found is None:
+            raise TooManyZones(f"more than {ctx.max_zones} zones of zone-level {level} hold data near bbox "
+                               f"{bbox_raw!r}; use a coarser zone-level or a smaller bbox")
+        zones = data.ids[found[0]].tolist()
+    if compact and zones:
+        # /rec/zone-json/zone-order: coarser zones first.
+        zones = sorted((str(z) for z in dggs.compact_cells(zones)), key=lambda z: (len(z), z))
+    matched = len(zones)
+    if limit is not None:
+        zones = zones[:limit]
+    cap = ctx.max_zones if fmt == "json" else ctx.max_features
+    if len(zones) > cap:
+        raise TooManyZones(f"{len(zones)} zones of zone-level {level} hold data, more than this server's limit "
+                           f"of {cap}; use a coarser zone-level, a smaller bbox, compact-zones or limit")
+    levels = np.char.str_len(np.array(zones, dtype=str)) - 1 if zones else np.array([], dtype=int)
+    area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in zip(*np.unique(levels, return_counts=True))))
+    links = _links(request, collection)
+    templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}/zones/{{zoneId}}/data",
+                  "rel": REL + "dggrs-zone-data", "type": "application/json"}]
+    if fmt == "geojson":
+        _, texts = ctx.reader.geometries(np.array(zones, dtype=str))
+        props = [{"zoneID": z, "level": len(z) - 1} for z in zones]
+        extra = {"numberMatched": matched, "numberReturned": len(zones), "returnedAreaMetersSquare": area,
+                 "links": links}
+        return Response(feature_collection(zones, texts, props, extra), media_type=GEOJSON)
+    return JSONResponse({"zones": zones, "returnedAreaMetersSquare": area, "numberMatched": matched,
+                         "numberReturned": len(zones), "links": links, "linkTemplates": templates})
+
+
+# -- routes -------------------------------------------------------------------
+
+_F = Query(None, description="Output format: json (default) or geojson; overrides the Accept header")
+_DEPTH = Query(None, alias="zone-depth", description="Relative depth: d, low-high or a,b,c (default 3)")
+_LEVEL = Query(None, alias="zone-level", description="Level of the zones (default: the stored level)")
+_BBOX = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)")
+_COMPACT = Query(True, alias="compact-zones", description="Replace complete sets of children by their parent")
+_LIMIT = Query(None, description="Return at most this many zones")
+_BBOX_CRS = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)")
+_CRS84_NAMES = {CRS84, CRS84.replace("http://", "https://"), "[OGC:CRS84]", "OGC:CRS84"}
+
+
+def register(app: FastAPI, ctx: Context) -> None:
+    """Add the zone routes under ``/dggs/{dggrsId}`` and ``/collections/{collectionId}/dggs/{dggrsId}``."""
+
+    def info(request: Request, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
+        check_dggrs(dggrsId)
+        return zone_info(ctx, request, None, parse_zone(zoneId), f)
+
+    def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
+             f: str | None = _F) -> Response:
+        check_dggrs(dggrsId)
+        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f)
+
+    def zones(request: Request, dggrsId: str, zone_level: int | None = _LEVEL, bbox: str | None = _BBOX,
+              bbox_crs: str | None = _BBOX_CRS, compact_zones: bool = _COMPACT, limit: int | None = _LIMIT,
+              f: str | None = _F) -> Response:
+        check_dggrs(dggrsId)
+        return zones_list(ctx, request, None, zone_level, bbox, bbox_crs, compact_zones, limit, f)
+
+    def c_info(request: Request, collectionId: str, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
+        check_collection(ctx, collectionId)
+        check_dggrs(dggrsId)
+        return zone_info(ctx, request, collectionId, parse_zone(zoneId), f)
+
+    def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
+               f: str | None = _F) -> Response:
+        check_collection(ctx, collectionId)
+        check_dggrs(dggrsId)
+        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f)
+
+    def c_zones(request: Request, collectionId: str, dggrsId: str, zone_level: int | None = _LEVEL,
+                bbox: str | None = _BBOX, bbox_crs: str | None = _BBOX_CRS, compact_zones: bool = _COMPACT,
+                limit: int | None = _LIMIT, f: str | None = _F) -> Response:
+        check_collection(ctx, collectionId)
+        check_dggrs(dggrsId)
+        return zones_list(ctx, request, collectionId, zone_level, bbox, bbox_crs, compact_zones, limit, f)
+
+    for prefix, tag, handlers in (
+        ("", "DGGS", (zones, info, data)),
+        ("/collections/{collectionId}", "Collection DGGS", (c_zones, c_info, c_data)),
+    ):
+        root = prefix + "/dggs/{dggrsId}/zones"
+        app.add_api_route(root, handlers[0], methods=["GET"], tags=[tag], summary="Zones holding data (zone query)")
+        app.add_api_route(root + "/{zoneId}", handlers[1], methods=["GET"], tags=[tag], summary="Zone information")
+        app.add_api_route(root + "/{zoneId}/data", handlers[2], methods=["GET"], tags=[tag],
+                          summary="Data of a zone's sub-zones (DGGS-JSON or GeoJSON)")

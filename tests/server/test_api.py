@@ -1,0 +1,512 @@
+"""The OGC API - DGGS server: every response against the standard's schemas, every number against the store."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import json
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from collections import defaultdict
+from pathlib import Path
+
+import jsonschema
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import Point, box, shape
+
+import dggs
+from dggs.geometry.icosahedron import ISEA
+from dggs.server.reader import map_densify
+from dggs.storage import CellStore
+
+from .conftest import DGGRS, LEVEL, make_client
+from .ogc_schemas import validate
+
+ROOT = f"/dggs/{DGGRS}"
+COLL = f"/collections/sample/dggs/{DGGRS}"
+
+
+def stored_cells(points, level):
+    """Brute force: the cell of every raw point at ``level``."""
+    return np.asarray(dggs.latlng_to_cell(points.lat, points.lng, level))
+
+
+# -- every endpoint against the standard's schemas ----------------------------
+
+ENDPOINTS = [
+    ("/?f=json", "landing"),
+    ("/", "landing"),
+    ("/conformance", "conformance"),
+    ("/collections", "collections"),
+    ("/collections/sample", "collection"),
+    ("/dggs", "dggrs-list"),
+    ("/collections/sample/dggs", "dggrs-list"),
+    (ROOT, "dggrs"),
+    (COLL, "dggrs"),
+    (f"{ROOT}/definition", "dggrs-definition"),
+    (f"{COLL}/definition", "dggrs-definition"),
+    (f"{ROOT}/zones/C401", "zone-info"),
+    (f"{COLL}/zones/A", "zone-info"),
+    (f"{ROOT}/zones/T5222", "zone-info"),
+    (f"{ROOT}/zones/C4/data?zone-depth=2", "dggs-json"),
+    (f"{COLL}/zones/C4/data?zone-depth=0-2", "dggs-json"),
+    (f"{ROOT}/zones/C4/data", "dggs-json"),
+    (f"{ROOT}/zones/C4/data?zone-depth=1&f=geojson", "geojson"),
+    (f"{ROOT}/zones/C401/info-is-not-a-route", "exception"),
+    (f"{ROOT}/zones?zone-level=3", "zone-list"),
+    (f"{COLL}/zones?zone-level=4&compact-zones=false&bbox=-10,30,20,60", "zone-list"),
+    (f"{ROOT}/zones?zone-level=3&f=geojson", "geojson"),
+    (f"{ROOT}/zones/C401?f=geojson", "feature"),
+    ("/map/layers", "map-layers"),
+    ("/map/cells?level=3", "map-cells"),
+    ("/map/cells?level=4&bbox=170,-40,-170,40&column=temp&stat=mean", "map-cells"),
+    ("/dggs/nope", "exception"),
+    (f"{ROOT}/zones/X9", "exception"),
+]
+
+
+@pytest.mark.parametrize(("url", "schema"), ENDPOINTS)
+def test_every_endpoint_matches_its_schema(client, url, schema):
+    res = client.get(url)
+    assert res.status_code == (200 if schema != "exception" else res.status_code)
+    validate(res.json(), schema)
+
+
+@pytest.mark.parametrize(
+    ("document", "schema"),
+    [
+        ({"title": "no links"}, "landing"),
+        ({"conformsTo": "core"}, "conformance"),
+        ({"collections": []}, "collections"),
+        ({"id": "x", "title": "x", "links": []}, "dggrs"),  # no description, no defaultDepth
+        ({"dggh": {}, "zirs": {}}, "dggrs-definition"),
+        ({"zones": [1, 2]}, "zone-list"),
+        ({"dggrs": "x", "zoneId": "A", "values": {}}, "dggs-json"),  # no depths
+        ({"dggrs": "http://a/b", "zoneId": "A", "depths": [0], "values": {"v": [{"data": ["a"]}]}}, "dggs-json"),
+        ({"id": "A", "links": [{"href": "x"}]}, "zone-info"),  # a link without rel
+        ({"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point"}}]}, "geojson"),
+        ({"title": "x", "status": 400}, "exception"),
+        ({"collection": "x"}, "map-layers"),
+    ],
+)
+def test_a_wrong_document_fails_the_schema(document, schema):
+    with pytest.raises(jsonschema.ValidationError):
+        validate(document, schema)
+
+
+def test_collection_routes_answer_as_the_root_ones(client):
+    for tail in ("/zones?zone-level=2", "/zones/C4/data?zone-depth=1", "/zones/C401"):
+        a, b = client.get(ROOT + tail).json(), client.get(COLL + tail).json()
+        for doc in (a, b):
+            doc.pop("links", None)
+            doc.pop("linkTemplates", None)
+            doc.pop("dggrs", None)
+        assert a == b
+
+
+# -- landing page, conformance, OpenAPI, web map page ---------------------------
+
+
+def test_landing_links_and_conformance(client):
+    links = {link["rel"]: link["href"] for link in client.get("/").json()["links"]}
+    for rel in ("self", "service-desc", "conformance", "data", "http://www.opengis.net/def/rel/ogc/1.0/dggrs-list"):
+        assert rel in links
+    for href in links.values():
+        assert client.get(href.replace("http://testserver", "")).status_code == 200
+    classes = client.get("/conformance").json()["conformsTo"]
+    for name in ("core", "data-retrieval", "zone-query", "data-json", "data-geojson", "zone-geojson"):
+        assert f"https://www.opengis.net/spec/ogcapi-dggs-1/1.0/conf/{name}" in classes
+    assert "http://www.opengis.net/spec/ogcapi-common-1/1.0/conf/core" in classes
+
+
+def test_openapi_lists_the_routes(client):
+    api = client.get("/api").json()
+    assert api["openapi"].startswith("3.")
+    for path in ("/conformance", "/dggs/{dggrsId}/zones/{zoneId}/data", "/map/cells",
+                 "/collections/{collectionId}/dggs/{dggrsId}/zones"):
+        assert path in api["paths"], path
+    assert client.get("/api.html").status_code == 200
+
+
+def test_browser_gets_the_web_map_page_when_installed(store_path, tmp_path):
+    static = tmp_path / "static"
+    static.mkdir()
+    with make_client(store_path, static=static) as c:  # no index.html: JSON for everyone
+        assert c.get("/", headers={"accept": "text/html"}).json()["links"]
+    (static / "index.html").write_text("<!doctype html><title>map</title>")
+    (static / "app.js").write_text("// js")
+    with make_client(store_path, static=static) as c:
+        page = c.get("/", headers={"accept": "text/html,application/xhtml+xml,*/*;q=0.8"})
+        assert page.headers["content-type"].startswith("text/html") and "<title>map</title>" in page.text
+        assert c.get("/", headers={"accept": "application/json"}).json()["links"]
+        assert c.get("/?f=json", headers={"accept": "text/html"}).json()["links"]
+        assert c.get("/static/app.js").text == "// js"
+
+
+def test_collection_extent_is_the_points_bbox(client, points):
+    bbox = client.get("/collections/sample").json()["extent"]["spatial"]["bbox"][0]
+    assert bbox == pytest.approx([points.lng.min(), points.lat.min(), points.lng.max(), points.lat.max()])
+
+
+# -- the DGGRS ----------------------------------------------------------------
+
+
+def test_dggrs_description_states_the_grid(client):
+    doc = client.get(ROOT).json()
+    assert doc["id"] == DGGRS and doc["maxRefinementLevel"] == LEVEL
+    rels = {link["rel"] for link in doc["links"]}
+    assert {"self", "http://www.opengis.net/def/rel/ogc/1.0/dggrs-definition"} <= rels
+    templates = {t["rel"] for t in doc["linkTemplates"]}
+    assert "http://www.opengis.net/def/rel/ogc/1.0/dggrs-zone-info" in templates
+    orientation = doc["definition"]["dggh"]["parameters"]["orientation"]
+    assert orientation["authalicLatitude"] == pytest.approx(ISEA.lat, abs=1e-12)
+    assert orientation["longitude"] == 11.25 and orientation["azimuth"] == 0
+    assert orientation["latitude"] == pytest.approx(58.397145907431, abs=1e-9)  # ISEA3H example's geodetic value
+    levels = doc["levels"]
+    assert [row["level"] for row in levels] == list(range(dggs.MAX_LEVEL + 1))
+    earth = float(dggs.cell_area(0)) * 20
+    for row in levels:
+        count = 20 if row["level"] == 0 else 20 * 6 * 3 ** (row["level"] - 1)
+        assert row["zones"] == count
+        assert row["areaMetersSquare"] == pytest.approx(earth / count, rel=1e-12)
+        assert row["areaMetersSquare"] == float(dggs.cell_area(row["level"]))
+
+
+# -- zone information -----------------------------------------------------------
+
+
+@pytest.mark.parametrize("zone", ["A", "C401", "T5222", "K1", dggs.latlng_to_cell(0.0, 180.0, 4)])
+def test_zone_info_is_the_grid_api(client, reference, zone):
+    info = client.get(f"{ROOT}/zones/{zone}").json()
+    level = dggs.get_level(zone)
+    assert info["id"] == zone and info["level"] == level
+    assert info["areaMetersSquare"] == float(dggs.cell_area(zone))
+    assert info["parent"] == (dggs.cell_to_parent(zone) if level else None)
+    assert info["children"] == list(dggs.cell_to_children(zone))
+    assert info["neighbors"] == list(dggs.edge_neighbors(zone))
+    lat, lng = dggs.cell_to_latlng(zone)
+    assert info["centroid"] == pytest.approx([lng, lat])
+    assert shape(info["geometry"]).buffer(1e-9).contains(Point(lng, lat))
+    rels = [link["rel"].rsplit("/", 1)[-1] for link in info["links"]]
+    assert rels.count("dggrs-zone-child") == len(info["children"]) and "dggrs" in rels and "dggrs-zone-data" in rels
+    rows = reference.aggregate(level, "pop", ("count", "min", "max", "mean"), cell=zone)
+    assert info["dataCount"] == (rows[0]["count"] if rows else 0)
+    if rows:
+        assert info["statistics"]["pop"] == {"minimum": rows[0]["min"], "maximum": rows[0]["max"],
+                                             "average": pytest.approx(rows[0]["mean"])}
+
+
+# -- zone data ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("zone", "depth"), [("C4", "2"), ("A", "1"), ("K", "0-2"), ("F2", "0,3")])
+def test_zone_data_equals_the_store_aggregates(client, reference, zone, depth):
+    doc = client.get(f"{ROOT}/zones/{zone}/data", params={"zone-depth": depth}).json()
+    level = dggs.get_level(zone)
+    depths = doc["depths"]
+    assert depths == ([int(d) for d in depth.split(",")] if "," in depth
+                      else list(range(int(depth[0]), int(depth[-1]) + 1)))
+    stats = ("sum", "mean", "min", "max")
+    assert set(doc["values"]) == {"count"} | {f"{c}_{s}" for c in ("pop", "temp") for s in stats}
+    for i, d in enumerate(depths):
+        subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
+        for prop, entries in doc["values"].items():
+            entry = entries[i]
+            assert entry["depth"] == d and entry["shape"] == {"count": len(subs), "subZones": len(subs)}
+            assert len(entry["data"]) == len(subs)
+        for column in ("pop", "temp"):
+            rows = {r["cell"]: r for r in reference.aggregate(level + d, column, cell=zone)}
+            for s in ("sum", "mean", "min", "max"):
+                got = doc["values"][f"{column}_{s}"][i]["data"]
+                want = [rows[c][s] if c in rows else None for c in subs]
+                assert got == pytest.approx(want)
+        counts = doc["values"]["count"][i]["data"]
+        assert counts == [rows[c]["count"] if c in rows else 0 for c in subs]
+
+
+def test_zone_data_equals_a_brute_force_sum_over_the_raw_points(client, points):
+    zone, depth = "C4", 3
+    level = dggs.get_level(zone) + depth
+    sums: dict[str, int] = defaultdict(int)
+    counts: dict[str, int] = defaultdict(int)
+    for cell, pop in zip(dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist(), points.pop.tolist()):
+        sums[cell] += pop
+        counts[cell] += 1
+    doc = client.get(f"{ROOT}/zones/{zone}/data?zone-depth={depth}").json()
+    subs = list(dggs.cell_to_children(zone, level))
+    assert doc["values"]["pop_sum"][0]["data"] == [sums[c] if c in sums else None for c in subs]
+    assert doc["values"]["count"][0]["data"] == [counts.get(c, 0) for c in subs]
+    assert sum(doc["values"]["count"][0]["data"]) == sum(v for c, v in counts.items() if c.startswith(zone)) > 0
+
+
+def test_zone_data_default_depth_is_clamped_to_the_stored_level(client):
+    assert client.get(f"{ROOT}/zones/C4/data").json()["depths"] == [3]
+    assert client.get(f"{ROOT}/zones/C4012/data").json()["depths"] == [LEVEL - 4]
+
+
+def test_zone_data_as_geojson(client, reference):
+    for how in ({"params": {"f": "geojson", "zone-depth": "2"}},
+                {"params": {"zone-depth": "2"}, "headers": {"accept": "application/geo+json"}}):
+        res = client.get(f"{ROOT}/zones/C4/data", **how)
+        assert res.headers["content-type"].startswith("application/geo+json")
+        doc = res.json()
+        subs = list(dggs.cell_to_children("C4", 3))
+        assert [f["id"] for f in doc["features"]] == subs
+        rows = {r["cell"]: r for r in reference.aggregate(3, "pop", cell="C4")}
+        for feature in doc["features"]:
+            z = feature["id"]
+            assert feature["properties"]["zoneID"] == z
+            assert feature["properties"]["pop_sum"] == (rows[z]["sum"] if z in rows else None)
+            lat, lng = dggs.cell_to_latlng(z)
+            assert shape(feature["geometry"]).contains(Point(lng, lat))
+    assert client.get(f"{ROOT}/zones/C4/data", headers={"accept": "application/json"}).headers[
+        "content-type"].startswith("application/json")
+
+
+# -- zone query ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("level", [0, 2, 4, LEVEL])
+def test_zones_are_the_parents_of_stored_cells(client, points, level):
+    want = sorted(set(dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist()))
+    doc = client.get(f"{ROOT}/zones", params={"zone-level": level, "compact-zones": "false"}).json()
+    assert doc["zones"] == want
+    assert doc["numberMatched"] == doc["numberReturned"] == len(want)
+    assert doc["returnedAreaMetersSquare"] == pytest.approx(len(want) * float(dggs.cell_area(level)))
+
+
+def test_zones_default_level_is_the_stored_level_compacted(client, points):
+    doc = client.get(f"{ROOT}/zones").json()
+    cells = sorted(set(stored_cells(points, LEVEL).tolist()))
+    assert set(doc["zones"]) == set(dggs.compact_cells(cells))
+
+
+@pytest.mark.parametrize("level", [3, 5, LEVEL])
+def test_compact_zones_equals_compact_cells(client, points, level):
+    full = sorted(set(dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist()))
+    compact = list(dggs.compact_cells(full))
+    assert len(compact) < len(full)  # the dense cluster makes complete sets of children
+    doc = client.get(f"{ROOT}/zones", params={"zone-level": level}).json()  # compact-zones defaults to true
+    assert sorted(doc["zones"]) == sorted(compact)
+    assert [len(z) for z in doc["zones"]] == sorted(len(z) for z in doc["zones"])  # coarser first
+    assert doc["returnedAreaMetersSquare"] == pytest.approx(len(full) * float(dggs.cell_area(level)), rel=1e-9)
+
+
+def brute_force_bbox(points, level, bbox):
+    """Cells of ``level`` holding data whose polygon (as the server draws it) meets the bbox."""
+    w, s, e, n = bbox
+    boxes = [box(w, s, e, n)] if w < e else [box(w, s, 180, n), box(-180, s, e, n)]
+    found = set()
+    for cell in set(dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist()):
+        poly = shapely.transform(dggs.cell_to_polygon(cell, densify=map_densify(level)), lambda xy: np.round(xy, 6))
+        if any(poly.intersects(b) for b in boxes):
+            found.add(cell)
+    return found
+
+
+BBOXES = [(-10.0, 30.0, 20.0, 60.0), (170.0, -40.0, -170.0, 40.0), (-180.0, 80.0, 180.0, 90.0),
+          (-180.0, -90.0, -170.0, -60.0), (100.0, -5.0, 100.5, -4.5)]
+
+
+@pytest.mark.parametrize("bbox", BBOXES)
+@pytest.mark.parametrize("level", [2, 5])
+def test_bbox_filter_equals_a_brute_force_intersection(client, points, bbox, level):
+    want = brute_force_bbox(points, level, bbox)
+    text = ",".join(str(v) for v in bbox)
+    doc = client.get(f"{ROOT}/zones", params={"zone-level": level, "compact-zones": "false", "bbox": text}).json()
+    assert set(doc["zones"]) == want
+    cells = client.get("/map/cells", params={"level": level, "bbox": text}).json()
+    assert {f["properties"]["zone_id"] for f in cells["features"]} == want
+
+
+def test_zone_list_limit_and_geojson(client):
+    full = client.get(f"{ROOT}/zones?zone-level=4&compact-zones=false").json()
+    part = client.get(f"{ROOT}/zones?zone-level=4&compact-zones=false&limit=5").json()
+    assert part["zones"] == full["zones"][:5] and part["numberMatched"] == full["numberMatched"]
+    geo = client.get(f"{ROOT}/zones?zone-level=4&compact-zones=false", headers={"accept": "application/geo+json"})
+    assert geo.headers["content-type"].startswith("application/geo+json")
+    features = geo.json()["features"]
+    assert [f["properties"]["zoneID"] for f in features] == full["zones"]
+    for f in features:
+        lat, lng = dggs.cell_to_latlng(f["id"])
+        assert shape(f["geometry"]).contains(Point(lng, lat))
+
+
+# -- the web map's JSON -------------------------------------------------------------
+
+
+def test_map_layers_contract(client, points):
+    doc = client.get("/map/layers").json()
+    assert doc == {
+        "collection": "sample",
+        "stored_level": LEVEL,
+        "levels": list(range(LEVEL + 1)),
+        "columns": {"pop": "INTEGER", "temp": "REAL", "name": "TEXT"},
+        "numeric_columns": ["pop", "temp"],
+        "bbox": pytest.approx([points.lng.min(), points.lat.min(), points.lng.max(), points.lat.max()]),
+        "count": points.lat.shape[0],
+        "max_zones": 50_000,
+    }
+
+
+@pytest.mark.parametrize(("column", "stat"), [(None, "count"), ("pop", "sum"), ("temp", "mean"), ("pop", "min"),
+                                              ("temp", "max"), ("pop", "count")])
+def test_map_cells_values_equal_the_store(client, reference, column, stat):
+    level = 3
+    params = {"level": level, "bbox": "-180,-90,180,90", "stat": stat}
+    if column:
+        params["column"] = column
+    doc = client.get("/map/cells", params=params).json()
+    rows = {r["cell"]: r for r in reference.aggregate(level, column, ("count", stat) if column else ("count",))}
+    assert {f["properties"]["zone_id"] for f in doc["features"]} == set(rows)
+    area = float(dggs.cell_area(level, "km^2"))
+    for f in doc["features"]:
+        p = f["properties"]
+        row = rows[p["zone_id"]]
+        assert p["level"] == level and p["area_km2"] == area and p["count"] == row["count"]
+        assert p["value"] == pytest.approx(row[stat] if column else row["count"])
+        lat, lng = dggs.cell_to_latlng(p["zone_id"])
+        assert shape(f["geometry"]).contains(Point(lng, lat))
+
+
+def test_map_cells_antimeridian_and_poles_make_valid_geometry(client):
+    doc = client.get("/map/cells", params={"level": 2, "bbox": "170,-90,-170,90"}).json()
+    kinds = {f["geometry"]["type"] for f in doc["features"]}
+    assert "MultiPolygon" in kinds  # cells across 180 are split
+    for f in doc["features"]:
+        geom = shape(f["geometry"])
+        assert geom.is_valid and -180 <= geom.bounds[0] and geom.bounds[2] <= 180
+
+
+def test_map_cells_whole_world_is_fast(client):
+    for level in range(LEVEL + 1):
+        client.get("/map/cells", params={"level": level, "column": "pop", "stat": "sum"})  # fills the caches
+    start = time.perf_counter()
+    for level in range(LEVEL + 1):
+        assert client.get("/map/cells", params={"level": level, "column": "pop", "stat": "sum"}).status_code == 200
+    assert time.perf_counter() - start < 1.0
+
+
+def test_concurrent_ingest_invalidates_the_cache(store_copy):
+    with make_client(store_copy) as c:
+        before = c.get("/map/cells?level=0").json()
+        total = sum(f["properties"]["count"] for f in before["features"])
+        with CellStore(store_copy) as writer:  # another writer while the server runs
+            writer.ingest_points([1.0, 1.0, -45.0], [2.0, 2.0, 100.0], LEVEL, {"pop": [1, 2, 3], "temp": [1.0] * 3,
+                                                                               "name": ["a", "b", "c"]})
+            after = c.get("/map/cells?level=0").json()
+            assert sum(f["properties"]["count"] for f in after["features"]) == total + 3
+            assert c.get("/map/layers").json()["count"] == total + 3
+            writer.delete_source(2)
+        again = c.get("/map/cells?level=0").json()
+        assert sum(f["properties"]["count"] for f in again["features"]) == total
+
+
+# -- a real process -----------------------------------------------------------------
+
+
+def _free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
+    exe = Path(sys.executable).parent / "dggs"
+    if not exe.exists():
+        pytest.skip("the dggs script is not installed next to this Python")
+    port = _free_port()
+    proc = subprocess.Popen([str(exe), "serve", str(store_path), "--port", str(port)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        url = f"http://127.0.0.1:{port}"
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                with urllib.request.urlopen(url + "/conformance", timeout=5) as res:
+                    conformance = json.load(res)
+                break
+            except OSError:
+                if proc.poll() is not None or time.monotonic() > deadline:
+                    raise AssertionError(f"dggs serve did not answer: {proc.stderr.read() if proc.stderr else ''}")
+                time.sleep(0.2)
+        validate(conformance, "conformance")
+        with urllib.request.urlopen(f"{url}/dggs/{DGGRS}/zones/C4/data?zone-depth=1", timeout=10) as res:
+            assert res.headers["content-type"].startswith("application/json")
+            validate(json.load(res), "dggs-json")
+        with urllib.request.urlopen(url + "/map/layers", timeout=10) as res:
+            validate(json.load(res), "map-layers")
+    finally:
+        proc.terminate()
+        out, _ = proc.communicate(timeout=30)
+    assert f"http://127.0.0.1:{port}/" in out
+
+
+# -- docstring examples ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "zones"])
+def test_doctests(name):
+    module = importlib.import_module(f"dggs.server.{name}")
+    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0 and result.attempted > 0
+
+
+def test_readers_see_whole_batches_during_an_ingest(store_copy):
+    import threading
+
+    batch = 250
+    rng = np.random.default_rng(3)
+    lat, lng = rng.uniform(-60, 60, 2000), rng.uniform(-180, 180, 2000)
+    with make_client(store_copy) as c:
+        base = c.get("/map/layers").json()["count"]
+        seen = []
+        done = threading.Event()
+
+        def ingest():
+            try:
+                with CellStore(store_copy, merge_rows=600) as writer:
+                    writer.ingest_points(lat, lng, LEVEL, {"pop": np.ones(2000, dtype=np.int64)}, batch_size=batch,
+                                         progress=lambda n: time.sleep(0.05))  # readers get a look in
+            finally:
+                done.set()
+
+        thread = threading.Thread(target=ingest)
+        thread.start()
+        while not done.is_set():
+            layers = c.get("/map/layers").json()["count"]
+            world = sum(f["properties"]["count"] for f in c.get("/map/cells?level=0").json()["features"])
+            seen += [layers, world]
+        thread.join()
+        seen.append(c.get("/map/layers").json()["count"])
+    assert all((n - base) % batch == 0 for n in seen), sorted(set(seen))
+    assert len(set(seen)) > 3  # the readers saw the ingest half-way
+    assert seen[-1] == base + 2000
+
+
+def test_an_empty_store_is_served(tmp_path):
+    path = tmp_path / "empty.db"
+    CellStore(path).close()
+    with make_client(path) as c:
+        layers = c.get("/map/layers").json()
+        validate(layers, "map-layers")
+        assert layers["stored_level"] is None and layers["levels"] == [] and layers["count"] == 0
+        assert c.get(f"{ROOT}/zones").json()["zones"] == []
+        assert c.get("/map/cells?level=0").json()["features"] == []
+        data = c.get(f"{ROOT}/zones/C4/data?zone-depth=1").json()
+        validate(data, "dggs-json")
+        assert data["values"]["count"][0]["data"] == [0, 0, 0]
+        validate(c.get("/collections/empty").json(), "collection")
+
+
+def test_zone_info_at_the_finest_level(client):
+    zone = dggs.latlng_to_cell(51.05, -114.07, dggs.MAX_LEVEL)
+    info = client.get(f"{ROOT}/zones/{zone}").json()
+    validate(info, "zone-info")
+    assert info["level"] == dggs.MAX_LEVEL and info["children"] == [] and "statistics" not in info
+    assert info["uint64Id"] == str(dggs.str_to_int(zone))

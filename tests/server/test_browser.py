@@ -1,0 +1,440 @@
+"""The web map at ``/`` in a real browser: Debian's chromium, headless, driven by selenium against a
+``dggs serve`` process on 127.0.0.1 serving a store built here.
+
+Run with ``make test-browser`` (or ``python -m pytest -q -m browser tests/server``). With
+``DGGS_SCREENSHOT=docs/serve-globe.png`` set, the recolouring test saves its screenshot of the globe
+(coloured by a sum) there, for the docs.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+import dggs
+from dggs.storage import CellStore
+
+pytestmark = pytest.mark.browser
+
+CHROMIUM = "/usr/bin/chromium"
+CHROMEDRIVER = "/usr/bin/chromedriver"
+WIDTH, HEIGHT = 1000, 640
+TIMEOUT = 30.0
+STORED_LEVEL = 9
+# The server's cap on /map/cells features: the whole world at the stored level (about 5,500 cells) is
+# over it, so the page must step to a coarser level; every view the tests set is under it.
+MAX_FEATURES = 4500
+
+# The data: two dense clusters (Europe, Africa: normal, cut to a box) and four small ones elsewhere;
+# the oceans stay empty.
+EUROPE = (47.5, 12.5)  # in lat 40..55, lng 0..25
+AFRICA = (-7.5, 25.0)  # in lat -20..5, lng 15..35
+ELSEWHERE = [(40.0, -100.0), (-15.0, -60.0), (35.0, 115.0), (-25.0, 135.0)]
+EMPTY = [(20.0, -40.0), (-35.0, 75.0), (10.0, -20.0)]  # ocean, away from the data and the graticule
+GLOBE_VIEW = {"center": [15.0, 20.0], "zoom": 1.7}
+EUROPE_VIEW = {"center": [EUROPE[1], EUROPE[0]], "zoom": 4.5}
+
+webdriver = pytest.importorskip("selenium.webdriver")
+from selenium.webdriver.chrome.service import Service  # noqa: E402
+from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
+from selenium.webdriver.common.by import By  # noqa: E402
+from selenium.webdriver.common.keys import Keys  # noqa: E402
+from selenium.webdriver.support.ui import Select, WebDriverWait  # noqa: E402
+
+
+# --- Fixtures ---------------------------------------------------------------------------------------
+def _cluster(rng: np.random.Generator, n: int, centre: tuple[float, float], sd: tuple[float, float],
+             box: tuple[float, float, float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """n points, normal around centre (lat, lng), inside box (s, n, w, e)."""
+    lat, lng = np.empty(0), np.empty(0)
+    while lat.size < n:
+        a, b = rng.normal(centre[0], sd[0], n), rng.normal(centre[1], sd[1], n)
+        keep = (a > box[0]) & (a < box[1]) & (b > box[2]) & (b < box[3])
+        lat, lng = np.concatenate([lat, a[keep]]), np.concatenate([lng, b[keep]])
+    return lat[:n], lng[:n]
+
+
+def _points() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    rng = np.random.default_rng(12)
+    europe = _cluster(rng, 6000, EUROPE, (4, 6), (40, 55, 0, 25))
+    africa = _cluster(rng, 3000, AFRICA, (6, 5), (-20, 5, 15, 35))
+    lat, lng = [europe[0], africa[0]], [europe[1], africa[1]]
+    for clat, clng in ELSEWHERE:
+        lat.append(rng.uniform(clat - 2, clat + 2, 50))
+        lng.append(rng.uniform(clng - 2, clng + 2, 50))
+    lat_a, lng_a = np.concatenate(lat), np.concatenate(lng)
+    pop = rng.integers(1, 10_000, lat_a.size)
+    return lat_a, lng_a, pop
+
+
+@pytest.fixture(scope="module")
+def data(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
+    lat, lng, pop = _points()
+    path = tmp_path_factory.mktemp("browser-store") / "cells.db"
+    with CellStore(path) as store:
+        store.ingest_points(lat, lng, STORED_LEVEL, {"pop": pop})
+    return {"path": path, "lat": lat, "lng": lng, "pop": pop}
+
+
+def _free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def _serve_command(store: Path, port: int) -> list[str]:
+    exe = Path(sys.executable).parent / "dggs"
+    cli = [str(exe)] if exe.exists() else [sys.executable, "-c", "from dggs.cli import main; main()"]
+    return [*cli, "serve", str(store), "--host", "127.0.0.1", "--port", str(port),
+            "--max-features", str(MAX_FEATURES)]
+
+
+def _get_json(url: str, timeout: float = 5.0) -> Any:
+    opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))  # 127.0.0.1: never a proxy
+    with opener.open(url, timeout=timeout) as response:
+        return json.load(response)
+
+
+@pytest.fixture(scope="module")
+def server(data: dict[str, Any], tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
+    port = _free_port()
+    log = (tmp_path_factory.mktemp("serve-log") / "serve.log").open("w+")
+    proc = subprocess.Popen(_serve_command(data["path"], port), stdout=log, stderr=subprocess.STDOUT)
+    base = f"http://127.0.0.1:{port}"
+    try:
+        deadline = time.monotonic() + TIMEOUT
+        while True:
+            if proc.poll() is not None:
+                log.seek(0)
+                pytest.fail(f"dggs serve exited with {proc.returncode}:\n{log.read()}")
+            try:
+                _get_json(f"{base}/map/layers", timeout=2.0)
+                break
+            except (OSError, urllib.error.URLError):
+                if time.monotonic() > deadline:
+                    log.seek(0)
+                    pytest.fail(f"dggs serve did not answer in {TIMEOUT} s:\n{log.read()}")
+                time.sleep(0.1)
+        yield base
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(10)
+        except subprocess.TimeoutExpired:  # pragma: no cover
+            proc.kill()
+            proc.wait()
+        log.close()
+
+
+@pytest.fixture(scope="module")
+def driver(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Any]:
+    if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):  # pragma: no cover
+        pytest.skip(
+            f"the browser tests need Debian's chromium and chromium-driver ({CHROMIUM}, {CHROMEDRIVER}): "
+            "apt-get install chromium chromium-driver, or make test-browser"
+        )
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    profile = tmp_path_factory.mktemp("chromium-profile")
+    for flag in (
+        "--headless=new",
+        "--no-sandbox",
+        # WebGL without a GPU: ANGLE on SwiftShader (software Vulkan), allowed explicitly.
+        "--use-angle=swiftshader",
+        "--enable-unsafe-swiftshader",
+        "--ignore-gpu-blocklist",
+        # Nothing but 127.0.0.1.
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--disable-default-apps",
+        "--disable-extensions",
+        "--disable-quic",
+        "--no-proxy-server",
+        "--no-first-run",
+        "--no-default-browser-check",
+        "--disable-dev-shm-usage",
+        f"--window-size={WIDTH},{HEIGHT + 200}",
+        f"--user-data-dir={profile}",
+    ):
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    browser = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    try:
+        # A fixed viewport and pixel ratio, whatever the window decorations, so pixels are CSS pixels.
+        browser.execute_cdp_cmd(
+            "Emulation.setDeviceMetricsOverride",
+            {"width": WIDTH, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": False},
+        )
+        browser.set_script_timeout(TIMEOUT)
+        yield browser
+    finally:
+        browser.quit()
+
+
+@pytest.fixture(scope="module")
+def page(driver: Any, server: str) -> Any:
+    """The map page, loaded once, its first cells drawn; the tests set the view they need."""
+    driver.get(f"{server}/")
+    wait_for(driver, lambda: driver.execute_script("return document.body.dataset.state") in ("idle", "error"))
+    return driver
+
+
+# --- Helpers ----------------------------------------------------------------------------------------
+def wait_for(driver: Any, condition: Any, timeout: float = TIMEOUT, message: str = "") -> Any:
+    return WebDriverWait(driver, timeout, poll_frequency=0.05).until(lambda _: condition(), message)
+
+
+def state(driver: Any) -> dict[str, Any]:
+    return driver.execute_script("return Object.assign({}, window.dggsState, {body: document.body.dataset.state})")
+
+
+def settle(driver: Any, before: int, timeout: float = TIMEOUT) -> dict[str, Any]:
+    """Wait until the page has rendered a fetch started after `before` renders and the map is idle."""
+
+    def done() -> bool:
+        s = state(driver)
+        if s["body"] == "error":
+            raise AssertionError(f"the page reports an error: {s['lastError']}")
+        return s["body"] == "idle" and s["renders"] > before
+
+    wait_for(driver, done, timeout, "the map did not become idle")
+    return state(driver)
+
+
+def set_view(driver: Any, view: dict[str, Any]) -> dict[str, Any]:
+    before = state(driver)["renders"]
+    driver.execute_script("window.dggsMap.jumpTo(Object.assign({bearing: 0, pitch: 0}, arguments[0]))", view)
+    return settle(driver, before)
+
+
+def choose(driver: Any, select_id: str, value: str) -> dict[str, Any]:
+    before = state(driver)["renders"]
+    Select(driver.find_element(By.ID, select_id)).select_by_value(value)
+    return settle(driver, before)
+
+
+def project(driver: Any, lat: float, lng: float) -> tuple[float, float]:
+    """Page (CSS px) position of a location on the map."""
+    x, y = driver.execute_script(
+        "const p = window.dggsMap.project([arguments[1], arguments[0]]);"
+        "const r = window.dggsMap.getCanvas().getBoundingClientRect();"
+        "return [r.left + p.x, r.top + p.y];",
+        lat,
+        lng,
+    )
+    return float(x), float(y)
+
+
+def js_errors(driver: Any) -> list[dict[str, Any]]:
+    """The browser log's errors since the last call (reading empties the log). Chromium logs every HTTP
+    error response; a 413 from /map/cells is the server asking for a coarser level, which the page does."""
+    return [
+        entry
+        for entry in driver.get_log("browser")
+        if entry["level"] == "SEVERE" and not (entry["source"] == "network" and "status of 413" in entry["message"])
+    ]
+
+
+class Screenshot:
+    """A screenshot of the page (PNG from chromium), its pixels read back by drawing it on a 2D canvas in
+    the page: no image library needed in Python."""
+
+    def __init__(self, driver: Any) -> None:
+        self.driver = driver
+        self.png = driver.get_screenshot_as_base64()
+
+    def region(self, x0: int, y0: int, width: int, height: int) -> np.ndarray:
+        """The (height, width, 3) RGB pixels of a rectangle, in page px (the pixel ratio is 1)."""
+        script = """
+            const [png, x, y, w, h, done] = arguments;
+            const img = new Image();
+            img.onload = () => {
+              const c = document.createElement('canvas');
+              c.width = img.width; c.height = img.height;
+              const g = c.getContext('2d', {willReadFrequently: true});
+              g.drawImage(img, 0, 0);
+              done([img.width, img.height, Array.from(g.getImageData(x, y, w, h).data)]);
+            };
+            img.onerror = () => done(null);
+            img.src = 'data:image/png;base64,' + png;
+        """
+        result = self.driver.execute_async_script(script, self.png, x0, y0, width, height)
+        assert result is not None, "the screenshot did not decode"
+        self.size = (result[0], result[1])
+        return np.array(result[2], np.uint8).reshape(height, width, 4)[:, :, :3]
+
+    def patch(self, x: float, y: float, radius: int = 2) -> np.ndarray:
+        xi, yi = int(round(x)), int(round(y))
+        return self.region(xi - radius, yi - radius, 2 * radius + 1, 2 * radius + 1)
+
+
+def is_cell_colour(rgb: np.ndarray) -> np.ndarray:
+    """The cells' ramp (YlOrRd) is warm, even under their dark outlines; the globe, graticule and space
+    are dark and blue."""
+    r, b = rgb[..., 0].astype(int), rgb[..., 2].astype(int)
+    return (r > 80) & (r > b + 30)
+
+
+def level_rows(path: Path, level: int, column: str | None = None, stats: tuple[str, ...] = ("count",)) -> list[dict]:
+    with CellStore(path) as store:
+        return store.aggregate(level, column, stats)
+
+
+# --- Tests ------------------------------------------------------------------------------------------
+def test_page_loads_without_errors(page: Any, server: str) -> None:
+    s = state(page)
+    assert s["body"] == "idle", s
+    assert s["lastError"] is None
+    assert s["featureCount"] > 0 and 0 <= s["level"] <= STORED_LEVEL
+    assert "dggs" in page.title
+    assert js_errors(page) == []
+    # Everything came from this server: no request left 127.0.0.1.
+    urls = page.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+    assert urls and all(u.startswith(server) or u.startswith(("blob:", "data:")) for u in urls), urls
+    assert page.execute_script("return window.dggsMap.getProjection().type") == "globe"
+    # Labelled, focusable controls.
+    for select_id in ("column", "stat", "level"):
+        assert page.find_element(By.CSS_SELECTOR, f"label[for={select_id}]").text
+    # The keyboard reaches the controls, then the map (the stat select is disabled for the row count).
+    page.execute_script("document.activeElement.blur()")
+    reached = []
+    for _ in range(8):
+        ActionChains(page).send_keys(Keys.TAB).perform()
+        active = page.switch_to.active_element
+        reached.append(active.get_attribute("id") or active.get_attribute("class"))
+    assert reached[:2] == ["column", "level"], reached
+    assert any("maplibregl-canvas" in r for r in reached), reached
+    options = [o.get_attribute("value") for o in Select(page.find_element(By.ID, "column")).options]
+    assert options == ["", "pop"]
+
+
+def test_cells_drawn_where_the_data_is(page: Any, data: dict[str, Any]) -> None:
+    if state(page)["column"] is not None:
+        choose(page, "column", "")
+    s = set_view(page, GLOBE_VIEW)
+    assert s["bbox"] == [-180, -90, 180, 90], "the whole globe is in view: the whole world is fetched"
+    # All non-empty cells of the level, rolled up by the server.
+    rows = level_rows(data["path"], s["level"])
+    assert s["featureCount"] == len(rows)
+    assert s["max"] == max(r["count"] for r in rows)
+    shot = Screenshot(page)
+    for lat, lng in [EUROPE, AFRICA]:
+        x, y = project(page, lat, lng)
+        assert 0 < x < WIDTH and 0 < y < HEIGHT
+        pixels = shot.patch(x, y)
+        assert is_cell_colour(pixels).mean() > 0.8, (lat, lng, pixels.tolist())
+    assert shot.size == (WIDTH, HEIGHT)
+    for lat, lng in EMPTY:
+        x, y = project(page, lat, lng)
+        assert 0 < x < WIDTH and 0 < y < HEIGHT
+        pixels = shot.patch(x, y, 4)
+        assert not is_cell_colour(pixels).any(), (lat, lng, pixels.tolist())
+    # Nothing is drawn in space, below the globe.
+    assert not is_cell_colour(shot.region(WIDTH // 2 - 200, HEIGHT - 20, 400, 20)).any()
+    assert js_errors(page) == []
+
+
+def test_zoom_in_shows_finer_cells(page: Any, data: dict[str, Any]) -> None:
+    coarse = set_view(page, GLOBE_VIEW)
+    coarse_area = page.execute_script("return window.dggsMap.querySourceFeatures('cells')[0].properties.area_km2")
+    fine = set_view(page, EUROPE_VIEW)
+    assert fine["level"] > coarse["level"]
+    assert fine["featureCount"] > coarse["featureCount"]
+    w, s, e, n = fine["bbox"]
+    assert -180 < w < EUROPE[1] < e < 180 and -90 < s < EUROPE[0] < n < 90, fine["bbox"]
+    areas = page.execute_script(
+        "return window.dggsMap.querySourceFeatures('cells').slice(0, 20).map(f => f.properties.area_km2)"
+    )
+    expected = dggs.cell_area(dggs.latlng_to_cell(*EUROPE, fine["level"]), "km^2")
+    assert areas and all(a == pytest.approx(expected, rel=1e-6) for a in areas)
+    assert expected < coarse_area / 3 ** (fine["level"] - coarse["level"] - 0.5)
+    assert js_errors(page) == []
+
+
+def test_click_on_a_cell_shows_its_id(page: Any, data: dict[str, Any]) -> None:
+    s = set_view(page, EUROPE_VIEW)
+    level = s["level"]
+    # A cell with data near the view's centre; click its centre.
+    near = np.argmin((data["lat"] - EUROPE[0]) ** 2 + (data["lng"] - EUROPE[1]) ** 2)
+    cell = dggs.latlng_to_cell(float(data["lat"][near]), float(data["lng"][near]), level)
+    lat, lng = dggs.cell_to_latlng(cell)
+    x, y = project(page, lat, lng)
+    canvas = page.find_element(By.CSS_SELECTOR, "#map canvas")
+    rect = canvas.rect
+    ActionChains(page).move_to_element_with_offset(
+        canvas, int(round(x - rect["x"] - rect["width"] / 2)), int(round(y - rect["y"] - rect["height"] / 2))
+    ).click().perform()
+    info = wait_for(page, lambda: page.find_elements(By.CSS_SELECTOR, ".maplibregl-popup .cell-info"))[0]
+    zone_id = info.find_element(By.CSS_SELECTOR, "[data-field=zone_id]").text
+    assert zone_id == dggs.latlng_to_cell(lat, lng, level) == cell
+    assert info.get_attribute("data-zone-id") == cell
+    assert info.find_element(By.CSS_SELECTOR, "[data-field=level]").text == str(level)
+    area = float(info.find_element(By.CSS_SELECTOR, "[data-field=area_km2]").text.split()[0].replace(",", ""))
+    assert area == pytest.approx(dggs.cell_area(cell, "km^2"), rel=1e-3)
+    rows = int(info.find_element(By.CSS_SELECTOR, "[data-field=count]").text.replace(",", ""))
+    in_cell = dggs.latlng_to_cell(data["lat"], data["lng"], level) == cell
+    assert rows == int(in_cell.sum()) > 0
+    # The zone's description from the OGC API adds its centre.
+    wait_for(page, lambda: info.get_attribute("data-info") == "loaded", message="zone info not shown")
+    assert state(page)["selected"] == cell
+    assert js_errors(page) == []
+    # Close it for the next test.
+    info.find_element(By.XPATH, "./..").find_element(By.CSS_SELECTOR, ".maplibregl-popup-close-button").click()
+    wait_for(page, lambda: not page.find_elements(By.CSS_SELECTOR, ".maplibregl-popup"))
+
+
+def test_value_select_recolours(page: Any, data: dict[str, Any]) -> None:
+    if state(page)["column"] is not None:
+        choose(page, "column", "")
+    s = set_view(page, GLOBE_VIEW)
+    level = s["level"]
+    legend_max = page.find_element(By.ID, "legend-max")
+    count_max = max(r["count"] for r in level_rows(data["path"], level))
+    assert float(legend_max.get_attribute("data-value")) == count_max
+    paint_before = page.execute_script("return JSON.stringify(window.dggsMap.getPaintProperty('cells-fill', 'fill-color'))")
+
+    s = choose(page, "column", "pop")
+    assert (s["column"], s["stat"]) == ("pop", "sum")
+    sums = level_rows(data["path"], level, "pop", ("count", "sum"))
+    assert float(legend_max.get_attribute("data-value")) == max(r["sum"] for r in sums) != count_max
+    assert page.find_element(By.ID, "legend-title").text == "sum of pop"
+    paint_after = page.execute_script("return JSON.stringify(window.dggsMap.getPaintProperty('cells-fill', 'fill-color'))")
+    assert paint_after != paint_before and str(max(r["sum"] for r in sums)) in paint_after
+    target = os.environ.get("DGGS_SCREENSHOT")  # the picture in the docs: the globe, coloured by a sum
+    if target:
+        page.execute_script("document.activeElement.blur()")
+        Path(target).parent.mkdir(parents=True, exist_ok=True)
+        Path(target).write_bytes(page.get_screenshot_as_png())
+
+    s = choose(page, "stat", "max")
+    assert float(legend_max.get_attribute("data-value")) == int(data["pop"].max())
+    assert s["featureCount"] == len(sums)
+    assert js_errors(page) == []
+    choose(page, "column", "")
+
+
+def test_too_many_cells_steps_to_a_coarser_level(page: Any, data: dict[str, Any]) -> None:
+    set_view(page, GLOBE_VIEW)
+    assert len(level_rows(data["path"], STORED_LEVEL)) > MAX_FEATURES
+    try:
+        s = choose(page, "level", str(STORED_LEVEL))
+        assert s["lastError"] is None
+        assert s["level"] < STORED_LEVEL
+        assert s["featureCount"] == len(level_rows(data["path"], s["level"])) <= MAX_FEATURES
+        assert page.find_element(By.ID, "status").text.startswith(f"level {s['level']} ")
+        assert js_errors(page) == []
+    finally:
+        choose(page, "level", "auto")
