@@ -31,12 +31,14 @@ from .errors import install_handlers
 from .params import Context
 from .reader import StoreReader
 
-__all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "STATIC"]
+__all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC"]
 
 #: Default limit on the zones of one zone listing (``.../zones``).
 MAX_ZONES = 100_000
 #: Default limit on the features of ``/map/cells`` and on the sub-zone values of zone data.
 MAX_FEATURES = 50_000
+#: Default seconds a roll-up may lag a store that an ingest is writing to (see StoreReader).
+REFRESH = 2.0
 #: The web map's files (written by the front end; served at ``/static`` and ``/``).
 STATIC = Path(__file__).parent / "static"
 
@@ -47,6 +49,7 @@ def create_app(
     max_zones: int = MAX_ZONES,
     max_features: int = MAX_FEATURES,
     static: str | os.PathLike[str] | None = None,
+    refresh: float = REFRESH,
 ) -> FastAPI:
     """Build the server's ASGI app over the cell store at ``store_path`` (opened read-only).
 
@@ -62,20 +65,27 @@ def create_app(
         request (HTTP 413 beyond).
     static : path, optional
         The web map's folder (default: ``dggs/server/static``).
+    refresh : float, default 2.0
+        While an ingest writes to the store, roll-ups (the map's cells, zone
+        listings, the row count) are recomputed at most this often and may lag
+        the store by as much: a consistent earlier snapshot, never half a batch.
+        0 shows every committed batch at once.
 
     Raises
     ------
     StorageError
         If the file is missing, not a SQLite database or not a cell store.
     DggsValueError
-        For a limit below 1.
+        For a limit below 1 or a negative ``refresh``.
     """
     from dggs.errors import DggsValueError
 
     for name, value in (("max_zones", max_zones), ("max_features", max_features)):
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise DggsValueError(f"{name} must be a whole number >= 1, not {value!r}")
-    reader = StoreReader(store_path)
+    if isinstance(refresh, bool) or not isinstance(refresh, (int, float)) or not refresh >= 0:
+        raise DggsValueError(f"refresh must be a number of seconds >= 0, not {refresh!r}")
+    reader = StoreReader(store_path, refresh=refresh)
     ctx = Context(reader=reader, max_zones=max_zones, max_features=max_features)
     folder = Path(static) if static is not None else STATIC
 

@@ -40,7 +40,9 @@ def _check_port(host: str, port: int) -> None:
               help="Most zones in one zone listing (413 beyond).")
 @click.option("--max-features", default=50_000, show_default=True, type=click.IntRange(min=1),
               help="Most features of /map/cells and sub-zones of zone data (413 beyond).")
-def serve(store: str, host: str, port: int, max_zones: int, max_features: int) -> None:
+@click.option("--refresh", default=2.0, show_default=True, type=click.FloatRange(min=0),
+              help="Seconds the map's roll-ups may lag a store being written to (0: none).")
+def serve(store: str, host: str, port: int, max_zones: int, max_features: int, refresh: float) -> None:
     """Serve STORE (a cell store) read-only over OGC API - DGGS, with a web map at /.
 
     \b
@@ -56,7 +58,7 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int) -
         ) from None
     from .app import create_app
 
-    app = create_app(store, max_zones=max_zones, max_features=max_features)  # StorageError: one line, exit 1
+    app = create_app(store, max_zones=max_zones, max_features=max_features, refresh=refresh)  # StorageError: one line, exit 1
     _check_port(host, port)
     shown = f"[{host}]" if ":" in host else host
     click.echo(f"Serving {store} at http://{shown}:{port}/ (API at /api.html; Ctrl+C stops)", err=False)

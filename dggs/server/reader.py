@@ -6,14 +6,18 @@ Every answer reads in one SQLite read transaction (:meth:`StoreReader.snapshot`)
 an ingest running at the same time commits whole batches in WAL mode, and a
 reader sees the store before or after a batch, never half of one.
 
-Roll-ups of a level (:meth:`StoreReader.level_data`) are cached under the
+Roll-ups of a level (:meth:`StoreReader.level_data`) are cached with the
 store's *modification marker*: the ``updated`` time in ``meta`` (set by
 ``Connection.touch()`` in the same transaction as every ingest batch and source
 deletion) together with the ingest progress of every source (``rows_done``
 changes with each batch, even two batches in the same second; the source ids
 change when one is deleted or added).  Marker and data are read in the same
-transaction, so a cached roll-up always belongs to the marker it is filed under,
-and a concurrent ingest invalidates it.
+transaction, so a cached roll-up always belongs to the marker it is filed with,
+and a concurrent ingest invalidates it.  While an ingest commits batch after
+batch, a roll-up younger than ``refresh`` seconds is still served (a
+consistent snapshot of the store at most that old, never half a batch), and one
+thread recomputes it while the others wait for its answer, so a busy server
+does not recompute the same roll-up once per request.
 
 Cell geometries never change, so their GeoJSON text is cached by cell id.
 
@@ -37,6 +41,7 @@ import contextlib
 import math
 import os
 import threading
+import time
 from collections import OrderedDict
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
@@ -108,10 +113,15 @@ class StoreReader:
     path : str or Path
         The cell store file.  Opened once here, so a missing or corrupt file
         raises :class:`dggs.StorageError` at start-up, not at the first request.
+    refresh : float, default 0
+        Seconds a cached roll-up is served after the store changed (0: every
+        change is seen at once).
     """
 
-    def __init__(self, path: str | os.PathLike[str]) -> None:
+    def __init__(self, path: str | os.PathLike[str], refresh: float = 0.0) -> None:
         self.path = Path(path)
+        self.refresh = float(refresh)
+        self._flights: dict[tuple[Any, ...], threading.Lock] = {}
         self.collection_id = self.path.stem
         self._local = threading.local()
         self._lock = threading.Lock()
@@ -163,48 +173,61 @@ class StoreReader:
         progress = tuple(conn.execute("SELECT id, rows_done, complete FROM sources ORDER BY id"))
         return (updated[0] if updated else None, progress)
 
-    def _cached(self, key: tuple[Any, ...]) -> Any:
+    def _lookup(self, key: tuple[Any, ...], marker: tuple[Any, ...]) -> Any:
+        """The cached value of ``key`` if it belongs to ``marker`` or is younger than ``refresh``."""
         with self._lock:
-            if key in self._cache:
-                self._cache.move_to_end(key)
-                return self._cache[key]
+            entry = self._cache.get(key)
+            if entry is None:
+                return None
+            self._cache.move_to_end(key)
+        filed, value, stamp = entry
+        if filed == marker or time.monotonic() - stamp < self.refresh:
+            return value
         return None
 
-    def _remember(self, key: tuple[Any, ...], value: Any) -> None:
+    def _cached(self, key: tuple[Any, ...], marker: tuple[Any, ...], compute: Any) -> Any:
+        """``compute()`` once per key and marker; concurrent callers of one key wait for one computation."""
+        found = self._lookup(key, marker)
+        if found is not None:
+            return found
         with self._lock:
-            marker = key[0]
-            for old in [k for k in self._cache if k[0] != marker]:
-                del self._cache[old]  # the store changed: every older roll-up is stale
-            self._cache[key] = value
-            while len(self._cache) > CACHE_ENTRIES:
-                self._cache.popitem(last=False)
+            gate = self._flights.setdefault(key, threading.Lock())
+        with gate:
+            found = self._lookup(key, marker)  # computed by another thread meanwhile
+            if found is not None:
+                return found
+            value = compute()
+            with self._lock:
+                self._cache[key] = (marker, value, time.monotonic())
+                self._cache.move_to_end(key)
+                while len(self._cache) > CACHE_ENTRIES:
+                    self._cache.popitem(last=False)
+            return value
 
     # -- what the store holds -----------------------------------------------
 
     def summary(self) -> Summary:
         """Level, columns, row count and bounding box of the points (cached per marker)."""
         with self.snapshot() as (store, marker):
-            key = (marker, "summary")
-            found = self._cached(key)
-            if found is not None:
-                return found  # type: ignore[no-any-return]
-            meta = store.meta
-            row = store.conn.execute(
-                "SELECT min(lng), min(lat), max(lng), max(lat) FROM "
-                "(SELECT lng, lat FROM points UNION ALL SELECT lng, lat FROM points_pending)"
-            ).fetchone()
-            bbox = None if row is None or row[0] is None else tuple(float(v) for v in row)
-            summary = Summary(
-                marker=marker,
-                level=store.level,
-                columns=store.columns,
-                count=store.count(),
-                bbox=bbox,  # type: ignore[arg-type]
-                created=meta.get("created"),
-                updated=meta.get("updated"),
-            )
-            self._remember(key, summary)
-            return summary
+
+            def compute() -> Summary:
+                meta = store.meta
+                row = store.conn.execute(
+                    "SELECT min(lng), min(lat), max(lng), max(lat) FROM "
+                    "(SELECT lng, lat FROM points UNION ALL SELECT lng, lat FROM points_pending)"
+                ).fetchone()
+                bbox = None if row is None or row[0] is None else tuple(float(v) for v in row)
+                return Summary(
+                    marker=marker,
+                    level=store.level,
+                    columns=store.columns,
+                    count=store.count(),
+                    bbox=bbox,  # type: ignore[arg-type]
+                    created=meta.get("created"),
+                    updated=meta.get("updated"),
+                )
+
+            return self._cached(("summary",), marker, compute)  # type: ignore[no-any-return]
 
     def level_data(self, level: int, column: str | None = None, stat: str = "count") -> LevelData:
         """The non-empty cells at ``level`` with counts and ``stat`` of ``column`` (cached per marker).
@@ -216,22 +239,20 @@ class StoreReader:
             (from :meth:`CellStore.aggregate`, naming the value).
         """
         with self.snapshot() as (store, marker):
-            key = (marker, "level", level, column, stat)
-            found = self._cached(key)
-            if found is not None:
-                return found  # type: ignore[no-any-return]
-            stats = ("count",) if column is None or stat == "count" else ("count", stat)
-            rows = store.aggregate(level, column, stats)
-            ids = np.array([r["cell"] for r in rows], dtype=str) if rows else np.array([], dtype="<U1")
-            counts = np.array([r["count"] for r in rows], dtype=np.int64)
-            values = [r[stats[-1]] for r in rows]
-            if len(ids):
-                lat, lng = dggs.cell_to_latlng(ids)
-            else:
-                lat, lng = np.array([]), np.array([])
-            data = LevelData(level, ids, counts, values, np.asarray(lat), np.asarray(lng))
-            self._remember(key, data)
-            return data
+
+            def compute() -> LevelData:
+                stats = ("count",) if column is None or stat == "count" else ("count", stat)
+                rows = store.aggregate(level, column, stats)
+                ids = np.array([r["cell"] for r in rows], dtype=str) if rows else np.array([], dtype="<U1")
+                counts = np.array([r["count"] for r in rows], dtype=np.int64)
+                values = [r[stats[-1]] for r in rows]
+                if len(ids):
+                    lat, lng = dggs.cell_to_latlng(ids)
+                else:
+                    lat, lng = np.array([]), np.array([])
+                return LevelData(level, ids, counts, values, np.asarray(lat), np.asarray(lng))
+
+            return self._cached(("level", level, column, stat), marker, compute)  # type: ignore[no-any-return]
 
     def rollup(self, zone: str, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """``store.aggregate(level, column, stats, cell=zone)`` in one snapshot (not cached)."""

@@ -393,7 +393,7 @@ def test_map_cells_whole_world_is_fast(client):
 
 
 def test_concurrent_ingest_invalidates_the_cache(store_copy):
-    with make_client(store_copy) as c:
+    with make_client(store_copy, refresh=0) as c:
         before = c.get("/map/cells?level=0").json()
         total = sum(f["properties"]["count"] for f in before["features"])
         with CellStore(store_copy) as writer:  # another writer while the server runs
@@ -405,6 +405,50 @@ def test_concurrent_ingest_invalidates_the_cache(store_copy):
             writer.delete_source(2)
         again = c.get("/map/cells?level=0").json()
         assert sum(f["properties"]["count"] for f in again["features"]) == total
+
+
+def test_a_busy_store_is_rolled_up_at_most_once_per_refresh(store_copy, monkeypatch):
+    """With refresh > 0 a roll-up is served for that long after a change, and computed once for many callers."""
+    import threading
+
+    from dggs.server import reader as reader_module
+
+    calls = []
+    real = CellStore.aggregate
+
+    def counting(self, *args, **kwargs):
+        calls.append(args[0])
+        time.sleep(0.2)  # long enough for the other threads to arrive while it runs
+        return real(self, *args, **kwargs)
+
+    monkeypatch.setattr(CellStore, "aggregate", counting)
+    extra = {"pop": [1], "temp": [1.0], "name": ["x"]}
+    with make_client(store_copy, refresh=3600) as c:
+        total = c.get("/map/layers").json()["count"]
+        assert c.get("/map/cells?level=1").status_code == 200 and calls == [1]
+        with CellStore(store_copy) as writer:
+            writer.ingest_points([1.0], [2.0], LEVEL, extra)
+        counts = []
+        threads = [threading.Thread(target=lambda: counts.append(
+            sum(f["properties"]["count"] for f in c.get("/map/cells?level=1").json()["features"])))
+            for _ in range(4)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        assert calls == [1] and counts == [total] * 4  # the earlier snapshot, within the hour
+    reader = reader_module.StoreReader(store_copy, refresh=0)
+    try:
+        results = []
+        threads = [threading.Thread(target=lambda: results.append(int(reader.level_data(2).counts.sum())))
+                   for _ in range(4)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        assert results == [total + 1] * 4 and calls.count(2) == 1  # four callers, one computation
+    finally:
+        reader.close()
 
 
 # -- a real process -----------------------------------------------------------------
@@ -463,7 +507,7 @@ def test_readers_see_whole_batches_during_an_ingest(store_copy):
     batch = 250
     rng = np.random.default_rng(3)
     lat, lng = rng.uniform(-60, 60, 2000), rng.uniform(-180, 180, 2000)
-    with make_client(store_copy) as c:
+    with make_client(store_copy, refresh=0) as c:
         base = c.get("/map/layers").json()["count"]
         seen = []
         done = threading.Event()
