@@ -121,14 +121,21 @@ def test_python_blocks_run(path, docs_dir):
 
 
 @pytest.mark.parametrize("code", _blocks("sh"))
-def test_sh_blocks_run(code, docs_dir):
-    """Each ``dggs ...`` line, in order, through click's CliRunner; other lines (make) are the Makefile's."""
+def test_sh_blocks_run(code, docs_dir, monkeypatch):
+    """Each ``dggs ...`` line, in order, through click's CliRunner; other lines (make) are the Makefile's.
+
+    ``dggs serve`` runs up to the point where it would start listening: the store is opened and the app
+    built, and uvicorn is handed the app (a server that runs until stopped has its own tests in tests/server).
+    """
     import shlex
 
+    import uvicorn
     from click.testing import CliRunner
 
     from dggs.cli import main
 
+    served = []
+    monkeypatch.setattr(uvicorn, "run", lambda app, **kwargs: served.append((app, kwargs)))
     for line in code.splitlines():
         args = shlex.split(line, comments=True)
         if not args or args[0] != "dggs":
@@ -137,3 +144,5 @@ def test_sh_blocks_run(code, docs_dir):
         res = CliRunner().invoke(main, args[1:])
         assert res.exit_code == 0, (line, res.output, res.exception)
         assert res.output.strip(), line
+        if args[1] == "serve":
+            assert served and served[-1][1]["host"] == "127.0.0.1", line
