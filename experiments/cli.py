@@ -127,15 +127,22 @@ def tables(quick: bool, dggs_levels: int) -> None:
 
 @experiments.command()
 @click.argument("outdir", type=click.Path(file_okay=False))
+@click.option("--chapter", "chapter", type=click.Choice(["4", "5", "6", "all"]), default=None,
+              help="Figures of one chapter (default: all; only 6 when --scheme is given).")
 @click.option("--scheme", "schemes", multiple=True,
-              help="Scheme(s) to draw (default: all seven).")
-@click.option("--levels", type=int, default=None, help="Deepest level (default: thesis depth, capped at 5).")
+              help="Chapter 6: scheme(s) to draw (default: all seven, plus Figure 6.18).")
+@click.option("--levels", type=int, default=None,
+              help="Chapter 6: deepest level (default: the thesis's depth; globes capped at 5).")
 @click.option("--variant", type=click.Choice(["dggs", "thesis"]), default="dggs", show_default=True,
               help="thesis: the thesis's rules for 2:6, Catmull-Clark and 1:5 (files *_thesis.png).")
-def figures(outdir: str, schemes: tuple[str, ...], levels: int | None, variant: str) -> None:
-    """Write Figures 6.14-6.28 analogues (area highlighting, error histograms) as PNG."""
-    from dggs.experiments.figures import write_figures
+@click.option("--quick", is_flag=True, help="Coarser samples and chapter 6 to level 3 (a few seconds).")
+def figures(outdir: str, chapter: str | None, schemes: tuple[str, ...], levels: int | None, variant: str,
+            quick: bool) -> None:
+    """Write the thesis's figures as PNG: chapters 4 (4.1-4.5), 5 (5.1-5.22), 6 (6.14-6.28)."""
+    from dggs.experiments.figures import CHAPTERS, write_all
 
-    for path in write_figures(outdir, schemes or None, levels, _progress(), variant):
+    if chapter is None:
+        chapter = "6" if schemes else "all"
+    chapters = CHAPTERS if chapter == "all" else (chapter,)
+    for path in write_all(outdir, chapters, schemes or None, levels, _progress(), variant, quick):
         click.echo(path)
-

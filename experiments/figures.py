@@ -1,4 +1,4 @@
-"""PNG analogues of Figures 6.14-6.28: area highlighting and error histograms.
+"""PNG analogues of the thesis's figures; Figures 6.14-6.28 (area highlighting, error histograms) here.
 
 Area highlighting (Figures 6.14, 6.16, 6.19, 6.21, 6.23, 6.25, 6.27): faces
 on an orthographic globe, white at 0 % error, blue where a face is too big
@@ -6,8 +6,16 @@ and purple where it is too small, the scale running to the level's maximum
 error as in the thesis (§6.3.3).  Error distributions (Figures 6.15, 6.17,
 6.20, 6.22, 6.24, 6.26, 6.28): one histogram of signed face errors per level.
 
+The error distributions run to the thesis's depth (levels 1-7 for Split (2:6),
+Figure 6.28, and Split (1:3), Split (1:5)); the globes to level 5 as the
+thesis's (a)-(e) panels, drawn without edges (and rasterized) once a level has
+more than 20,000 faces.  :func:`write_all` adds the other chapters:
+:mod:`~dggs.experiments.figures_ch4`, :mod:`~dggs.experiments.figures_ch5`,
+:mod:`~dggs.experiments.figures_ch5_surfaces` and
+:mod:`~dggs.experiments.figures_ch6` (Figure 6.18).
+
 matplotlib is an optional extra (``pip install dggs[plot]``) and is imported
-only here, lazily.
+only here and in those modules, lazily.
 
 Examples
 --------
@@ -27,7 +35,20 @@ from dggs.errors import DggsError
 from dggs.experiments.mesh import Mesh
 from dggs.experiments.schemes import SCHEMES, get_scheme, iter_levels
 
-__all__ = ["MissingPlotDependency", "write_figures", "plot_area_highlighting", "plot_error_distribution"]
+__all__ = [
+    "MissingPlotDependency",
+    "CHAPTERS",
+    "write_all",
+    "write_figures",
+    "plot_area_highlighting",
+    "plot_error_distribution",
+]
+
+#: Chapters with figures (``dggs experiments figures --chapter``).
+CHAPTERS = ("4", "5", "6")
+
+#: Above this many faces a globe is drawn without edges and rasterized (levels 6-7).
+_BIG = 20_000
 
 #: Thesis figure numbers per scheme: (area highlighting, error distribution).
 FIGURE_NUMBERS = {
@@ -100,13 +121,16 @@ def plot_area_highlighting(ax: Any, mesh: Mesh, errors_pct: np.ndarray, view=(20
     depth_a = np.concatenate(depth)
     front = np.flatnonzero(depth_a > 0.05)
     vmax = max(float(np.abs(errors_pct).max()), 1e-9)
+    big = len(front) > _BIG
     coll = PolyCollection(
         [verts[i] for i in front],
         array=errors_pct[front],
         cmap=_cmap(),
         clim=(-vmax, vmax),
-        edgecolors="0.35" if len(front) < 2500 else "face",
+        edgecolors="0.35" if len(front) < 2500 else ("none" if big else "face"),
         linewidths=0.2,
+        antialiaseds=not big,
+        rasterized=big,
     )
     ax.add_collection(coll)
     ax.add_patch(Circle((0, 0), 1.0, fill=False, lw=0.6))
@@ -150,7 +174,9 @@ def write_figures(
     schemes : iterable of str, optional
         Scheme names (default: all seven).
     levels : int, optional
-        Deepest level (default: the thesis's depth, at most 5).
+        Deepest level of both figures (default: the thesis's depth for the
+        error distribution, e.g. 7 for Figure 6.28, and at most 5 for the
+        globes, as the thesis's panels).
     progress : bool
         tqdm progress bar.
     variant : str
@@ -175,8 +201,10 @@ def write_figures(
     written: list[Path] = []
     for name in schemes or SCHEMES:
         scheme = get_scheme(name, variant)
-        depth = min(scheme.thesis_levels, 5) if levels is None else levels
-        meshes = list(iter_levels(scheme, depth, progress))[1:]
+        depth = scheme.thesis_levels if levels is None else levels
+        globes = min(depth, 5) if levels is None else levels
+        everything = list(iter_levels(scheme, depth, progress))[1:]
+        meshes = everything[:globes]
         numbers = FIGURE_NUMBERS.get(scheme.key)  # none for chapter 7's latlng
         fig_a, fig_d = (f" (cf. Figure {f})" for f in numbers) if numbers else ("", "")
         ncol = max(len(meshes), 1)
@@ -193,10 +221,59 @@ def write_figures(
         plt.close(fig)
         written.append(path)
         fig, ax = plt.subplots(figsize=(6.0, 3.6))
-        plot_error_distribution(ax, {m.level: m.face_errors_pct for _, m in meshes})
+        plot_error_distribution(ax, {m.level: m.face_errors_pct for _, m in everything})
         ax.set_title(f"Face area error distribution - {scheme.title}{fig_d}", fontsize=9)
         path = out / f"error_distribution_{slug}.png"
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)
         written.append(path)
+    return written
+
+
+def write_all(
+    outdir: str | Path,
+    chapters: Iterable[str] = CHAPTERS,
+    schemes: Iterable[str] | None = None,
+    levels: int | None = None,
+    progress: bool = False,
+    variant: str = "dggs",
+    quick: bool = False,
+) -> list[Path]:
+    """Write the figures of the given chapters ("4", "5", "6"); returns the paths.
+
+    Chapter 6 is :func:`write_figures` (``schemes``, ``levels``, ``variant``)
+    plus Figure 6.18 when Split (1:9) is among the schemes.  ``quick`` makes
+    every figure cheaper (coarser samples; chapter 6 to level 3).
+
+    Raises
+    ------
+    ValueError
+        On an unknown chapter.
+    MissingPlotDependency
+        If matplotlib is not installed.
+    """
+    chapters = [str(c) for c in chapters]
+    bad = sorted(set(chapters) - set(CHAPTERS))
+    if bad:
+        raise ValueError(f"no figures for chapter(s) {', '.join(bad)}; choose from {', '.join(CHAPTERS)}")
+    _plt()
+    written: list[Path] = []
+    if "4" in chapters:
+        from dggs.experiments.figures_ch4 import write_chapter4
+
+        written += write_chapter4(outdir, quick)
+    if "5" in chapters:
+        from dggs.experiments.figures_ch5 import write_chapter5_curves
+        from dggs.experiments.figures_ch5_surfaces import write_chapter5_surfaces
+
+        written += write_chapter5_curves(outdir, quick)
+        written += write_chapter5_surfaces(outdir, quick)
+    if "6" in chapters:
+        names = list(schemes) if schemes else None
+        depth = levels if levels is not None else (3 if quick else None)
+        written += write_figures(outdir, names, depth, progress, variant)
+        if names is None or "1:9" in names:
+            from dggs.experiments.figures_ch6 import write_figure_6_18
+
+            written += write_figure_6_18(outdir)
     return written
