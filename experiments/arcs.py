@@ -34,6 +34,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .curves import vertex_circles
+
 __all__ = [
     "Arcs",
     "bspline_subdivide",
@@ -119,21 +121,12 @@ def three_point_arcs(points: np.ndarray, colinear_tol: float = 1e-12) -> Arcs:
     """
     p2 = np.asarray(points, dtype=np.float64)
     p1, p3 = np.roll(p2, 1, axis=0), np.roll(p2, -1, axis=0)
-    a, b = p1 - p2, p3 - p2
-    cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-    na, nb = np.einsum("ij,ij->i", a, a), np.einsum("ij,ij->i", b, b)
-    straight = np.abs(cross) <= colinear_tol * np.sqrt(na * nb)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ux = (b[:, 1] * na - a[:, 1] * nb) / (2.0 * cross)
-        uy = (a[:, 0] * nb - b[:, 0] * na) / (2.0 * cross)
-        centre = p2 + np.stack([ux, uy], axis=1)
-        radius = np.hypot(ux, uy)
+    centre, radius, straight = vertex_circles(p2, colinear_tol)  # the circumcircles (§5.1.8)
+    with np.errstate(invalid="ignore"):
         ang = [np.arctan2(q[:, 1] - centre[:, 1], q[:, 0] - centre[:, 0]) for q in (p1, p2, p3)]
         ccw_end = np.mod(ang[2] - ang[0], 2.0 * np.pi)
         ccw_mid = np.mod(ang[1] - ang[0], 2.0 * np.pi)
         sweep = np.where(ccw_mid < ccw_end, ccw_end, ccw_end - 2.0 * np.pi)
-    centre[straight] = np.nan
-    radius[straight] = np.inf
     sweep[straight] = np.nan
     return Arcs(centre, radius, ang[0], sweep)
 

@@ -79,6 +79,21 @@ def _plt() -> Any:
     return plt
 
 
+def save_figures(outdir: str | Path, makers: dict[str, Any], quick: bool = False) -> list[Path]:
+    """Draw ``makers[name](plt)`` for each name and save it as ``outdir/name.png``; returns the paths."""
+    plt = _plt()
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for name, make in makers.items():
+        fig = make(plt)
+        path = out / f"{name}.png"
+        fig.savefig(path, dpi=110 if quick else 130, bbox_inches="tight")
+        plt.close(fig)
+        written.append(path)
+    return written
+
+
 def _cmap() -> Any:
     from matplotlib.colors import LinearSegmentedColormap
 

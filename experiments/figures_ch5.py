@@ -324,11 +324,8 @@ def _fig_5_21(plt):
 
 def write_chapter5_curves(outdir: str | Path, quick: bool = False) -> list[Path]:
     """Write the chapter-5 curve figures as PNGs; returns the paths."""
-    from dggs.experiments.figures import _plt
+    from dggs.experiments.figures import save_figures
 
-    plt = _plt()
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
     figures = {
         "fig5_1_5_2_curve_definition": _fig_5_1_5_2,
         "fig5_3_circular_subdivision": _fig_5_3,
@@ -352,11 +349,4 @@ def write_chapter5_curves(outdir: str | Path, quick: bool = False) -> list[Path]
         "fig5_19_5_20_cusp": _fig_5_19_5_20,
         "fig5_21_co_linearity": _fig_5_21,
     }
-    written = []
-    for name, make in figures.items():
-        fig = make(plt)
-        path = out / f"{name}.png"
-        fig.savefig(path, dpi=110 if quick else 130, bbox_inches="tight")
-        plt.close(fig)
-        written.append(path)
-    return written
+    return save_figures(outdir, figures, quick)

@@ -191,18 +191,10 @@ def _fig_5_22(plt, levels: int = 3):
 
 def write_chapter5_surfaces(outdir: str | Path, quick: bool = False) -> list[Path]:
     """Write Figures 5.5-5.7, 5.8-5.10 and 5.22 as PNGs; returns the paths."""
-    from dggs.experiments.figures import _plt
+    from dggs.experiments.figures import save_figures
 
-    plt = _plt()
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, make in (("fig5_5_5_7_surface_definition", _fig_5_5_5_7),
-                       ("fig5_8_5_10_surface_steps", _fig_5_8_5_10),
-                       ("fig5_22_averaged_sphere", lambda plt: _fig_5_22(plt, 2 if quick else 3))):
-        fig = make(plt)
-        path = out / f"{name}.png"
-        fig.savefig(path, dpi=110 if quick else 130, bbox_inches="tight")
-        plt.close(fig)
-        written.append(path)
-    return written
+    return save_figures(outdir, {
+        "fig5_5_5_7_surface_definition": _fig_5_5_5_7,
+        "fig5_8_5_10_surface_steps": _fig_5_8_5_10,
+        "fig5_22_averaged_sphere": lambda plt: _fig_5_22(plt, 2 if quick else 3),
+    }, quick)

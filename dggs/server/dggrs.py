@@ -149,7 +149,8 @@ def definition() -> dict[str, Any]:
     }
 
 
-def _link(href: str, rel: str, kind: str = "application/json", title: str | None = None) -> dict[str, Any]:
+def link(href: str, rel: str, kind: str = "application/json", title: str | None = None) -> dict[str, Any]:
+    """One OGC API link object (``href``, ``rel``, ``type``, optional ``title``)."""
     link = {"href": href, "rel": rel, "type": kind}
     if title:
         link["title"] = title
@@ -163,8 +164,8 @@ def item(base: str, prefix: str) -> dict[str, Any]:
         "id": DGGRS_ID,
         "title": _TITLE,
         "links": [
-            _link(href, "self"),
-            _link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
+            link(href, "self"),
+            link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
         ],
     }
 
@@ -177,13 +178,13 @@ def description(base: str, prefix: str, stored_level: int | None, collection: st
     """
     href = f"{base}{prefix}/dggs/{DGGRS_ID}"
     links = [
-        _link(href, "self"),
-        _link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
-        _link(f"{href}/zones", REL + "dggrs-zone-query", title="Zones holding data"),
-        _link(f"{base}/", REL + "dataset", title="Landing page"),
+        link(href, "self"),
+        link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
+        link(f"{href}/zones", REL + "dggrs-zone-query", title="Zones holding data"),
+        link(f"{base}/", REL + "dataset", title="Landing page"),
     ]
     if collection is not None:
-        links.append(_link(f"{base}/collections/{collection}", REL + "geodata", title=collection))
+        links.append(link(f"{base}/collections/{collection}", REL + "geodata", title=collection))
     out: dict[str, Any] = {
         "id": DGGRS_ID,
         "title": _TITLE,

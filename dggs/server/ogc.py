@@ -24,6 +24,7 @@ from fastapi import FastAPI, Query, Request
 from fastapi.responses import FileResponse, JSONResponse, PlainTextResponse, Response
 
 from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
+from .dggrs import link as _link
 from .params import Context, base_url, check_collection, check_dggrs
 
 __all__ = ["register", "CONFORMANCE"]
@@ -48,13 +49,6 @@ CONFORMANCE = [
     _DGGS + "data-geojson",  # zone data as GeoJSON
     _DGGS + "zone-geojson",  # zone lists as GeoJSON
 ]
-
-
-def _link(href: str, rel: str, kind: str = "application/json", title: str | None = None) -> dict[str, Any]:
-    link = {"href": href, "rel": rel, "type": kind}
-    if title:
-        link["title"] = title
-    return link
 
 
 def landing(ctx: Context, request: Request) -> dict[str, Any]:

@@ -13,20 +13,9 @@ from hypothesis import strategies as st
 from dggs.errors import CoordinateError, DggsValueError
 from dggs.experiments import inverse as thesis_inverse
 from dggs.geometry import snyder
-from dggs.geometry.icosahedron import ISEA, latlng_to_xyz
+from dggs.geometry.icosahedron import ISEA
 
-
-def random_points(n, seed):
-    rng = np.random.default_rng(seed)
-    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, n)))
-    lng = rng.uniform(-180, 180, n)
-    return lat, lng
-
-
-def angle_between(lat1, lng1, lat2, lng2):
-    a = latlng_to_xyz(np.radians(lat1), np.radians(lng1))
-    b = latlng_to_xyz(np.radians(lat2), np.radians(lng2))
-    return 2 * np.arcsin(np.clip(np.linalg.norm(a - b, axis=-1) / 2, 0, 1))
+from ..test_snyder import angle_between, random_points
 
 
 def face_centre(face: int) -> tuple[float, float]:
