@@ -168,6 +168,47 @@ def descendants(store: Connection, cells: Any) -> list[dict[str, Any]]:
         return list(store.query(sql, params))
 
 
+#: A roll-up reads one id range per possible cell (no sort) when there are at most this many
+#: cells and at least RANGE_ROWS_PER_CELL stored rows a cell; else it groups in one sorted pass.
+RANGE_CELLS = 40_000
+RANGE_ROWS_PER_CELL = 8
+
+
+def _rollup_by_ranges(
+    store: Connection, level: int, under: list[str] | None, exprs: str, limit: int | None
+) -> list[dict[str, Any]] | None:
+    """The roll-up to ``level`` as one range query per possible cell, or None where grouping is faster.
+
+    ``points`` is clustered by cell, so the rows of a cell and its descendants
+    are one key range (``cell >= id AND cell < id || '~'``): reading the ranges in id order gives the groups in order
+    without the sort that ``GROUP BY substr(cell, ...)`` needs (3-4x faster at
+    levels 0-5 of a million rows).  Only for ``points`` alone: the pending
+    rows have no index.
+    """
+    roots = disjoint(under) if under is not None else [chr(ord("A") + f) for f in range(20)]
+    cells = sum(dggs.get_num_cells(level) // dggs.get_num_cells(len(c) - 1) for c in roots)
+    if cells > RANGE_CELLS:
+        return None
+    rows = store.conn.execute("SELECT coalesce(sum(rows_inserted), 0) FROM sources").fetchone()[0]
+    if rows < RANGE_ROWS_PER_CELL * cells:
+        return None
+    ids = sorted(str(c) for c in dggs.uncompact_cells(roots, level))
+    sql = f"SELECT count(*), {exprs} FROM points WHERE cell >= ?1 AND cell < ?1 || '~'"
+    cursor = store.conn.cursor()
+    names: list[str] | None = None
+    out = []
+    for cell in ids:
+        if limit is not None and len(out) >= limit:
+            break
+        cursor.execute(sql, (cell,))
+        row = cursor.fetchone()
+        if names is None:
+            names = [d[0] for d in cursor.description[1:]]
+        if row[0]:  # only non-empty cells, as GROUP BY gives
+            out.append({"cell": cell, **dict(zip(names, row[1:]))})
+    return out
+
+
 def aggregate(
     store: Connection,
     level: int,
@@ -220,6 +261,10 @@ def aggregate(
     order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
     out = []
     with store.snapshot() as table:
+        if order_by is None and table == "points":
+            ranged = _rollup_by_ranges(store, level, found if cell is not None else None, exprs, limit)
+            if ranged is not None:
+                return ranged
         sql = f"SELECT substr(cell, 1, :n) AS cell_, {exprs} FROM {table} {where} GROUP BY cell_ ORDER BY {order}"
         if limit is not None:
             sql += " LIMIT :limit"

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from shapely.geometry import Polygon, box
 
 import dggs
-from dggs.storage import CellStore
+from dggs.storage import CellStore, queries
 
 from .helpers import brute_aggregate, clustered_points, expected_rows, under
 
@@ -83,17 +83,33 @@ def test_queries_match_brute_force(case, data):
             if cell_level == level:
                 _same_rows(store.get(cell), want)
 
-        # roll-up at every level up to the stored one
-        for agg_level in sorted({0, level, data.draw(st.integers(0, level))}):
-            for column in ("v", "w"):
-                got = store.aggregate(agg_level, column)
-                want = brute_aggregate(rows, agg_level, column)
-                assert [g["cell"] for g in got] == sorted(want)
-                for g in got:
-                    w = want[g["cell"]]
-                    assert g["count"] == w["count"]
-                    for stat in ("sum", "mean", "min", "max"):
-                        assert _close(g[stat], w[stat]), (stat, g, w)
+        # roll-up at every level up to the stored one, by either plan: one range query per cell
+        # (forced here; chosen for many rows a cell) or one GROUP BY
+        ranged = data.draw(st.booleans())
+        saved = queries.RANGE_ROWS_PER_CELL
+        queries.RANGE_ROWS_PER_CELL = 0 if ranged else 10**12
+        try:
+            for agg_level in sorted({0, level, data.draw(st.integers(0, level))}):
+                for column in ("v", "w"):
+                    got = store.aggregate(agg_level, column)
+                    want = brute_aggregate(rows, agg_level, column)
+                    assert [g["cell"] for g in got] == sorted(want)
+                    for g in got:
+                        w = want[g["cell"]]
+                        assert g["count"] == w["count"]
+                        for stat in ("sum", "mean", "min", "max"):
+                            assert _close(g[stat], w[stat]), (stat, g, w)
+                    # no count asked, under some cells, a limit
+                    parents = sorted({c[: data.draw(st.integers(1, agg_level + 1))] for c in list(want)[:3]})
+                    inside = {c: w for c, w in want.items() if any(c.startswith(p) for p in parents)}
+                    part = store.aggregate(agg_level, column, ("max", "min"), cell=parents or None)
+                    if parents:
+                        assert [g["cell"] for g in part] == sorted(inside)
+                        assert all(_close(g["max"], inside[g["cell"]]["max"]) for g in part)
+                    limit = data.draw(st.integers(0, 4))
+                    assert store.aggregate(agg_level, column, limit=limit) == got[:limit]
+        finally:
+            queries.RANGE_ROWS_PER_CELL = saved
 
         # within: rows under the cells of a polygon
         lat0, lng0 = data.draw(st.floats(-60, 60)), data.draw(st.floats(-170, 150))
