@@ -45,7 +45,7 @@ import shapely
 from dggs._formats import EXPORT_FORMATS, export_format
 from dggs.errors import DggsValueError
 from dggs.index import _kpoints
-from dggs.index._convert import cells_in
+from dggs.index._convert_in import cells_in
 from dggs.index._coords import check_densify
 from dggs.index._polygons import default_densify, ring_to_geometry, special_rings
 from dggs.index.cellid import int_to_str

@@ -36,7 +36,9 @@ from pathlib import Path
 import numpy as np
 
 from dggs.experiments import inverse as thesis_inverse
-from dggs.experiments.chapter4 import EARTH_RADIUS_M, exact_az, face_mesh, fit_sector, spherical_triangle_areas
+from dggs.experiments.chapter4_constants import EARTH_RADIUS_M
+from dggs.experiments.chapter4_fits import exact_az, fit_sector
+from dggs.experiments.chapter4_mesh import face_mesh, spherical_triangle_areas
 from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA, NUM_FACES
 from dggs.geometry.split26 import FACE_VERTICES

@@ -14,7 +14,8 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
 
 from . import _codec, _kgrid, _khier
-from ._convert import cells_in, cells_out, scalar_id
+from ._convert_in import cells_in, scalar_id
+from ._convert_out import cells_out
 from .hierarchy import check_max_cells, check_size
 from dggs.geometry._parallel import parallel
 

@@ -13,7 +13,8 @@ from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
 
 from . import _codec, _khier, _kpoints
 from ._bits import MAX_LEVEL
-from ._convert import cells_in, cells_out, cells_out_flat, is_valid_any, scalar_id
+from ._convert_in import cells_in, is_valid_any, scalar_id
+from ._convert_out import cells_out, cells_out_flat
 from .cellid import FACE_LETTERS, check_level
 
 __all__ = [

@@ -18,7 +18,7 @@ import numpy as np
 from dggs.errors import CoordinateError, DggsValueError
 
 from . import _codec, _kgrid, _kpoints
-from ._convert import cells_in
+from ._convert_in import cells_in
 from ._coords import as_coordinates, as_float_scalar
 from .cellid import check_level
 from .grid import _pair

@@ -11,7 +11,7 @@ from dggs.errors import DggsValueError
 from . import _geo
 from . import _khier
 from ._bits import MAX_LEVEL
-from ._convert import cells_in
+from ._convert_in import cells_in
 from .cellid import check_level
 
 __all__ = ["cell_area", "level_table"]

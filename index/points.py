@@ -19,7 +19,7 @@ from dggs.geometry._parallel import parallel
 
 from . import _codec, _kpoints
 from ._bits import MAX_LEVEL
-from ._convert import cells_in, scalar_id
+from ._convert_in import cells_in, scalar_id
 from ._coords import as_coordinates, as_float_scalar, check_densify, check_points, ids_out, raise_bad_point
 from ._polygons import default_densify, rings_to_geometries
 from .cellid import check_level

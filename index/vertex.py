@@ -28,7 +28,8 @@ import numpy as np
 from dggs.errors import DggsValueError
 
 from . import _codec, _kgrid
-from ._convert import cells_in, cells_out
+from ._convert_in import cells_in
+from ._convert_out import cells_out
 from .grid import _check_radius
 from .hierarchy import check_max_cells, check_size
 from .points import _boundaries

@@ -12,15 +12,10 @@ import sys
 import numpy as np
 import pytest
 from dggs.index import _codec, _convert
-from dggs.index._convert import (
-    Kind,
-    cells_in,
-    cells_out,
-    cells_out_flat,
-    int_to_str,
-    is_valid_any,
-    str_to_int,
-)
+from dggs.index._convert import int_to_str, str_to_int
+from dggs.index._convert_in import cells_in, is_valid_any
+from dggs.index._convert_kind import Kind
+from dggs.index._convert_out import cells_out, cells_out_flat
 from hypothesis import example, given
 from hypothesis import strategies as st
 

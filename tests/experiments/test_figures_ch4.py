@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from dggs.experiments.chapter4 import face_mesh
+from dggs.experiments.chapter4_mesh import face_mesh
 from dggs.experiments.figures_ch4 import azimuth_curve, disc_areas, inverse_errors_m, iteration_counts
 from dggs.geometry import snyder
 
