@@ -196,7 +196,7 @@ def _rollup_by_ranges(
     sql = f"SELECT count(*), {exprs} FROM points WHERE cell >= ?1 AND cell < ?1 || '~'"
     cursor = store.conn.cursor()
     names: list[str] | None = None
-    out = []
+    out: list[dict[str, Any]] = []
     for cell in ids:
         if limit is not None and len(out) >= limit:
             break
