@@ -231,3 +231,34 @@ def test_to_arrow_and_export_match_aggregate(tmp_path):
         with pytest.raises(dggs.DggsValueError, match="extension"):
             store.export(tmp_path / "a", 4)
         assert store.to_arrow(2, "w").num_rows == len(store.aggregate(2))
+
+
+@pytest.mark.parametrize("pending", [False, True])
+def test_range_plan_equals_the_group_by_plan(tmp_path, monkeypatch, pending):
+    """Enough rows a cell for the range plan on its own; the same answers as one GROUP BY, pending rows or not."""
+    rng = np.random.default_rng(5)
+    n = 20_000
+    lat, lng = np.degrees(np.arcsin(rng.uniform(-1, 1, n))), rng.uniform(-180, 180, n)
+    ints = np.where(rng.random(n) < 0.1, None, rng.integers(-50, 50, n)).astype(object)
+    names = np.array([f"n{i % 97}" for i in range(n)], dtype=object)
+    with CellStore(tmp_path / "s.db", merge_rows=10**9 if pending else 1000) as store:
+        store.ingest_points(lat, lng, 6, {"i": ints, "x": rng.normal(0, 1, n), "t": names}, types={"i": int},
+                            batch_size=4000)
+        if pending:  # an interrupted ingest's tail: rows left in points_pending
+            store.conn.execute("INSERT INTO points_pending SELECT * FROM points WHERE row % 3 = 0")
+            store.conn.execute("DELETE FROM points WHERE row % 3 = 0")
+        assert store.conn.execute("SELECT count(*) FROM points_pending").fetchone()[0] > 0 or not pending
+        for level in (0, 1, 3):
+            for column, stats in ((None, ("count",)), ("i", ("count", "sum", "mean", "min", "max")),
+                                  ("x", ("mean", "max")), ("t", ("min", "max", "count"))):
+                for cell in (None, ["C", "D4"]):
+                    if cell is not None and level == 0:
+                        continue
+                    monkeypatch.setattr(queries, "RANGE_CELLS", 40_000)
+                    ranged = store.aggregate(level, column, stats, cell=cell)
+                    monkeypatch.setattr(queries, "RANGE_CELLS", -1)
+                    grouped = store.aggregate(level, column, stats, cell=cell)
+                    assert [r["cell"] for r in ranged] == [r["cell"] for r in grouped]
+                    for a, b in zip(ranged, grouped):
+                        for s in stats:
+                            assert a[s] == pytest.approx(b[s], rel=1e-12) if isinstance(b[s], float) else a[s] == b[s]
