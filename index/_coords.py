@@ -33,6 +33,12 @@ def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
         shape = np.broadcast_shapes(lat_a.shape, lng_a.shape)
     except ValueError:
         raise CoordinateError(f"latitude shape {lat_a.shape} does not match longitude shape {lng_a.shape}") from None
+    if index is not None and shape != (len(index),):
+        # the answer is a Series on the input's index: the other coordinate must not add dimensions or rows
+        raise CoordinateError(
+            f"a pandas Series of coordinates (length {len(index)}) needs the other coordinate as one number "
+            f"or as many numbers; together they make shape {shape}"
+        )
     lat_f = np.ascontiguousarray(np.broadcast_to(lat_a, shape), dtype=np.float64).reshape(-1)
     lng_f = np.ascontiguousarray(np.broadcast_to(lng_a, shape), dtype=np.float64).reshape(-1)
     return lat_f, lng_f, shape, index

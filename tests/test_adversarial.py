@@ -23,7 +23,7 @@ import pandas as pd
 import pyarrow as pa
 import pytest
 from click.testing import CliRunner
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from shapely.geometry import Polygon, box
 
@@ -402,6 +402,9 @@ def _numbers_ok(value) -> bool:
 
 @settings(max_examples=EXAMPLES)
 @given(lat=coordinates(), lng=coordinates(), level=st.sampled_from([0, 5, 28]), as_int=st.booleans())
+# a Series that broadcasts to 2-D (found by a 2,000-example run: a raw ValueError from pandas)
+@example(lat=pd.Series([1, 2], dtype="Int64"), lng=[[1.0, 2.0], [3.0, 4.0]], level=0, as_int=False)
+@example(lat=pd.Series([1.0]), lng=[1.0, 2.0, 3.0], level=5, as_int=True)
 def test_latlng_to_cell(lat, lng, level, as_int):
     ok, res = outcome(dggs.latlng_to_cell, lat, lng, level, as_int=as_int)
     if ok:
