@@ -60,6 +60,18 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int, r
 
     app = create_app(store, max_zones=max_zones, max_features=max_features, refresh=refresh)  # StorageError: one line, exit 1
     _check_port(host, port)
+    import threading
+
+    from .reader import warm_kernels
+
+    # compiled once per installation (then loaded from numba's cache), so the first map view needs no compiling
+    note = threading.Timer(2.0, lambda: click.echo("compiling the grid kernels, once for this installation ...",
+                                                   err=True))
+    note.start()
+    try:
+        warm_kernels()
+    finally:
+        note.cancel()
     shown = f"[{host}]" if ":" in host else host
     click.echo(f"Serving {store} at http://{shown}:{port}/ (API at /api.html; Ctrl+C stops)", err=False)
     uvicorn.run(app, host=host, port=port, log_level="warning")
