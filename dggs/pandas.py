@@ -11,7 +11,9 @@ keeps the frame's index and returns a new frame:
 * :meth:`DggsAccessor.latlng_to_cell` adds a cell column from lat/lng columns;
 * :meth:`DggsAccessor.cell_to_geometry` makes a GeoDataFrame of cell polygons;
 * :meth:`DggsAccessor.aggregate` rolls rows up to a coarser level;
-* :meth:`DggsAccessor.polyfill` gives the cells of each polygon feature.
+* :meth:`DggsAccessor.polyfill` gives the cells of each polygon feature;
+* :meth:`DggsAccessor.sjoin_cells` joins points to polygon features through
+  their cells (:mod:`dggs._pandas_join`).
 
 Methods that read cells take ``column=None`` to mean: the only column named
 ``cell_<level>`` if there is exactly one, else the index.  Bad input raises
@@ -46,10 +48,12 @@ try:  # the optional extra
 except ImportError as exc:  # pragma: no cover - exercised only without the extra
     raise ImportError("dggs.pandas needs the 'pandas' extra: pip install 'dggs[pandas]'") from exc
 
+from . import _pandas_join as _join  # noqa: E402 - after the extra's check
+
 __all__ = ["DggsAccessor", "ColumnError"]
 
 _CELL_COLUMN = re.compile(r"^cell_\d+$")
-_MODES = ("center",)
+_MODES = ("center", "contains", "overlaps")
 
 
 class ColumnError(DggsValueError):
@@ -356,8 +360,10 @@ class DggsAccessor:
         ----------
         level : int
             Level of the cells.
-        mode : {"center"}
-            The cells whose centres lie in the polygon (holes respected).
+        mode : {"center", "contains", "overlaps"}
+            The cells whose centres lie in the polygon, that lie wholly in
+            it, or that touch it (:func:`dggs.polygon_to_cells`; holes
+            respected).
         explode : bool
             One row per cell per feature, the feature's index and attributes
             repeated (features without cells give no row).  ``False`` keeps
@@ -414,7 +420,7 @@ class DggsAccessor:
             if geom.geom_type not in ("Polygon", "MultiPolygon"):
                 raise DggsValueError(f"row {_label(df, i)}: a {geom.geom_type} is not a Polygon or MultiPolygon")
             try:
-                found.append(polygon_to_cells(geom, level, as_int=as_int, max_cells=max_cells))
+                found.append(polygon_to_cells(geom, level, mode=mode, as_int=as_int, max_cells=max_cells))
             except DggsValueError as exc:
                 raise type(exc)(f"{exc} (row {_label(df, i)})") from exc
         if not explode:
@@ -426,3 +432,18 @@ class DggsAccessor:
             ids.astype(np.uint64) if as_int else ids.astype(object), index=out.index, dtype=None if as_int else "str"
         )
         return out.assign(**{name: values})
+
+    def sjoin_cells(
+        self,
+        polygons: Any,
+        level: int,
+        mode: str = "center",
+        how: str = "inner",
+        lat: str = "lat",
+        lng: str = "lng",
+        column: str | None = None,
+        rsuffix: str = "right",
+    ) -> pd.DataFrame:
+        return _join.sjoin_cells(self, polygons, level, mode, how, lat, lng, column, rsuffix)
+
+    sjoin_cells.__doc__ = _join.sjoin_cells.__doc__  # written, and tested, in dggs/_pandas_join.py

@@ -63,8 +63,11 @@ def test_import_dggs_does_not_import_pandas_and_dggs_pandas_registers_the_access
 
 
 def test_doctests():
-    result = doctest.testmod(dggs.pandas, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    assert result.attempted > 10 and result.failed == 0
+    import dggs._pandas_join
+
+    for module in (dggs.pandas, dggs._pandas_join):
+        result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+        assert result.attempted > 5 and result.failed == 0, module.__name__
 
 
 def test_docs_pandas_md_python_blocks_run(tmp_path, monkeypatch):
@@ -347,3 +350,66 @@ def test_polyfill_errors(features, points):
         lines.dggs.polyfill(3)
     with pytest.raises(dggs.TooManyCellsError, match="row 10"):
         features.loc[[10]].dggs.polyfill(10, max_cells=1000)
+
+
+# -- sjoin_cells: points to polygon features through their cells ---------------------------------
+
+def _join_fixture():
+    rng = np.random.default_rng(11)
+    n = 3000
+    lat = np.concatenate([np.degrees(np.arcsin(rng.uniform(-1, 1, n))), [90.0, -90.0, 0.0, 0.0, 85.0]])
+    lng = np.concatenate([rng.uniform(-180, 180, n), [0.0, 0.0, 180.0, -180.0, 179.99]])
+    pts = pd.DataFrame({"lat": lat, "lng": lng, "name": [f"p{i}" for i in range(len(lat))]},
+                       index=pd.Index([f"i{i}" for i in range(len(lat))], name="pid"))
+    polys = gpd.GeoDataFrame(
+        {"name": ["box", "across", "cap", "holed"]},
+        geometry=[box(-10, 10, 30, 40), box(170, -20, 190, 20),  # the second crosses the antimeridian
+                  box(-180, 75, 180, 90),  # the cap around the north pole
+                  Polygon([(-60, -40), (0, -40), (0, 0), (-60, 0)], [[(-40, -30), (-20, -30), (-20, -10), (-40, -10)]])],
+        index=pd.Index([10, 20, 30, 40]),
+    )
+    return pts, polys
+
+
+@pytest.mark.parametrize("mode", ["center", "contains", "overlaps"])
+def test_sjoin_cells_equals_the_plain_functions(mode):
+    pts, polys = _join_fixture()
+    level = 5
+    got = pts.dggs.sjoin_cells(polys, level, mode=mode)
+    # brute force with the plain functions: a pair when the point's cell is among the polygon's cells
+    cell = dggs.latlng_to_cell(pts["lat"].to_numpy(), pts["lng"].to_numpy(), level)
+    want = set()
+    for j, geom in zip(polys.index, polys.geometry):
+        inside = set(dggs.polygon_to_cells(geom, level, mode=mode).tolist())
+        want |= {(i, j) for i, c in zip(pts.index, cell) if c in inside}
+    assert set(zip(got.index, got["index_right"])) == want and len(got) == len(want)
+    assert got["name"].tolist() == pts.loc[got.index, "name"].tolist()  # this frame's columns, same rows
+    assert got["name_right"].tolist() == polys.loc[got["index_right"], "name"].tolist()  # a clash gets the suffix
+    assert (got[f"cell_{level}"].to_numpy() == np.asarray(dggs.latlng_to_cell(
+        got["lat"].to_numpy(), got["lng"].to_numpy(), level), dtype=object)).all()
+    assert list(got.index) == sorted(got.index, key=list(pts.index).index)  # the points' order kept
+    # modes bracket the exact join: overlaps misses no point inside, contains joins none outside
+    def exact(test):
+        return {(i, j) for j, geom in zip(polys.index, polys.geometry)
+                for i, a, b in zip(pts.index, pts["lat"], pts["lng"])
+                if test(geom, Point(b, a)) or test(geom, Point(b + 360, a))}
+
+    if mode == "overlaps":
+        assert exact(shapely.contains) <= want  # every point strictly inside
+    if mode == "contains":
+        assert want <= exact(shapely.covers)  # boundary included: the pole is the cap's edge lat = 90 in lng/lat
+
+
+def test_sjoin_cells_left_keeps_every_point_and_checks_arguments():
+    pts, polys = _join_fixture()
+    left = pts.dggs.sjoin_cells(polys.iloc[:1], 4, how="left", column="c")
+    inner = pts.dggs.sjoin_cells(polys.iloc[:1], 4, column="c")
+    assert len(left) == len(pts) and list(left.index) == list(pts.index)
+    assert left["index_right"].notna().sum() == len(inner)
+    with pytest.raises(dggs.DggsValueError, match="how 'outer'"):
+        pts.dggs.sjoin_cells(polys, 4, how="outer")
+    with pytest.raises(dggs.DggsValueError, match="mode 'near'"):
+        pts.dggs.sjoin_cells(polys, 4, mode="near")
+    geo_points = gpd.GeoDataFrame({"v": [1]}, geometry=[Point(5.0, 20.0)], crs="EPSG:4326")
+    joined = geo_points.dggs.sjoin_cells(polys, 6)
+    assert isinstance(joined, gpd.GeoDataFrame) and joined["name"].tolist() == ["box"]
