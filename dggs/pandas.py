@@ -433,17 +433,5 @@ class DggsAccessor:
         )
         return out.assign(**{name: values})
 
-    def sjoin_cells(
-        self,
-        polygons: Any,
-        level: int,
-        mode: str = "center",
-        how: str = "inner",
-        lat: str = "lat",
-        lng: str = "lng",
-        column: str | None = None,
-        rsuffix: str = "right",
-    ) -> pd.DataFrame:
-        return _join.sjoin_cells(self, polygons, level, mode, how, lat, lng, column, rsuffix)
-
-    sjoin_cells.__doc__ = _join.sjoin_cells.__doc__  # written, and tested, in dggs/_pandas_join.py
+    #: :func:`dggs._pandas_join.sjoin_cells`, written and tested in its own module
+    sjoin_cells = _join.sjoin_cells
