@@ -123,19 +123,9 @@ def ingest_geojson(
     level = store.resolve_level(level)
     features = readers_geojson.load_geojson(file)
     batch_size = options.batch_size
-    if values is None:
-        seen: dict[str, str] = {}
-        for feature in features[:batch_size]:
-            props = feature.get("properties") if isinstance(feature, dict) else None
-            for key in props if isinstance(props, dict) else ():
-                if isinstance(key, str) and key.lower() not in BASE_COLUMNS:
-                    if key.lower() in seen and seen[key.lower()] != key:
-                        raise DggsValueError(
-                            f"{path}: properties {seen[key.lower()]!r} and {key!r} differ only in case "
-                            "(SQLite column names ignore case); pass values= to choose"
-                        )
-                    seen.setdefault(key.lower(), key)
-        values = list(seen.values())
+    if values is None:  # the properties seen in the first batch
+        props = (f.get("properties") if isinstance(f, dict) else None for f in features[:batch_size])
+        values = _default_values(path, (key for p in props if isinstance(p, dict) for key in p))
     names, declared = value_spec(values)
     info = _identity(store, "geojson", file, str(path), options.replace)
     return run_ingest(
