@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import http.client
 import json
+import math
 import os
 import random
 import socket
@@ -42,10 +43,10 @@ DGGRS = "DGGS-Split26-ISEA"
 
 #: The writer: appends sources of 50,000 rows in batches until told to stop.
 WRITER = r"""
-import sys, time, numpy as np
+import os, sys
+import numpy as np
 from dggs.storage import CellStore
 path, level, batch, stop_file = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
-import os
 rng = np.random.default_rng(7)
 n = 0
 with CellStore(path) as store:
@@ -90,18 +91,12 @@ def requests_mix(rng: random.Random, level: int) -> tuple[str, str]:
     if kind == "box cells":
         w, s = rng.uniform(-180, 160), rng.uniform(-90, 70)
         return kind, f"/map/cells?level={min(6, level)}&bbox={w:.3f},{s:.3f},{w + 20:.3f},{s + 20:.3f}&column=pop&stat=mean"
-    lat, lng = math_point(rng)
+    lat, lng = math.degrees(math.asin(rng.uniform(-1, 1))), rng.uniform(-180, 180)  # uniform on the sphere
     if kind == "zone info":
         return kind, f"/dggs/{DGGRS}/zones/{dggs.latlng_to_cell(lat, lng, rng.randint(0, level))}"
     if kind == "zone data":
         return kind, f"/dggs/{DGGRS}/zones/{dggs.latlng_to_cell(lat, lng, 2)}/data?zone-depth=3"
     return kind, f"/dggs/{DGGRS}/zones?zone-level=3&compact-zones=true"
-
-
-def math_point(rng: random.Random) -> tuple[float, float]:
-    import math
-
-    return math.degrees(math.asin(rng.uniform(-1, 1))), rng.uniform(-180, 180)
 
 
 def client(port: int, until: float, seed: int, level: int, start_count: int, batch: int, out: dict) -> None:
