@@ -94,6 +94,8 @@ def sjoin_cells(
     """
     if how not in _HOW:
         raise DggsValueError(f"how {how!r} is not one of {', '.join(_HOW)}")
+    if not isinstance(polygons, pd.DataFrame):
+        raise DggsValueError(f"polygons must be a GeoDataFrame of (Multi)Polygons, not a {type(polygons).__name__}")
     key = column if column is not None else f"cell_{level}"
     left = self.latlng_to_cell(level, lat=lat, lng=lng, column=key, as_int=True)
     cells = polygons.dggs.polyfill(level, mode=mode, column=key, as_int=True)

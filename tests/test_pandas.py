@@ -410,6 +410,17 @@ def test_sjoin_cells_left_keeps_every_point_and_checks_arguments():
         pts.dggs.sjoin_cells(polys, 4, how="outer")
     with pytest.raises(dggs.DggsValueError, match="mode 'near'"):
         pts.dggs.sjoin_cells(polys, 4, mode="near")
+    # bad input: a typed error naming the value, never a raw AttributeError
+    with pytest.raises(dggs.DggsValueError, match="not a list"):
+        pts.dggs.sjoin_cells([box(0, 0, 1, 1)], 4)
+    with pytest.raises(ColumnError, match="GeoDataFrame"):
+        pts.dggs.sjoin_cells(pd.DataFrame({"x": [1]}), 4)
+    with pytest.raises(dggs.DggsValueError, match="row 7: a Point"):
+        pts.dggs.sjoin_cells(gpd.GeoDataFrame({"a": [1]}, geometry=[Point(1, 1)], index=[7]), 4)
+    with pytest.raises(dggs.LevelError, match="level 29"):
+        pts.dggs.sjoin_cells(polys, 29)
+    with pytest.raises(dggs.CoordinateError, match="row 'i1', column 'lat'"):
+        pts.assign(lat=pts["lat"].where(pts.index != "i1", np.nan)).dggs.sjoin_cells(polys, 4)
     geo_points = gpd.GeoDataFrame({"v": [1]}, geometry=[Point(5.0, 20.0)], crs="EPSG:4326")
     joined = geo_points.dggs.sjoin_cells(polys, 6)
     assert isinstance(joined, gpd.GeoDataFrame) and joined["name"].tolist() == ["box"]
