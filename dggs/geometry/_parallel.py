@@ -14,7 +14,7 @@ Examples
 >>> def _double(x, out):
 ...     for i in prange(x.shape[0]):
 ...         out[i] = 2 * x[i]
->>> double = loops(_double)
+>>> double = loops(_double, cache=False)  # a module function caches its compiled code
 >>> out = np.empty(3)
 >>> double(3, np.arange(3.0), out)
 >>> out.tolist()
@@ -89,30 +89,32 @@ class Loops:
     else :attr:`serial` (where ``prange`` is a plain ``range``).
     """
 
-    def __init__(self, body: Callable[..., Any]) -> None:
+    def __init__(self, body: Callable[..., Any], cache: bool = True) -> None:
         self.__doc__ = body.__doc__
         self.__name__ = body.__name__.lstrip("_")
         #: The body compiled without threads (small inputs; the scalar paths).
-        self.serial = numba.njit(cache=True, nogil=True)(body)
+        self.serial = numba.njit(cache=cache, nogil=True)(body)
         #: The body compiled with ``parallel=True``.
-        self.threaded = numba.njit(cache=True, nogil=True, parallel=True)(body)
+        self.threaded = numba.njit(cache=cache, nogil=True, parallel=True)(body)
 
     def __call__(self, n: int, *args: Any) -> Any:
         """Run the body over ``args``, on several threads if ``n`` items of work warrant it."""
         return (self.threaded if parallel(n) else self.serial)(*args)
 
 
-def loops(body: Callable[..., Any]) -> Loops:
+def loops(body: Callable[..., Any], cache: bool = True) -> Loops:
     """Compile ``body`` (a loop over ``prange``) twice: see :class:`Loops`.
 
     Parameters
     ----------
     body : callable
         A numba-compilable function whose outer loop is a ``prange``.
+    cache : bool
+        Keep the compiled code on disk (needs the body to live in a file).
 
     Returns
     -------
     Loops
         Called as ``loop(n, *args)``.
     """
-    return Loops(body)
+    return Loops(body, cache)
