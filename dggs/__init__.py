@@ -31,7 +31,7 @@ from dggs.errors import (
 )
 
 # Indexing
-from dggs.index.cellid import MAX_LEVEL, int_to_str, str_to_int
+from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
 from dggs.index.points import (
     cell_to_boundary,
     cell_to_latlng,

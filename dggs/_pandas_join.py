@@ -25,7 +25,7 @@ import numpy as np
 import pandas as pd
 
 from dggs.errors import DggsValueError
-from dggs.index.cellid import int_to_str
+from dggs.index.ids import int_to_str
 
 __all__ = ["sjoin_cells"]
 

@@ -44,12 +44,10 @@ import shapely
 
 from dggs._formats import EXPORT_FORMATS, export_format
 from dggs.errors import DggsValueError
-from dggs.index import _kpoints
-from dggs.index._convert_in import cells_in
-from dggs.index._coords import check_densify
-from dggs.index._polygons import default_densify, ring_to_geometry, special_rings
-from dggs.index.cellid import int_to_str
-from dggs.index.points import _boundaries
+from dggs.index._checks import check_densify
+from dggs.index._convert import cells_in
+from dggs.index._shapes import geoarrow, wkb
+from dggs.index.ids import int_to_str
 
 try:
     import pyarrow as pa
@@ -72,8 +70,6 @@ __all__ = [
 GEOPARQUET_VERSION = "1.1.0"
 _ENCODINGS = ("wkb", "geoarrow")
 _BBOX = pa.struct([("xmin", pa.float64()), ("ymin", pa.float64()), ("xmax", pa.float64()), ("ymax", pa.float64())])
-_XY = pa.struct([("x", pa.float64()), ("y", pa.float64())])
-_WKB_POLYGON = 3
 
 
 def _check_encoding(encoding: str) -> str:
@@ -82,115 +78,11 @@ def _check_encoding(encoding: str) -> str:
     return encoding
 
 
-def _groups(ids: np.ndarray, densify: int | None) -> list[tuple[np.ndarray, int]]:
-    """(row indices, densify) per group of rows built alike: one group, or one per level's default."""
-    if densify is not None:
-        return [(np.arange(ids.shape[0]), check_densify(densify))]
-    from dggs.index import _khier
-
-    lv = _khier.levels(ids)
-    groups: dict[int, list[np.ndarray]] = {}
-    for level in np.unique(lv):
-        groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
-    return [(np.sort(np.concatenate(parts)), n) for n, parts in groups.items()]
 
 
-def _special_geometries(ids: np.ndarray, densify: int) -> np.ndarray:
-    """Shapely geometries of cells that touch a pole or cross the antimeridian (exact kernel rings)."""
-    out = np.empty(ids.shape[0], dtype=object)
-    buf = np.empty((3 * (densify + 1) + _kpoints.SPECIAL_EXTRA, 2))
-    for i in range(ids.shape[0]):
-        m = _kpoints.special_ring(ids[i], densify, buf)
-        out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
-    return out
 
 
-def _wkb_records(coords: np.ndarray) -> np.ndarray:
-    """(N, L) uint8: the little-endian WKB Polygon of each closed (lng, lat) ring of ``coords`` (N, M, 2)."""
-    n, m = coords.shape[0], coords.shape[1]
-    record = np.dtype([("order", "u1"), ("type", "<u4"), ("rings", "<u4"), ("points", "<u4"), ("xy", "<f8", (m, 2))])
-    out = np.empty(n, dtype=record)
-    out["order"] = 1
-    out["type"] = _WKB_POLYGON
-    out["rings"] = 1
-    out["points"] = m
-    out["xy"] = coords
-    return out.view(np.uint8).reshape(n, record.itemsize)
 
-
-def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: int) -> pa.Array:
-    """A binary array of ``n`` rows from (rows, offsets-from-0, data) chunks, put back in row order."""
-    rows = np.concatenate([c[0] for c in chunks]) if chunks else np.empty(0, np.int64)
-    lengths = np.concatenate([np.diff(c[1]) for c in chunks]) if chunks else np.empty(0, np.int64)
-    offsets = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(lengths, out=offsets[1:])
-    data = np.concatenate([c[2] for c in chunks]) if chunks else np.empty(0, np.uint8)
-    arr = pa.LargeBinaryArray.from_buffers(pa.large_binary(), n, [None, pa.py_buffer(offsets), pa.py_buffer(data)])
-    if not np.array_equal(rows, np.arange(n)):
-        order = np.empty(n, dtype=np.int64)
-        order[rows] = np.arange(n)
-        arr = arr.take(pa.array(order))
-    return arr.cast(pa.binary()) if offsets[-1] < 2**31 - 1 else arr
-
-
-def _wkb(ids: np.ndarray, densify: int | None) -> tuple[pa.Array, np.ndarray, set[str]]:
-    """WKB of each cell, its (N, 4) bounds and the geometry types present."""
-    n = ids.shape[0]
-    chunks = []
-    bounds = np.empty((n, 4))
-    types: set[str] = set()
-    for rows, d in _groups(ids, densify):
-        coords = _boundaries(ids[rows], d, lnglat=True)
-        special = special_rings(coords)
-        plain = rows[~special]
-        if plain.size:
-            block = _wkb_records(coords[~special])
-            offsets = np.arange(plain.size + 1, dtype=np.int64) * block.shape[1]
-            chunks.append((plain, offsets, block.reshape(-1)))
-            xy = coords[~special]
-            bounds[plain, :2] = xy.min(axis=1)
-            bounds[plain, 2:] = xy.max(axis=1)
-            types.add("Polygon")
-        if special.any():
-            sel = rows[special]
-            geoms = _special_geometries(ids[sel], d)
-            blobs = shapely.to_wkb(geoms, byte_order=1, output_dimension=2)
-            lengths = np.fromiter((len(b) for b in blobs), dtype=np.int64, count=blobs.shape[0])
-            offsets = np.concatenate([[0], np.cumsum(lengths)])
-            chunks.append((sel, offsets, np.frombuffer(b"".join(blobs), dtype=np.uint8)))
-            bounds[sel] = shapely.bounds(geoms)
-            types.update(g.geom_type for g in geoms)
-    return _binary_array(chunks, n), bounds, types
-
-
-def _geometries(ids: np.ndarray, densify: int | None) -> np.ndarray:
-    """Shapely geometries of the cells (the vectorized path of :func:`dggs.cell_to_polygon`)."""
-    out = np.empty(ids.shape[0], dtype=object)
-    for rows, d in _groups(ids, densify):
-        coords = _boundaries(ids[rows], d, lnglat=True)
-        special = special_rings(coords)
-        out[rows[~special]] = shapely.polygons(coords[~special])
-        if special.any():
-            out[rows[special]] = _special_geometries(ids[rows[special]], d)
-    return out
-
-
-def _geoarrow(ids: np.ndarray, densify: int | None) -> tuple[pa.Array, str]:
-    """Native GeoArrow polygons (or multipolygons where any cell is split), separated x/y."""
-    geoms = _geometries(ids, densify)
-    if geoms.size == 0:
-        kind, coords, offsets = shapely.GeometryType.POLYGON, np.empty((0, 2)), (np.zeros(1, np.int64),) * 2
-    else:
-        kind, coords, offsets = shapely.to_ragged_array(geoms)
-    xy = pa.StructArray.from_arrays([pa.array(coords[:, 0]), pa.array(coords[:, 1])], fields=list(_XY))
-    arr: pa.Array = xy
-    for off in offsets:
-        if off[-1] < 2**31 - 1:
-            arr = pa.ListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int32)), arr)
-        else:  # over 2**31 coordinates (or rings): 64-bit offsets
-            arr = pa.LargeListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int64)), arr)
-    name = "geoarrow.multipolygon" if kind == shapely.GeometryType.MULTIPOLYGON else "geoarrow.polygon"
-    return arr, name
 
 
 def cells_to_geoarrow(cells: Any, densify: int | None = 0, encoding: str = "wkb") -> pa.Array:
@@ -233,8 +125,8 @@ def cells_to_geoarrow(cells: Any, densify: int | None = 0, encoding: str = "wkb"
     ids, _ = cells_in(cells)
     ids = ids.reshape(-1)
     if encoding == "wkb":
-        return _wkb(ids, densify)[0]
-    return _geoarrow(ids, densify)[0]
+        return wkb(ids, densify)[0]
+    return geoarrow(ids, densify)[0]
 
 
 def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = None, densify: int | None = 0) -> pa.Field:
@@ -256,7 +148,7 @@ def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = N
     if cells is None:
         raise DggsValueError('geoarrow_field(encoding="geoarrow") needs the cells, to tell polygon from multipolygon')
     ids, _ = cells_in(cells)
-    arr, ext = _geoarrow(ids.reshape(-1), densify if densify is None else check_densify(densify))
+    arr, ext = geoarrow(ids.reshape(-1), densify if densify is None else check_densify(densify))
     return pa.field(name, arr.type, nullable=False, metadata={b"ARROW:extension:name": ext.encode(), **meta})
 
 
@@ -316,7 +208,7 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
     ids, _ = cells_in(cells)
     ids = ids.reshape(-1)
     n = ids.shape[0]
-    geometry, bounds, types = _wkb(ids, densify)
+    geometry, bounds, types = wkb(ids, densify)
     columns: dict[str, Any] = {
         "cell": pa.array(int_to_str(ids) if n else np.empty(0, dtype=str), type=pa.string()),
         "cell_id": pa.array(ids.astype(np.int64), type=pa.int64()),

@@ -34,7 +34,8 @@ from collections.abc import Sequence
 import numpy as np
 
 from dggs.errors import DggsValueError
-from dggs.index.cellid import check_level, int_to_str
+from dggs.index._checks import check_level
+from dggs.index.ids import int_to_str
 from dggs.index.points import latlng_to_cell
 
 try:  # the optional extra

@@ -38,7 +38,7 @@ from typing import Any, NoReturn
 import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, LevelMismatchError
-from dggs.index.cellid import check_level
+from dggs.index._checks import check_level
 from dggs.index.hierarchy import cell_to_parent, get_level, is_valid_cell
 from dggs.index.points import cell_to_polygon, latlng_to_cell
 from dggs.index.polyfill import polygon_to_cells

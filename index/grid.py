@@ -3,23 +3,81 @@
 Each level is a reflection tiling (thesis §6.1.7, docs/grid.md), so the cell
 across an edge is the mirror image of the cell in that edge; its id is the
 cell's with one digit replaced (a digit walk on the integer id, in
-:mod:`dggs.index._kgrid`).  Disks and rings grow breadth-first, each ring
+:mod:`dggs.index._kernel.grid`).  Disks and rings grow breadth-first, each ring
 deduplicated against the two before it.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
 
-from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
+from dggs.errors import DggsValueError, LevelMismatchError
 
-from . import _codec, _kgrid, _khier
-from ._convert_in import cells_in, scalar_id
-from ._convert_out import cells_out
-from .hierarchy import check_max_cells, check_size
-from dggs.geometry._parallel import parallel
+from ._checks import K_LIMIT, check_k, check_max_cells, check_radius, check_size
+from ._convert import ROWS, VALUE, Op, apply, apply_pair, name_of
+from ._kernel import grid as kg
+from ._kernel import hierarchy as kh
 
 __all__ = ["edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "grid_distance"]
+
+#: Largest k whose disk the single-id entry takes (a row on the stack of the kernel, 3k(k+1)+1 cells).
+_ONE_DISK_K = 64
+
+
+def _neighbours(ids: np.ndarray) -> np.ndarray:
+    out = np.empty((ids.shape[0], 3), dtype=np.uint64)
+    kg.neighbours(ids, out)
+    return out
+
+
+def _are_neighbours(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.empty(a.shape[0], dtype=bool)
+    kg.are_neighbours(a, b, out)
+    return out
+
+
+def _rows(loop: Any, width: Callable[[int], int], what: str) -> Any:
+    """A kernel's padded rows of ``width`` cells per id, checked against ``max_cells`` before allocating."""
+
+    def rows(ids: np.ndarray, k: int, max_cells: int) -> np.ndarray:
+        check_size(ids.shape[0] * width(k), max_cells, f"{what} with k={k}")
+        out = np.empty((ids.shape[0], width(k)), dtype=np.uint64)
+        loop(ids.shape[0] * width(k), ids, k, out, np.empty(ids.shape[0], dtype=np.int64))
+        return out
+
+    return rows
+
+
+def _one_disk(cell: int, k: int, max_cells: int) -> np.ndarray:
+    """The disk of one id, if the kernel's single-id entry takes it and it is within ``max_cells``."""
+    if k > _ONE_DISK_K or kg.disk_size_bound(k) > max_cells:
+        return np.empty(0, dtype=np.uint64)  # a miss: the general path checks and explains
+    return kg.disk_of(cell, k)
+
+
+def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
+    la, lb = kh.levels(a), kh.levels(b)
+    if (la != lb).any():
+        i = int(np.flatnonzero(la != lb)[0])
+        raise LevelMismatchError(
+            f"cells {name_of(a[i])!r} (level {la[i]}) and {name_of(b[i])!r} (level {lb[i]}) are at different levels"
+        )
+    dist = np.empty(a.shape[0], dtype=np.int64)
+    kg.distances(a.shape[0], a, b, max_steps, dist)
+    if (dist < 0).any():
+        i = int(np.flatnonzero(dist < 0)[0])
+        raise DggsValueError(f"cells {name_of(a[i])!r} and {name_of(b[i])!r} are more than {max_steps} steps apart")
+    return dist
+
+
+_NEIGHBOURS = Op(many=_neighbours, out=ROWS)
+_ARE_NEIGHBOURS = Op(many=_are_neighbours, out=VALUE)
+_DISK = Op(many=_rows(kg.disk, kg.disk_size_bound, "grid_disk"), out=ROWS, one=_one_disk)
+_RING = Op(many=_rows(kg.ring, kg.ring_size_bound, "grid_ring"), out=ROWS)
+_DISTANCE = Op(many=_distances, out=VALUE)
 
 
 def edge_neighbors(cell):
@@ -34,10 +92,7 @@ def edge_neighbors(cell):
     >>> edge_neighbors("C401")
     ['C411', 'C402', 'C400']
     """
-    ids, kind = cells_in(cell)
-    out = np.empty((ids.shape[0], 3), dtype=np.uint64)
-    _kgrid.neighbours(ids, out)
-    return cells_out(out, kind, (3,))
+    return apply(_NEIGHBOURS, cell)
 
 
 def are_neighbor_cells(a, b):
@@ -53,47 +108,7 @@ def are_neighbor_cells(a, b):
     >>> are_neighbor_cells("C401", "C402"), are_neighbor_cells("C401", "C401")
     (True, False)
     """
-    ia, ka = cells_in(a)
-    ib, kb = cells_in(b)
-    ia, ib, shape = _pair(ia, ka, ib, kb)
-    res = np.empty(ia.shape[0], dtype=bool)
-    _kgrid.are_neighbours(ia, ib, res)
-    if ka.scalar and kb.scalar:
-        return bool(res[0])
-    return res.reshape(shape)
-
-
-def _pair(ia: np.ndarray, ka, ib: np.ndarray, kb) -> tuple[np.ndarray, np.ndarray, tuple[int, ...]]:
-    """Two id arrays broadcast against each other (numpy's rules), and the result's shape."""
-    sa, sb = (() if ka.scalar else ka.shape), (() if kb.scalar else kb.shape)
-    if sa == sb:
-        return ia, ib, sa
-    try:
-        shape = np.broadcast_shapes(sa, sb)
-    except ValueError:
-        raise DggsValueError(
-            f"cannot pair {ia.shape[0]} cells (shape {sa}) with {ib.shape[0]} cells (shape {sb})"
-        ) from None
-    ia = np.ascontiguousarray(np.broadcast_to(ia.reshape(sa), shape)).reshape(-1)
-    ib = np.ascontiguousarray(np.broadcast_to(ib.reshape(sb), shape)).reshape(-1)
-    return ia, ib, shape
-
-
-#: Largest ``k`` (and ``max_steps``) the kernels take; a disk of this radius covers the globe at every level.
-_K_LIMIT = 1 << 31
-
-
-def _check_k(k, name: str = "k") -> int:
-    if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)) or k < 0:
-        raise DggsValueError(f"{name} {k!r} must be a non-negative integer")
-    return int(k)
-
-
-def _check_radius(k, what: str) -> int:
-    k = _check_k(k)
-    if k > _K_LIMIT:
-        raise TooManyCellsError(f"{what} with k={k} would return more cells than the grid has at any level")
-    return k
+    return apply_pair(_ARE_NEIGHBOURS, a, b)
 
 
 def grid_disk(cell, k: int = 1, max_cells: int | None = None):
@@ -122,14 +137,7 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
     >>> grid_disk(np.array(["C401", "C402"]), 1).shape
     (2, 4)
     """
-    k = _check_radius(k, "grid_disk")
-    check_max_cells(max_cells)
-    one = scalar_id(cell)
-    if one and k <= 64:  # the single-cell path
-        disk = _kgrid.disk_of(one, k).tolist()
-        if disk:
-            return [_codec.format_int(c) for c in disk] if type(cell) is str else disk
-    return _rows(cell, k, max_cells, "grid_disk", _kgrid.disk_size_bound(k), _kgrid.disk, _kgrid.disk_serial)
+    return apply(_DISK, cell, check_radius(k, "grid_disk"), check_max_cells(max_cells))
 
 
 def grid_ring(cell, k: int = 1, max_cells: int | None = None):
@@ -142,19 +150,7 @@ def grid_ring(cell, k: int = 1, max_cells: int | None = None):
     >>> grid_ring("C401", 1)
     ['C400', 'C402', 'C411']
     """
-    k = _check_radius(k, "grid_ring")
-    check_max_cells(max_cells)
-    return _rows(cell, k, max_cells, "grid_ring", _kgrid.ring_size_bound(k), _kgrid.ring, _kgrid.ring_serial)
-
-
-def _rows(cell, k: int, max_cells, what: str, width: int, threaded, serial):
-    """One sorted row of ``width`` per cell, padded with the null id, from a disk or ring kernel."""
-    ids, kind = cells_in(cell)
-    check_size(ids.shape[0] * width, max_cells, f"{what} with k={k}")
-    out = np.empty((ids.shape[0], width), dtype=np.uint64)
-    run = threaded if parallel(ids.shape[0] * width) else serial
-    run(ids, k, out, np.empty(ids.shape[0], dtype=np.int64))
-    return cells_out(out, kind, (width,))
+    return apply(_RING, cell, check_radius(k, "grid_ring"), check_max_cells(max_cells))
 
 
 def grid_distance(a, b, max_steps: int = 10_000):
@@ -175,26 +171,4 @@ def grid_distance(a, b, max_steps: int = 10_000):
     >>> grid_distance("C401", "C402"), grid_distance("C401", "C401")
     (1, 0)
     """
-    max_steps = min(_check_k(max_steps, "max_steps"), _K_LIMIT)
-    ia, ka = cells_in(a)
-    ib, kb = cells_in(b)
-    ia, ib, shape = _pair(ia, ka, ib, kb)
-    la, lb = _khier.levels(ia), _khier.levels(ib)
-    if (la != lb).any():
-        i = int(np.flatnonzero(la != lb)[0])
-        raise LevelMismatchError(
-            f"cells {_codec.format_int(int(ia[i]))!r} (level {la[i]}) and "
-            f"{_codec.format_int(int(ib[i]))!r} (level {lb[i]}) are at different levels"
-        )
-    dist = np.empty(ia.shape[0], dtype=np.int64)
-    run = _kgrid.distances if parallel(ia.shape[0]) else _kgrid.distances_serial
-    run(ia, ib, max_steps, dist)
-    if (dist < 0).any():
-        i = int(np.flatnonzero(dist < 0)[0])
-        raise DggsValueError(
-            f"cells {_codec.format_int(int(ia[i]))!r} and {_codec.format_int(int(ib[i]))!r} "
-            f"are more than {max_steps} steps apart"
-        )
-    if ka.scalar and kb.scalar:
-        return int(dist[0])
-    return dist.reshape(shape)
+    return apply_pair(_DISTANCE, a, b, min(check_k(max_steps, "max_steps"), K_LIMIT))

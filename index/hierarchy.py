@@ -1,21 +1,24 @@
 """Hierarchy: levels, parents, children, compaction, counts.
 
-Integer ids carry the hierarchy in their bits (:mod:`dggs.index._bits`):
+Integer ids carry the hierarchy in their bits (:mod:`dggs.index._kernel.bits`):
 parents clear fields, children fill one, the descendants of a cell are one
-integer range.  The compiled kernels are in :mod:`dggs.index._khier`.
+integer range.  The compiled kernels are in :mod:`dggs.index._kernel.hierarchy`.
 """
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
+from dggs.errors import LevelMismatchError
 
-from . import _codec, _khier, _kpoints
-from ._bits import MAX_LEVEL
-from ._convert_in import cells_in, is_valid_any, scalar_id
-from ._convert_out import cells_out, cells_out_flat
-from .cellid import FACE_LETTERS, check_level
+from ._checks import MAX_CELLS, check_level, check_max_cells, check_size
+from ._convert import CELL, FLAT, VALUE, Op, apply, is_valid_any, name_of
+from ._kernel import hierarchy as kh
+from ._kernel import points as kp
+from ._kernel.bits import FACE_SHIFT, MARKER, MAX_LEVEL
+from .ids import FACE_LETTERS
 
 __all__ = [
     "get_level",
@@ -31,26 +34,79 @@ __all__ = [
     "MAX_CELLS",
 ]
 
-#: Default limit on the cells one call may return (400 MB of integer ids).
-MAX_CELLS = 50_000_000
+
+def _level_error(ids: np.ndarray, bad: int, message: str) -> LevelMismatchError:
+    """The error naming cell ``ids[bad]`` and its level: ``message`` has ``{cell}`` and ``{level}``."""
+    level = int(kh.levels(ids[bad : bad + 1])[0])
+    return LevelMismatchError(message.format(cell=name_of(ids[bad]), level=level))
 
 
-def check_max_cells(max_cells) -> int:
-    """``max_cells`` as an int (:data:`MAX_CELLS` for None), or :class:`DggsValueError` naming it."""
-    if max_cells is None:
-        return MAX_CELLS
-    if isinstance(max_cells, (bool, np.bool_)) or not isinstance(max_cells, (int, np.integer)) or max_cells < 0:
-        raise DggsValueError(f"max_cells {max_cells!r} must be a non-negative integer (or None for {MAX_CELLS:,})")
-    return int(max_cells)
+def _levels(ids: np.ndarray) -> np.ndarray:
+    return kh.levels(ids).astype(np.int64)
 
 
-def check_size(total: int, max_cells: int | None, what: str) -> None:
-    """Raise :class:`TooManyCellsError` before allocating more than ``max_cells`` cells."""
-    limit = check_max_cells(max_cells)
-    if total > limit:
-        raise TooManyCellsError(
-            f"{what} would return {total:,} cells, over the limit of {limit:,} (raise max_cells to allow it)"
-        )
+def _faces(ids: np.ndarray) -> np.ndarray:
+    return ((ids >> np.uint64(FACE_SHIFT)) & np.uint64(31)).astype(np.int64)
+
+
+def _parents(ids: np.ndarray, level: int) -> np.ndarray:
+    if level < 0:
+        out, bad = kh.parents_up(ids)
+        if bad >= 0:
+            raise _level_error(ids, bad, "base cell {cell!r} has no parent")
+        return out
+    out, bad = kh.parents(ids, level)
+    if bad >= 0:
+        raise _level_error(ids, bad, f"parent level {level} is finer than cell {{cell!r}} at level {{level}}")
+    return out
+
+
+def _children(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
+    if level < 0:  # one level down: all cells must be of one level
+        lo, hi = kh.level_bounds(ids)
+        if lo != hi:
+            raise LevelMismatchError("cells of mixed levels need an explicit child level")
+        level = check_level(lo + 1 if ids.size else 1, "child level")
+    total, bad = kh.count_children(ids, level)
+    if bad >= 0:
+        raise _level_error(ids, bad, f"child level {level} is coarser than cell {{cell!r}} at level {{level}}")
+    check_size(total, max_cells, "cell_to_children")
+    out = np.empty(total, dtype=np.uint64)
+    kh.children(ids, level, out)
+    return out
+
+
+def _center_children(ids: np.ndarray, level: int) -> np.ndarray:
+    lo, hi = kh.level_bounds(ids)
+    if level < 0:
+        level = min(hi + 1, MAX_LEVEL) if ids.size else 1
+    if ids.size and hi > level:
+        i = int(np.argmax(kh.levels(ids)))
+        raise _level_error(ids, i, f"child level {level} is coarser than cell {{cell!r}} at level {{level}}")
+    out = np.empty(ids.shape[0], dtype=np.uint64)
+    # The centroid lies inside the cell, so it is located in one of its descendants; a base cell's centre is a
+    # corner of all six level-1 triangles and goes to triangle 0 by the level-1 tie rule.
+    kp.center_children(ids.shape[0], ids, level, out)
+    return out
+
+
+def _uncompact(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
+    cover, total, bad = kh.uncompact_prepare(ids, level)
+    if bad >= 0:
+        raise _level_error(ids, bad, f"cell {{cell!r}} at level {{level}} is finer than level {level}")
+    check_size(total, max_cells, "uncompact_cells")
+    out = np.empty(total, dtype=np.uint64)
+    kh.children(cover, level, out)
+    return out
+
+
+_LEVEL = Op(many=_levels, out=VALUE)
+_FACE = Op(many=_faces, out=VALUE)
+_PARENT = Op(many=_parents, out=CELL, one=kh.parent_of)
+_CHILDREN = Op(many=_children, out=FLAT)
+_CENTER_CHILD = Op(many=_center_children, out=CELL)
+_COMPACT = Op(many=kh.compact, out=FLAT)
+_UNCOMPACT = Op(many=_uncompact, out=FLAT)
 
 
 def get_num_cells(level: int) -> int:
@@ -75,7 +131,7 @@ def get_base_cells(as_int: bool = False) -> np.ndarray:
     >>> int(get_base_cells(as_int=True)[0])
     4611686018427387904
     """
-    ids = np.array([(1 << 62) | (f << 57) for f in range(20)], dtype=np.uint64)
+    ids = np.array([int(MARKER) | (f << FACE_SHIFT) for f in range(20)], dtype=np.uint64)
     return ids if as_int else np.array(list(FACE_LETTERS))
 
 
@@ -95,12 +151,10 @@ def get_level(cell):
 
     Examples
     --------
-    >>> get_level("C401"), get_level(["C", "C4"]).tolist()
+    >>> get_level("C401"), get_level(["C", "C4"])
     (3, [0, 1])
     """
-    ids, kind = cells_in(cell)
-    lv = _khier.levels(ids)
-    return int(lv[0]) if kind.scalar else lv.astype(np.int64).reshape(kind.shape)
+    return apply(_LEVEL, cell)
 
 
 def get_face(cell):
@@ -111,9 +165,7 @@ def get_face(cell):
     >>> get_face("C401")
     2
     """
-    ids, kind = cells_in(cell)
-    face = ((ids >> np.uint64(57)) & np.uint64(31)).astype(np.int64)
-    return int(face[0]) if kind.scalar else face.reshape(kind.shape)
+    return apply(_FACE, cell)
 
 
 def cell_to_parent(cell, level: int | None = None):
@@ -131,27 +183,7 @@ def cell_to_parent(cell, level: int | None = None):
     >>> cell_to_parent("C401"), cell_to_parent("C401", 1)
     ('C40', 'C4')
     """
-    one = scalar_id(cell)
-    if one and (level is None or (type(level) is int and 0 <= level <= MAX_LEVEL)):
-        parent = _khier.parent_of(one, -1 if level is None else level)
-        if parent:
-            return _codec.format_int(parent) if type(cell) is str else parent
-    ids, kind = cells_in(cell)
-    if level is None:
-        out, bad = _khier.parents_up(ids)
-        if bad >= 0:
-            raise LevelMismatchError(f"base cell {_name(ids[bad])!r} has no parent")
-    else:
-        level = check_level(level)
-        out, bad = _khier.parents(ids, level)
-        if bad >= 0:
-            lv = int(_khier.levels(ids[bad : bad + 1])[0])
-            raise LevelMismatchError(f"parent level {level} is finer than cell {_name(ids[bad])!r} at level {lv}")
-    return cells_out(out, kind)
-
-
-def _name(cell) -> str:
-    return _codec.format_int(int(cell)) or str(int(cell))
+    return apply(_PARENT, cell, -1 if level is None else check_level(level))
 
 
 def cell_to_children(cell, level: int | None = None, max_cells: int | None = None):
@@ -180,22 +212,8 @@ def cell_to_children(cell, level: int | None = None, max_cells: int | None = Non
     >>> len(cell_to_children("C", 2))
     18
     """
-    check_max_cells(max_cells)
-    ids, kind = cells_in(cell)
-    if level is None:
-        lo, hi = _khier.level_bounds(ids)
-        if lo != hi:
-            raise LevelMismatchError("cells of mixed levels need an explicit child level")
-        level = lo + 1 if ids.size else 1
-    level = check_level(level, "child level")
-    total, bad = _khier.count_children(ids, level)
-    if bad >= 0:
-        lv = int(_khier.levels(ids[bad : bad + 1])[0])
-        raise LevelMismatchError(f"child level {level} is coarser than cell {_name(ids[bad])!r} at level {lv}")
-    check_size(total, max_cells, "cell_to_children")
-    out = np.empty(total, dtype=np.uint64)
-    _khier.children(ids, level, out)
-    return cells_out_flat(out, kind)
+    limit = check_max_cells(max_cells)
+    return apply(_CHILDREN, cell, -1 if level is None else check_level(level, "child level"), limit)
 
 
 def cell_to_center_child(cell, level: int | None = None):
@@ -206,22 +224,7 @@ def cell_to_center_child(cell, level: int | None = None):
     >>> cell_to_center_child("C401")
     'C4011'
     """
-    ids, kind = cells_in(cell)
-    lo, hi = _khier.level_bounds(ids)
-    if level is None:
-        level = min(hi + 1, MAX_LEVEL) if ids.size else 1
-    level = check_level(level, "child level")
-    if ids.size and hi > level:
-        i = int(np.argmax(_khier.levels(ids)))
-        raise LevelMismatchError(
-            f"child level {level} is coarser than cell {_name(ids[i])!r} at level {hi}"
-        )
-    out = np.empty(ids.shape[0], dtype=np.uint64)
-    # The centroid lies inside the cell, so it is located in one of its
-    # descendants; a base cell's centre is a corner of all six level-1
-    # triangles and goes to triangle 0 by the level-1 tie rule.
-    _kpoints.center_children(ids, level, out)
-    return cells_out(out, kind)
+    return apply(_CENTER_CHILD, cell, -1 if level is None else check_level(level, "child level"))
 
 
 def compact_cells(cells):
@@ -236,8 +239,7 @@ def compact_cells(cells):
     >>> compact_cells(["C4010", "C4011", "C4012", "C402"])
     ['C401', 'C402']
     """
-    ids, kind = cells_in(cells)
-    return cells_out_flat(_khier.compact(ids), kind)
+    return apply(_COMPACT, cells)
 
 
 def uncompact_cells(cells, level: int, max_cells: int | None = None):
@@ -255,14 +257,4 @@ def uncompact_cells(cells, level: int, max_cells: int | None = None):
     >>> uncompact_cells(["C401", "C4020"], 4)
     ['C4010', 'C4011', 'C4012', 'C4020']
     """
-    level = check_level(level)
-    check_max_cells(max_cells)
-    ids, kind = cells_in(cells)
-    cover, total, bad = _khier.uncompact_prepare(ids, level)
-    if bad >= 0:
-        lv = int(_khier.levels(ids[bad : bad + 1])[0])
-        raise LevelMismatchError(f"cell {_name(ids[bad])!r} at level {lv} is finer than level {level}")
-    check_size(total, max_cells, "uncompact_cells")
-    out = np.empty(total, dtype=np.uint64)
-    _khier.children(cover, level, out)
-    return cells_out_flat(out, kind)
+    return apply(_UNCOMPACT, cells, check_level(level), check_max_cells(max_cells))

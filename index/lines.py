@@ -10,25 +10,22 @@ WGS84 geodesic between the two points.
 from __future__ import annotations
 
 import math
-
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from . import _codec, _kgrid, _kpoints
-from ._convert_in import cells_in
-from ._coords import as_coordinates, as_float_scalar
-from .cellid import check_level
-from .grid import _pair
-from .hierarchy import check_size
+from ._checks import check_level, check_size
+from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, ids_array, name_of, pair_kind, values_out
+from ._corners import fans
+from ._kernel import grid as kg
+from ._kernel import points as kp
 from .measure import level_table
 from .points import latlng_to_cell
-from .vertex import _fans
 
 __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells", "DISTANCE_UNITS"]
-
 
 
 @lru_cache(maxsize=1)
@@ -41,7 +38,7 @@ def _geod():
 DISTANCE_UNITS = ("m", "km", "rad")
 
 
-def _check_unit(unit) -> str:
+def _check_unit(unit: Any) -> str:
     if unit not in DISTANCE_UNITS:
         raise DggsValueError(f"unit {unit!r} must be one of {', '.join(map(repr, DISTANCE_UNITS))}")
     return unit
@@ -56,6 +53,19 @@ def _distance(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.nda
     _, _, d = _geod().inv(lng1, lat1, lng2, lat2)
     d = np.asarray(d, dtype=np.float64)
     return d / 1000.0 if unit == "km" else d
+
+
+def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
+    kp.centres(ids.shape[0], ids, lat, lng)
+    return lat, lng
+
+
+def _centres_distance(a: np.ndarray, b: np.ndarray, unit: str) -> np.ndarray:
+    return _distance(*_centres(a), *_centres(b), unit)
+
+
+_CENTRES_DISTANCE = Op(many=_centres_distance, out=VALUE)
 
 
 def _check_range(lat: np.ndarray, lng: np.ndarray, what: str) -> None:
@@ -101,17 +111,18 @@ def great_circle_distance(lat1, lng1, lat2, lng2, unit: str = "m"):
     1.570796
     """
     _check_unit(unit)
-    a1, o1, s1, _ = as_coordinates(lat1, lng1)
-    a2, o2, s2, _ = as_coordinates(lat2, lng2)
+    a1, o1, k1 = coords_in(lat1, lng1)
+    a2, o2, k2 = coords_in(lat2, lng2)
     try:
-        shape = np.broadcast_shapes(s1, s2)
+        shape = np.broadcast_shapes(k1.shape, k2.shape)
     except ValueError:
-        raise CoordinateError(f"first points of shape {s1} do not broadcast with second points of shape {s2}") from None
+        raise CoordinateError(
+            f"first points of shape {k1.shape} do not broadcast with second points of shape {k2.shape}"
+        ) from None
     _check_range(a1, o1, "first")
     _check_range(a2, o2, "second")
-    a1, o1, a2, o2 = (np.broadcast_to(x.reshape(s), shape).reshape(-1) for x, s in ((a1, s1), (o1, s1), (a2, s2), (o2, s2)))
-    d = _distance(a1, o1, a2, o2, unit)
-    return float(d[0]) if shape == () else d.reshape(shape)
+    a1, o1, a2, o2 = (np.broadcast_to(x.reshape(k.shape), shape).reshape(-1) for x, k in ((a1, k1), (o1, k1), (a2, k2), (o2, k2)))
+    return values_out(_distance(a1, o1, a2, o2, unit), pair_kind(k1, k2, shape))
 
 
 def cell_centers_distance(a, b, unit: str = "m"):
@@ -132,19 +143,10 @@ def cell_centers_distance(a, b, unit: str = "m"):
     --------
     >>> round(cell_centers_distance("C401", "C402", "km"), 1)
     869.6
-    >>> cell_centers_distance(["C401", "C402"], "C401").round(1).tolist()
+    >>> [round(d, 1) for d in cell_centers_distance(["C401", "C402"], "C401")]
     [0.0, 869565.6]
     """
-    _check_unit(unit)
-    ia, ka = cells_in(a)
-    ib, kb = cells_in(b)
-    ia, ib, shape = _pair(ia, ka, ib, kb)
-    lat1, lng1 = np.empty(ia.shape[0]), np.empty(ia.shape[0])
-    lat2, lng2 = np.empty(ib.shape[0]), np.empty(ib.shape[0])
-    _kpoints.centres_serial(np.ascontiguousarray(ia), lat1, lng1)
-    _kpoints.centres_serial(np.ascontiguousarray(ib), lat2, lng2)
-    d = _distance(lat1, lng1, lat2, lng2, unit)
-    return float(d[0]) if ka.scalar and kb.scalar else d.reshape(shape)
+    return apply_pair(_CENTRES_DISTANCE, a, b, _check_unit(unit))
 
 
 # --------------------------------------------------------------------------
@@ -167,15 +169,15 @@ def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int) -> np
 
 def _neighbours(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     out = np.empty(a.shape[0], dtype=bool)
-    _kgrid.are_neighbours(np.ascontiguousarray(a), np.ascontiguousarray(b), out)
+    kg.are_neighbours(np.ascontiguousarray(a), np.ascontiguousarray(b), out)
     return out
 
 
 def _around_corner(a: int, b: int) -> list[int]:
     """The cells strictly between ``a`` and ``b`` on the shorter way around a corner they share."""
-    fans, sizes = _fans(np.full(3, a, dtype=np.uint64), np.arange(3))
+    around, sizes = fans(np.full(3, a, dtype=np.uint64), np.arange(3))
     best: list[int] | None = None
-    for fan, size in zip(fans, sizes):
+    for fan, size in zip(around, sizes):
         ring = [int(c) for c in fan[:size]]
         if b in ring:
             p = ring.index(b)
@@ -183,7 +185,7 @@ def _around_corner(a: int, b: int) -> list[int]:
             if best is None or len(way) < len(best):
                 best = way
     if best is None:
-        raise RuntimeError(f"cells {_codec.format_int(a)!r} and {_codec.format_int(b)!r} share no corner")
+        raise RuntimeError(f"cells {name_of(a)!r} and {name_of(b)!r} share no corner")
     return best
 
 
@@ -284,7 +286,4 @@ def geodesic_to_cells(lat1, lng1, lat2, lng2, level: int, as_int: bool = False, 
         keep[1:] = cells[1:] != cells[:-1]
         cells = cells[keep]
     check_size(int(cells.shape[0]), max_cells, "geodesic_to_cells")
-    if as_int:
-        return cells
-    codes, _ = _codec.format_u32(cells)
-    return codes.view(f"<U{max(codes.shape[1], 1)}").reshape(-1)
+    return ids_array(cells, as_int)

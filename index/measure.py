@@ -7,12 +7,12 @@ import math
 import numpy as np
 
 from dggs.errors import DggsValueError
+from dggs.geometry.authalic import WGS84
 
-from . import _geo
-from . import _khier
-from ._bits import MAX_LEVEL
-from ._convert_in import cells_in
-from .cellid import check_level
+from ._checks import check_level, is_level_input
+from ._convert import VALUE, Op, apply
+from ._kernel import hierarchy as kh
+from ._kernel.bits import MAX_LEVEL
 
 __all__ = ["cell_area", "level_table"]
 
@@ -21,6 +21,18 @@ _UNITS = {"m^2": 1.0, "km^2": 1e-6}
 
 def _num_cells(level):
     return np.where(level == 0, 20.0, 120.0 * 3.0 ** (np.asarray(level, dtype=float) - 1))
+
+
+def _areas_of_levels(level: np.ndarray, unit: str) -> np.ndarray:
+    total = 4 * math.pi if unit == "rads^2" else WGS84.area * _UNITS[unit]
+    return total / _num_cells(level)
+
+
+def _areas(ids: np.ndarray, unit: str) -> np.ndarray:
+    return _areas_of_levels(kh.levels(ids).astype(np.int64), unit)
+
+
+_AREA = Op(many=_areas, out=VALUE)
 
 
 def cell_area(cell_or_level, unit: str = "m^2"):
@@ -46,35 +58,14 @@ def cell_area(cell_or_level, unit: str = "m^2"):
     """
     if unit not in (*_UNITS, "rads^2"):
         raise DggsValueError(f"unit {unit!r} is not one of m^2, km^2, rads^2")
-    if _is_level(cell_or_level):
+    if is_level_input(cell_or_level):
         scalar = np.ndim(cell_or_level) == 0
         level = np.array([check_level(v) for v in np.atleast_1d(np.asarray(cell_or_level, dtype=object)).ravel()])
         shape = np.shape(cell_or_level)
-    else:
-        ids, kind = cells_in(cell_or_level)
-        scalar, shape = kind.scalar, kind.shape
-        level = _khier.levels(ids).astype(np.int64)
-    total = 4 * math.pi if unit == "rads^2" else _geo.ELLIPSOID.area * _UNITS[unit]
-    area = total / _num_cells(level)
-    return float(area[0]) if scalar else area.reshape(shape)
+        area = _areas_of_levels(level, unit)
+        return float(area[0]) if scalar else area.reshape(shape)
+    return apply(_AREA, cell_or_level, unit)
 
-
-def _is_level(value) -> bool:
-    """Small integers are levels; strings, ids (>= 2**62) and containers of them are cells."""
-    if isinstance(value, (bool, np.bool_)):
-        return True  # check_level refuses it with a LevelError
-    if isinstance(value, (int, np.integer)):
-        return int(value) < 2**62
-    if isinstance(value, np.ndarray) and value.dtype.kind in "iu":
-        return bool(value.size) and int(value.max()) < 2**62
-    if isinstance(value, (list, tuple)) and len(value):
-        try:
-            items = np.asarray(value, dtype=object).ravel()
-        except ValueError:  # ragged: judged (and refused) as cells
-            return False
-        if items.size and all(isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in items):
-            return int(max(items)) < 2**62
-    return False
 
 
 def level_table(max_level: int = MAX_LEVEL) -> list[dict]:

@@ -1,28 +1,27 @@
 """Points and cells: point-to-cell, centres, boundaries, polygons, GeoJSON.
 
-Every function runs the compiled kernel (:mod:`dggs.index._kpoints`) over
+Every function runs the compiled kernel (:mod:`dggs.index._kernel.points`) over
 64-bit ids; ids come in and go out through :mod:`dggs.index._convert`, so a
 str gives a str, an int an int, and any array or column the same kind back.
 """
 
 from __future__ import annotations
 
-from typing import Any
 from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon, mapping
 
-from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry._parallel import parallel
+from dggs.errors import DggsValueError
 
-from . import _codec, _kpoints
-from ._bits import MAX_LEVEL
-from ._convert_in import cells_in, scalar_id
-from ._coords import as_coordinates, as_float_scalar, check_densify, check_points, ids_out, raise_bad_point
-from ._polygons import default_densify, rings_to_geometries
-from .cellid import check_level
+from ._checks import check_densify, check_level
+from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
+from ._convert import CELL as _CELL
+from ._kernel import hierarchy as kh
+from ._kernel import points as kp
+from ._shapes import boundaries, default_densify, geometries
 
 __all__ = [
     "latlng_to_cell",
@@ -33,7 +32,24 @@ __all__ = [
     "default_densify",
 ]
 
-_SCALARS = (float, int)
+
+def _locate(lat: np.ndarray, lng: np.ndarray, level: int) -> np.ndarray:
+    ids = np.empty(lat.shape[0], dtype=np.uint64)
+    kp.locate(ids.shape[0], lat, lng, level, ids)
+    check_points(lat, lng, ids)  # raises naming the first point off the globe
+    return ids
+
+
+def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
+    kp.centres(ids.shape[0], ids, lat, lng)
+    return lat, lng
+
+
+_LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point)
+_CENTRE = Op(many=_centres, out=VALUE, one=kp.centre_of)
+_BOUNDARY = Op(many=boundaries, out=VALUE)
+_POLYGON = Op(many=geometries, out=VALUE)
 
 
 def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
@@ -41,20 +57,20 @@ def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
 
     Parameters
     ----------
-    lat, lng : float or array_like
+    lat, lng : float, list, numpy array, pandas Series or pyarrow array
         Latitude and longitude in degrees (WGS84).  Longitudes wrap (reduced
-        exactly modulo 360).  Arrays of any shape broadcast together; a
-        pandas Series gives a Series with its index.
+        exactly modulo 360).  Shapes broadcast together.
     level : int
         Subdivision level, 0..MAX_LEVEL.
     as_int : bool
-        Return 64-bit integer ids (a Python int for one point, a uint64
-        array otherwise) instead of strings.
+        Return 64-bit integer ids (uint64 in arrays) instead of strings.
 
     Returns
     -------
-    str, int or ndarray
-        One id for a scalar point; an array shaped like the input otherwise.
+    str, int, list, numpy.ndarray, pandas.Series or pyarrow.Array
+        One id for a scalar point; otherwise the container of the first
+        coordinate that is one, shaped like the broadcast input (a Series
+        keeps its index).
 
     Raises
     ------
@@ -76,36 +92,10 @@ def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
     'F200021102'
     >>> latlng_to_cell(51.05, -114.07, 9, as_int=True)
     5392473139689029632
-    >>> latlng_to_cell([0.0, 90.0], [0.0, 0.0], 2).tolist()
+    >>> latlng_to_cell([0.0, 90.0], [0.0, 0.0], 2)
     ['C32', 'A50']
     """
-    if type(lat) in _SCALARS and type(lng) in _SCALARS and type(level) is int and 0 <= level <= MAX_LEVEL:
-        try:
-            a, b = float(lat), float(lng)
-        except OverflowError:
-            raise CoordinateError(f"coordinates ({lat!r}, {lng!r}) are too large to be numbers of degrees") from None
-        found = int(_kpoints.one_point(a, b, level))  # the single-point path: no numpy
-        if found:
-            return found if as_int else _codec.format_int(found)
-    level = check_level(level)
-    try:
-        scalar = np.ndim(lat) == 0 and np.ndim(lng) == 0
-    except ValueError:  # a ragged nested list
-        raise CoordinateError("coordinates must be numbers or equal-length arrays of numbers, not ragged lists") from None
-    if scalar:
-        a, b = as_float_scalar(lat, "latitude"), as_float_scalar(lng, "longitude")
-        cell = int(_kpoints.one_point(a, b, level))
-        if cell == 0:
-            raise_bad_point(np.array([a]), np.array([b]), 0)
-        return cell if as_int else _codec.format_int(cell)
-    lat_a, lng_a, shape, index = as_coordinates(lat, lng)
-    ids = np.empty(lat_a.shape[0], dtype=np.uint64)
-    if parallel(ids.shape[0]):
-        _kpoints.points_parallel(lat_a, lng_a, level, ids)
-    else:
-        _kpoints.points_serial(lat_a, lng_a, level, ids)
-    check_points(lat_a, lng_a, ids)
-    return ids_out(ids, shape, index, as_int)
+    return apply_points(_LOCATE, lat, lng, check_level(level), form="int" if as_int else "str")
 
 
 def cell_to_latlng(cell):
@@ -130,30 +120,7 @@ def cell_to_latlng(cell):
     >>> round(lat, 6), round(lng, 6)
     (20.990853, 11.25)
     """
-    one = scalar_id(cell)
-    if one:
-        lat, lng = _kpoints.centre_of(one)
-        if lat == lat:  # not NaN: a valid id
-            return lat, lng
-    ids, kind = cells_in(cell)
-    if kind.scalar:
-        return _kpoints.one_centre(ids[0])
-    lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
-    if parallel(ids.shape[0]):
-        _kpoints.centres_parallel(ids, lat, lng)
-    else:
-        _kpoints.centres_serial(ids, lat, lng)
-    return lat.reshape(kind.shape), lng.reshape(kind.shape)
-
-
-def _boundaries(ids: np.ndarray, densify: int, lnglat: bool = False) -> np.ndarray:
-    """(N, 3 (densify + 1), 2) (lat, lng) points, or closed (lng, lat) rings one point longer."""
-    out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
-    if parallel(ids.shape[0] * (densify + 1)):
-        _kpoints.boundaries_parallel(ids, densify, out, lnglat)
-    else:
-        _kpoints.boundaries_serial(ids, densify, out, lnglat)
-    return out
+    return apply(_CENTRE, cell)
 
 
 def cell_to_boundary(cell, densify: int = 0):
@@ -177,12 +144,7 @@ def cell_to_boundary(cell, densify: int = 0):
     >>> len(cell_to_boundary("C401")), len(cell_to_boundary("C401", densify=2))
     (3, 9)
     """
-    densify = check_densify(densify)
-    ids, kind = cells_in(cell)
-    out = _boundaries(ids, densify)
-    if kind.scalar:
-        return tuple((float(a), float(b)) for a, b in out[0])
-    return out.reshape(kind.shape + out.shape[1:])
+    return apply(_BOUNDARY, cell, check_densify(densify))
 
 
 def cell_to_polygon(cell, densify: int | None = None):
@@ -208,23 +170,7 @@ def cell_to_polygon(cell, densify: int | None = None):
     >>> poly.geom_type, poly.is_valid
     ('Polygon', True)
     """
-    if densify is not None:
-        densify = check_densify(densify)
-    ids, kind = cells_in(cell)
-    out = np.empty(ids.shape[0], dtype=object)
-    if densify is None:
-        from . import _khier
-
-        lv = _khier.levels(ids)
-        groups: dict[int, list[np.ndarray]] = {}
-        for level in np.unique(lv):
-            groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
-        for n, parts in groups.items():
-            sel = np.concatenate(parts)
-            out[sel] = rings_to_geometries(_boundaries(ids[sel], n, lnglat=True), ids[sel], n)
-    else:
-        out[:] = rings_to_geometries(_boundaries(ids, densify, lnglat=True), ids, densify)
-    return out[0] if kind.scalar else out.reshape(kind.shape)
+    return apply(_POLYGON, cell, None if densify is None else check_densify(densify))
 
 
 def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) -> dict:
@@ -253,8 +199,7 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     ('FeatureCollection', 2, {'cell': 'C402', 'level': 3, 'n': 2})
     """
     ids, kind = cells_in(cells)
-    ids = ids.reshape(-1)
-    polys = cell_to_polygon(ids, densify).reshape(-1) if ids.size else []
+    polys = geometries(ids, None if densify is None else check_densify(densify))
     n = ids.shape[0]
     rows: Iterable[dict]
     if properties is None:
@@ -278,13 +223,11 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
         if odd is not None:
             raise DggsValueError(f"properties rows must be dicts, not {odd!r}")
         rows = ({k: _plain(v) for k, v in dict(r).items()} for r in listed)
-    from . import _khier
-
-    lv = _khier.levels(ids)
+    lv = kh.levels(ids)
     as_str = kind.form == "str"
     features = []
     for cid, level, poly, props in zip(ids.tolist(), lv.tolist(), polys, rows):
-        key = _codec.format_int(cid) if as_str else cid
+        key = format_int(cid) if as_str else cid
         features.append(
             {
                 "type": "Feature",

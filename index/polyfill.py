@@ -10,11 +10,12 @@ from shapely.geometry import MultiPolygon, Polygon, box
 
 from dggs.errors import DggsValueError
 
-from . import _codec, _khier, _kpoints
-from .cellid import check_level
-from .hierarchy import check_size, get_base_cells
-from ._polygons import default_densify, rings_to_geometries
-from .points import _boundaries
+from ._checks import check_level, check_size
+from ._convert import ids_array
+from ._kernel import hierarchy as kh
+from ._kernel import points as kp
+from ._shapes import boundaries, default_densify, rings_to_geometries
+from .hierarchy import get_base_cells
 
 __all__ = ["polygon_to_cells", "FILL_MODES"]
 
@@ -102,8 +103,8 @@ def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.
     if level < _COARSE:
         return np.ones(n, dtype=bool), np.zeros(n, dtype=bool)
     lat, lng = np.empty(n), np.empty(n)
-    _kpoints.centres_serial(cells, lat, lng)
-    corners = _boundaries(cells, 0)  # (N, 3, 2) lat, lng
+    kp.centres(cells.shape[0], cells, lat, lng)
+    corners = boundaries(cells, 0)  # (N, 3, 2) lat, lng
     dlat = corners[..., 0] - lat[:, None]
     dlng = (corners[..., 1] - lng[:, None] + 180.0) % 360.0 - 180.0
     radius = _BULGE * np.sqrt((dlat * dlat + dlng * dlng).max(axis=1))
@@ -163,15 +164,15 @@ def _buffers(target, rclass: int, buffers: dict, plane=None):
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
-    total, _ = _khier.count_children(ids, level)
+    total, _ = kh.count_children(ids, level)
     out = np.empty(total, dtype=np.uint64)
-    _khier.children(ids, level, out)
+    kh.children(ids, level, out)
     return out
 
 
 def _centres_inside(target, ids: np.ndarray) -> np.ndarray:
     lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
-    _kpoints.centres_serial(ids, lat, lng)
+    kp.centres(ids.shape[0], ids, lat, lng)
     return shapely.contains_xy(target, lng, lat)
 
 
@@ -247,16 +248,13 @@ def polygon_to_cells(
     if not isinstance(polygon, (Polygon, MultiPolygon)):
         raise DggsValueError(f"polygon must be a shapely Polygon or MultiPolygon, not {type(polygon).__name__}")
     found = _fill(polygon, level, max_cells, mode=mode) if not polygon.is_empty else np.zeros(0, dtype=np.uint64)
-    if as_int:
-        return found
-    codes, _ = _codec.format_u32(found)
-    return codes.view(f"<U{max(codes.shape[1], 1)}").reshape(-1)
+    return ids_array(found, as_int)
 
 
 def _cell_geometries(ids: np.ndarray, level: int) -> np.ndarray:
     """The cells' polygons as :func:`dggs.cell_to_polygon` draws them (default densification)."""
     n = default_densify(level)
-    return rings_to_geometries(_boundaries(ids, n, lnglat=True), ids, n)
+    return rings_to_geometries(boundaries(ids, n, lnglat=True), ids, n)
 
 
 def _edge_test(target, ids: np.ndarray, level: int, mode: str) -> np.ndarray:
@@ -309,7 +307,7 @@ def _fill(
             break
         if mode == "center" and (current >= level - _DIRECT and current >= _COARSE or current == level):
             # the last levels: every descendant's centre is tested, no classification
-            count, _ = _khier.count_children(candidates, level)
+            count, _ = kh.count_children(candidates, level)
             check_size(total + count, max_cells, "polygon_to_cells")
             finest = _children(candidates, level)
             if work is not None:
@@ -321,14 +319,14 @@ def _fill(
             work["classified"] += int(candidates.shape[0])
         if inside.any():
             whole = candidates[inside]
-            count, _ = _khier.count_children(whole, level)
+            count, _ = kh.count_children(whole, level)
             total += count
             check_size(total, max_cells, "polygon_to_cells")
             accepted.append(_children(whole, level))
         rest = candidates[hit & ~inside]
         if rest.size == 0:
             break
-        count, _ = _khier.count_children(rest, current + 1)
+        count, _ = kh.count_children(rest, current + 1)
         check_size(total + count, max_cells, "polygon_to_cells")
         candidates = _children(rest, current + 1)
     if not accepted:

@@ -23,16 +23,16 @@ whatever the form of the cell ids.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from dggs.errors import DggsValueError
 
-from . import _codec, _kgrid
-from ._convert_in import cells_in
-from ._convert_out import cells_out
-from .grid import _check_radius
-from .hierarchy import check_max_cells, check_size
-from .points import _boundaries
+from ._checks import check_max_cells, check_radius, check_size
+from ._convert import ROWS, VALUES, Op, apply, format_int
+from ._corners import MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
+from ._shapes import boundaries
 
 __all__ = [
     "cell_to_vertexes",
@@ -43,83 +43,51 @@ __all__ = [
     "is_valid_vertex",
 ]
 
-#: Most cells around one corner (a 30-degree corner away from icosahedron vertices).
-_MAX_FAN = 12
-#: Most cells that share a corner with one cell (12 + 6 + 4 around its corners, minus itself
-#: three times, minus the 3 edge neighbours counted twice).
-_MAX_NEIGHBOURS = 16
+
+def _vertex_names(ids: np.ndarray) -> np.ndarray:
+    owner, index = vertex_keys(ids)
+    names = [format_vertex(int(o), int(i)) for o, i in zip(owner.reshape(-1), index.reshape(-1))]
+    return np.array(names, dtype=str).reshape(ids.shape[0], 3)
 
 
-def _corners_xyz(ids: np.ndarray) -> np.ndarray:
-    """(N, 3 corners, 3) unit vectors of the cells' corners."""
-    b = np.radians(_boundaries(ids, 0))
-    lat, lng = b[..., 0], b[..., 1]
-    return np.stack([np.cos(lat) * np.cos(lng), np.cos(lat) * np.sin(lng), np.sin(lat)], axis=-1)
-
-
-def _neighbours(ids: np.ndarray) -> np.ndarray:
-    out = np.empty((ids.shape[0], 3), dtype=np.uint64)
-    _kgrid.neighbours(np.ascontiguousarray(ids), out)
+def _vertex_neighbours(ids: np.ndarray) -> np.ndarray:
+    fan, _ = all_fans(ids)
+    out = np.zeros((ids.shape[0], MAX_NEIGHBOURS), dtype=np.uint64)
+    for i in range(ids.shape[0]):
+        row = np.unique(fan[i])
+        row = row[(row != 0) & (row != ids[i])]
+        out[i, : row.size] = row
     return out
 
 
-def _fans(ids: np.ndarray, corner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The cells around corner ``corner[i]`` of cell ``ids[i]``, in walking order from it.
-
-    Returns ``(fan, size)``: ``fan`` of shape (N, :data:`_MAX_FAN`) padded with 0,
-    ``size`` the number of cells around each corner.
-    """
-    n = ids.shape[0]
-    fan = np.zeros((n, _MAX_FAN), dtype=np.uint64)
-    size = np.ones(n, dtype=np.int64)
-    if n == 0:
-        return fan, size
-    fan[:, 0] = ids
-    v = _corners_xyz(ids)[np.arange(n), corner]
-    cur = ids.copy()
-    edge = corner.astype(np.int64)  # edge i runs from corner i to corner i + 1
-    active = np.arange(n)
-    for step in range(1, _MAX_FAN + 1):
-        nxt = _neighbours(cur[active])[np.arange(active.size), edge[active]]
-        back = nxt == ids[active]
-        active, nxt = active[~back], nxt[~back]
-        if active.size == 0:
-            return fan, size
-        if step == _MAX_FAN:
+def _disk_vertex(start: int, k: int, max_cells: int) -> np.ndarray:
+    seen = np.array([start], dtype=np.uint64)
+    frontier = seen
+    for _ in range(k):
+        fan, _ = all_fans(frontier)
+        new = np.setdiff1d(np.unique(fan), seen, assume_unique=False)
+        new = new[new != 0]
+        if new.size == 0:
             break
-        fan[active, step] = nxt
-        size[active] += 1
-        c = _corners_xyz(nxt)
-        m = np.argmin(((c - v[active, None, :]) ** 2).sum(axis=-1), axis=1)
-        nb = _neighbours(nxt)
-        rows = np.arange(active.size)
-        came_by_m = nb[rows, m] == cur[active]
-        edge[active] = np.where(came_by_m, (m + 2) % 3, m)
-        cur[active] = nxt
-    raise RuntimeError(f"walk around a corner of cell {_codec.format_int(int(ids[active[0]]))!r} did not close")
+        check_size(seen.size + new.size, max_cells, f"grid_disk_vertex with k={k}")
+        seen = np.union1d(seen, new)
+        frontier = new
+    return seen
 
 
-def _all_fans(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Fans of the 3 corners of each cell: shapes (N, 3, :data:`_MAX_FAN`) and (N, 3)."""
-    n = ids.shape[0]
-    fan, size = _fans(np.repeat(ids, 3), np.tile(np.arange(3), n))
-    return fan.reshape(n, 3, _MAX_FAN), size.reshape(n, 3)
+def _disks_vertex(ids: np.ndarray, k: int, max_cells: int) -> np.ndarray:
+    disks = [_disk_vertex(int(c), k, max_cells) for c in ids]
+    width = max((d.size for d in disks), default=1)
+    check_size(len(disks) * width, max_cells, f"grid_disk_vertex with k={k}")
+    out = np.zeros((ids.shape[0], width), dtype=np.uint64)
+    for i, d in enumerate(disks):
+        out[i, : d.size] = d
+    return out
 
 
-def _vertex_keys(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(owner, index) of each corner of each cell: the smallest cell around it and its corner there."""
-    n = ids.shape[0]
-    fan, _ = _all_fans(ids)
-    flat = fan.reshape(n * 3, _MAX_FAN)
-    owner = np.where(flat == 0, np.uint64(np.iinfo(np.uint64).max), flat).min(axis=1)
-    v = _corners_xyz(ids).reshape(n * 3, 3)
-    c = _corners_xyz(owner)
-    index = np.argmin(((c - v[:, None, :]) ** 2).sum(axis=-1), axis=1)
-    return owner.reshape(n, 3), index.reshape(n, 3)
-
-
-def _format_vertex(owner: int, index: int) -> str:
-    return f"{_codec.format_int(owner)}:{index}"
+_VERTEXES = Op(many=_vertex_names, out=VALUES)
+_VERTEX_NEIGHBOURS = Op(many=_vertex_neighbours, out=ROWS)
+_DISK_VERTEX = Op(many=_disks_vertex, out=ROWS)
 
 
 def cell_to_vertexes(cell):
@@ -153,30 +121,7 @@ def cell_to_vertexes(cell):
     >>> sorted(set(cell_to_vertexes("C401")) & set(cell_to_vertexes("C402")))
     ['C400:1', 'C401:1']
     """
-    ids, kind = cells_in(cell)
-    owner, index = _vertex_keys(ids)
-    names = [_format_vertex(int(o), int(i)) for o, i in zip(owner.reshape(-1), index.reshape(-1))]
-    if kind.scalar:
-        return names
-    return np.array(names, dtype=str).reshape(tuple(kind.shape) + (3,))
-
-
-def _parse_vertex(vertex) -> tuple[int, int]:
-    """(owner cell id, corner index) of a vertex id, or :class:`DggsValueError` naming it."""
-    if isinstance(vertex, str) and vertex.count(":") == 1:
-        cell, _, idx = vertex.partition(":")
-        owner = _codec.parse_str(cell)
-        if owner and idx in ("0", "1", "2"):
-            return owner, int(idx)
-    raise DggsValueError(f"{vertex!r} is not a vertex id (expected '<cell>:<0-2>', e.g. 'C401:1')")
-
-
-def _check_canonical(vertex, owner: int, index: int) -> None:
-    o, i = _vertex_keys(np.array([owner], dtype=np.uint64))
-    if int(o[0, index]) != owner or int(i[0, index]) != index:
-        raise DggsValueError(
-            f"{vertex!r} is not a vertex id: that corner is named {_format_vertex(int(o[0, index]), int(i[0, index]))!r}"
-        )
+    return apply(_VERTEXES, cell)
 
 
 def is_valid_vertex(vertex) -> bool:
@@ -188,7 +133,7 @@ def is_valid_vertex(vertex) -> bool:
     (True, False, False)
     """
     try:
-        _check_canonical(vertex, *_parse_vertex(vertex))
+        check_canonical(vertex, *parse_vertex(vertex))
     except DggsValueError:
         return False
     return True
@@ -208,9 +153,9 @@ def vertex_to_latlng(vertex) -> tuple[float, float]:
     >>> round(lat, 6), round(lng, 6)
     (20.91287, -1.220765)
     """
-    owner, index = _parse_vertex(vertex)
-    _check_canonical(vertex, owner, index)
-    lat, lng = _boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
+    owner, index = parse_vertex(vertex)
+    check_canonical(vertex, owner, index)
+    lat, lng = boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
     return float(lat), float(lng)
 
 
@@ -227,10 +172,10 @@ def vertex_to_cells(vertex) -> list[str]:
     >>> vertex_to_cells("C401:1")
     ['C401', 'C402', 'C411', 'C412']
     """
-    owner, index = _parse_vertex(vertex)
-    _check_canonical(vertex, owner, index)
-    fan, size = _fans(np.array([owner], dtype=np.uint64), np.array([index]))
-    return sorted(_codec.format_int(int(c)) or "" for c in fan[0, : size[0]])
+    owner, index = parse_vertex(vertex)
+    check_canonical(vertex, owner, index)
+    fan, size = fans(np.array([owner], dtype=np.uint64), np.array([index]))
+    return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
 
 
 def vertex_neighbors(cell):
@@ -254,32 +199,7 @@ def vertex_neighbors(cell):
     >>> len(vertex_neighbors("C40120")), set(dggs.edge_neighbors("C40120")) <= set(vertex_neighbors("C40120"))
     (16, True)
     """
-    ids, kind = cells_in(cell)
-    fan, _ = _all_fans(ids)
-    out = np.zeros((ids.shape[0], _MAX_NEIGHBOURS), dtype=np.uint64)
-    for i in range(ids.shape[0]):
-        row = np.unique(fan[i])
-        row = row[(row != 0) & (row != ids[i])]
-        out[i, : row.size] = row
-    if kind.scalar:
-        row = out[0][out[0] != 0]
-        return [_codec.format_int(int(c)) for c in row] if kind.form == "str" else [int(c) for c in row]
-    return cells_out(out, kind, (_MAX_NEIGHBOURS,))
-
-
-def _disk_vertex(start: int, k: int, max_cells: int | None) -> np.ndarray:
-    seen = np.array([start], dtype=np.uint64)
-    frontier = seen
-    for _ in range(k):
-        fan, _ = _all_fans(frontier)
-        new = np.setdiff1d(np.unique(fan), seen, assume_unique=False)
-        new = new[new != 0]
-        if new.size == 0:
-            break
-        check_size(seen.size + new.size, max_cells, f"grid_disk_vertex with k={k}")
-        seen = np.union1d(seen, new)
-        frontier = new
-    return seen
+    return apply(_VERTEX_NEIGHBOURS, cell)
 
 
 def grid_disk_vertex(cell, k: int = 1, max_cells: int | None = None):
@@ -318,16 +238,4 @@ def grid_disk_vertex(cell, k: int = 1, max_cells: int | None = None):
     >>> len(grid_disk_vertex("C40120", 2))
     52
     """
-    k = _check_radius(k, "grid_disk_vertex")
-    check_max_cells(max_cells)
-    ids, kind = cells_in(cell)
-    disks = [_disk_vertex(int(c), k, max_cells) for c in ids]
-    width = max((d.size for d in disks), default=1)
-    check_size(len(disks) * width, max_cells, f"grid_disk_vertex with k={k}")
-    out = np.zeros((ids.shape[0], width), dtype=np.uint64)
-    for i, d in enumerate(disks):
-        out[i, : d.size] = d
-    if kind.scalar:
-        row = out[0][out[0] != 0]
-        return [_codec.format_int(int(c)) for c in row] if kind.form == "str" else [int(c) for c in row]
-    return cells_out(out, kind, (width,))
+    return apply(_DISK_VERTEX, cell, check_radius(k, "grid_disk_vertex"), check_max_cells(max_cells))

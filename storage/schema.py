@@ -303,7 +303,7 @@ def check_meta(conn: sqlite3.Connection, path: str | Path) -> None:
     StorageError
         Naming the file and the bad value, if ``meta`` was tampered with.
     """
-    from dggs.index.cellid import MAX_LEVEL
+    from dggs.index.ids import MAX_LEVEL
 
     row = conn.execute("SELECT value FROM meta WHERE key = 'level'").fetchone()
     if row is not None:

@@ -29,7 +29,7 @@ from shapely.geometry import Polygon, box
 
 import dggs
 from dggs.cli import main
-from dggs.index.cellid import check_level
+from dggs.index.ids import check_level
 
 from .strategies import cells, special_points
 

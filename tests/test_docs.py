@@ -20,7 +20,7 @@ MODULES = [
     "dggs.geometry.icosahedron",
     "dggs.geometry.snyder",
     "dggs.geometry.split26",
-    "dggs.index.cellid",
+    "dggs.index.ids",
     "dggs.index.points",
     "dggs.index.hierarchy",
     "dggs.index.grid",

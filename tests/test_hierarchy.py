@@ -19,7 +19,7 @@ def all_cells(level):
 
 
 def kernel_corners(cells) -> np.ndarray:
-    from dggs.index import _kpoints
+    from dggs.index._kernel import points as _kpoints
 
     rows = [_kpoints.corners(np.uint64(dggs.str_to_int(c)))[1:] for c in cells]
     return np.array(rows).reshape(-1, 3, 2)

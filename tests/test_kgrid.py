@@ -1,4 +1,4 @@
-"""Compiled grid-graph kernels (``dggs.index._kgrid``) against independent oracles.
+"""Compiled grid-graph kernels (``dggs.index._kernel.grid``) against independent oracles.
 
 * the neighbours frozen from the string-id code before the 64-bit rewrite
   (tests/reference/fixtures/neighbours_v1.json);
@@ -18,8 +18,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from dggs.index import _kgrid as K
-from dggs.index._kgrid_tables import chart_distance
+from dggs.index._kernel import grid as K
+from dggs.index._kernel.grid_tables import chart_distance
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -224,14 +224,14 @@ def disk_rows(cells: np.ndarray, k: int, width: int | None = None):
     width = K.disk_size_bound(k) if width is None else width
     out = np.full((len(cells), width), 99, dtype=np.uint64)
     counts = np.zeros(len(cells), dtype=np.int64)
-    K.disk(np.asarray(cells, dtype=np.uint64), k, out, counts)
+    K.disk.threaded(np.asarray(cells, dtype=np.uint64), k, out, counts)
     return out, counts
 
 
 def ring_rows(cells: np.ndarray, k: int):
     out = np.full((len(cells), K.ring_size_bound(k)), 99, dtype=np.uint64)
     counts = np.zeros(len(cells), dtype=np.int64)
-    K.ring(np.asarray(cells, dtype=np.uint64), k, out, counts)
+    K.ring.threaded(np.asarray(cells, dtype=np.uint64), k, out, counts)
     return out, counts
 
 
@@ -334,7 +334,7 @@ def test_distance_equals_bfs_within_8():
     assert got == d.tolist()
     assert [K.distance(y, x, 100) for x, y in zip(a, b)] == d.tolist()  # symmetric
     out = np.zeros(len(a), dtype=np.int64)
-    K.distances(a, b, 100, out)
+    K.distances.threaded(a, b, 100, out)
     assert out.tolist() == d.tolist()
 
 

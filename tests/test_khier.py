@@ -1,4 +1,4 @@
-"""Compiled hierarchy kernels (``dggs.index._khier``) against a pure-Python string oracle.
+"""Compiled hierarchy kernels (``dggs.index._kernel.hierarchy``) against a pure-Python string oracle.
 
 The oracle and the str <-> int conversion are written here from the layout in
 docs/grid.md ("Integer ids"), independently of the code under test: bit 62
@@ -12,7 +12,7 @@ from collections import defaultdict
 
 import numpy as np
 import pytest
-from dggs.index import _khier as K
+from dggs.index._kernel import hierarchy as K
 from hypothesis import given
 from hypothesis import strategies as st
 

@@ -108,14 +108,6 @@ def digit_of(cell: np.uint64, level: int) -> int:
     return int((cell >> np.uint64(2 * (MAX_LEVEL - level))) & np.uint64(3)) - 1
 
 
-@njit(cache=True, nogil=True, inline="always")
-def with_digit(cell: np.uint64, level: int, digit: int) -> np.uint64:
-    """``cell`` with its level-``level`` digit (>= 1) set to ``digit`` (field assumed empty or replaced)."""
-    if level == 1:
-        return (cell & ~(np.uint64(7) << np.uint64(L1_SHIFT))) | (np.uint64(digit + 1) << np.uint64(L1_SHIFT))
-    s = np.uint64(2 * (MAX_LEVEL - level))
-    return (cell & ~(np.uint64(3) << s)) | (np.uint64(digit + 1) << s)
-
 
 @njit(cache=True, nogil=True, inline="always")
 def base_cell(face: int) -> np.uint64:
@@ -132,20 +124,3 @@ def parent_at(cell: np.uint64, level: int) -> np.uint64:
 def range_end(cell: np.uint64, level: int) -> np.uint64:
     """One past the last descendant of ``cell`` (at ``level``)."""
     return cell + (_U1 << shift_of(level))
-
-
-@njit(cache=True, nogil=True, inline="always")
-def first_child(cell: np.uint64, level: int) -> np.uint64:
-    """The descendant at ``level + 1`` with digit 0."""
-    return cell | (_U1 << shift_of(level + 1))
-
-
-@njit(cache=True, nogil=True, inline="always")
-def mirror_flips(cell: np.uint64) -> int:
-    """How many digits after level 1 are 0 or 2 (their codes 1 and 3 have the low bit set)."""
-    x = cell & DIGIT_LOW_BITS
-    n = 0
-    while x:
-        x &= x - _U1
-        n += 1
-    return n

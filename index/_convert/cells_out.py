@@ -1,4 +1,4 @@
-"""Cell ids out: the container :func:`dggs.index._convert_in.cells_in` saw, rebuilt around new ids.
+"""Cell ids out: the container :func:`.cells_in.cells_in` saw, rebuilt around new ids.
 
 :func:`cells_out` for results aligned with the input (optionally with
 trailing dimensions per element), :func:`cells_out_flat` for results that are
@@ -14,10 +14,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _codec
-from ._convert_kind import _I64, _OBJECT, _U64, Kind, _fail
+from . import strings
+from .kind import I64, OBJECT, U64, Kind, fail
 
-__all__ = ["cells_out", "cells_out_flat"]
+__all__ = ["cells_out", "cells_out_flat", "ids_array"]
 
 
 # --------------------------------------------------------------------------
@@ -27,9 +27,9 @@ __all__ = ["cells_out", "cells_out_flat"]
 
 def _u_array(ids: np.ndarray) -> np.ndarray:
     """Ids as a flat ``U`` array (the null id 0 as "")."""
-    codes, bad = _codec.format_u32(ids)
+    codes, bad = strings.format_u32(ids)
     if bad >= 0:
-        _fail(int(ids.reshape(-1)[bad]), bad, "int")
+        fail(int(ids.reshape(-1)[bad]), bad, "int")
     return codes.view(f"U{codes.shape[1]}").reshape(-1)
 
 
@@ -62,11 +62,11 @@ def _pylist(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
 def _numpy(ids: np.ndarray, kind: Kind, shape: tuple[int, ...]) -> np.ndarray:
     dt = kind.dtype
     if kind.form == "int":
-        return np.ascontiguousarray(ids.view(np.int64) if dt == _I64 else ids).reshape(shape)
+        return np.ascontiguousarray(ids.view(np.int64) if dt == I64 else ids).reshape(shape)
     if dt is not None and dt.kind == "S":
-        codes, bad = _codec.format_u8(ids)
+        codes, bad = strings.format_u8(ids)
         if bad >= 0:
-            _fail(int(ids.reshape(-1)[bad]), bad, "int")
+            fail(int(ids.reshape(-1)[bad]), bad, "int")
         return codes.view(f"S{codes.shape[1]}").reshape(shape)
     u = _u_array(ids).reshape(shape)
     return u if dt is None or dt.kind == "U" else u.astype(dt)  # object or StringDType
@@ -76,9 +76,9 @@ def _arrow_values(ids: np.ndarray, kind: Kind, pa: Any) -> Any:
     """A flat pyarrow array of the kind's type (the null id 0 as a null)."""
     ids = np.ascontiguousarray(ids).reshape(-1)
     if kind.form == "str":
-        out, bad = _codec.arrow_strings(ids, pa, large=kind.dtype is not None and pa.types.is_large_string(kind.dtype))
+        out, bad = strings.arrow_strings(ids, pa, large=kind.dtype is not None and pa.types.is_large_string(kind.dtype))
         if bad >= 0:
-            _fail(int(ids[bad]), bad, "int")
+            fail(int(ids[bad]), bad, "int")
         return out
     nulls = ids == 0
     return pa.array(ids.view(np.int64) if kind.dtype == pa.int64() else ids, mask=nulls if nulls.any() else None)
@@ -103,7 +103,7 @@ def _pandas(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
     pd = sys.modules["pandas"]
     n, dt = kind.shape[0], kind.dtype
     if trailing:  # a Series of lists
-        vals, dt = np.empty(n, dtype=object), _OBJECT
+        vals, dt = np.empty(n, dtype=object), OBJECT
         vals[:] = _pylist(ids, replace(kind, shape=(n,)), trailing) if n else []
     elif kind.form == "str" and isinstance(dt, np.dtype):
         vals = _u_array(ids).astype(object)
@@ -112,8 +112,8 @@ def _pandas(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
         vals = _arrow_values(ids, replace(kind, dtype=None), pa).fill_null("") if pa else _u_array(ids).astype(object)
     else:
         base = np.dtype(getattr(dt, "numpy_dtype", dt))
-        vals = ids.view(np.int64) if base == _I64 else ids
-        dt = dt if base in (_I64, _U64) else _U64
+        vals = ids.view(np.int64) if base == I64 else ids
+        dt = dt if base in (I64, U64) else U64
     return pd.Series(vals, index=kind.index, name=kind.name, dtype=dt)
 
 
@@ -149,7 +149,7 @@ def cells_out(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> An
     """
     if kind.scalar and not trailing and ids.shape == (1,):  # the fast path
         v = int(ids[0])
-        return (_codec.format_int(v) or "") if kind.form == "str" else v
+        return (strings.format_int(v) or "") if kind.form == "str" else v
     ids = np.asarray(ids, dtype=np.uint64)
     trailing = tuple(trailing)
     if ids.shape != (prod(kind.shape), *trailing):
@@ -176,3 +176,12 @@ def cells_out_flat(ids: np.ndarray, kind: Kind) -> Any:
         ids = ids[ids != 0]
     container = "list" if kind.scalar else kind.container
     return cells_out(ids, replace(kind, container=container, scalar=False, shape=(ids.shape[0],), index=None))
+
+
+def ids_array(ids: np.ndarray, as_int: bool) -> np.ndarray:
+    """A numpy array of made ids (a polygon fill, cells along a line): uint64, or ``U`` strings.
+
+    For functions that make ids rather than take them, so no container came in.
+    """
+    ids = np.asarray(ids, dtype=np.uint64).reshape(-1)
+    return ids if as_int else _u_array(ids) if ids.size else np.zeros(0, dtype="<U1")

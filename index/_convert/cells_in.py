@@ -3,9 +3,9 @@
 :func:`cells_in` takes a ``str`` or ``int`` id, or a list, tuple, numpy array
 (``U``, ``S``, object, ``StringDType``, integer), pandas Series or pyarrow
 (Chunked)Array of them; :func:`is_valid_any` judges the same without
-raising; :func:`scalar_id` is the single-id fast path.  numpy and pyarrow
+raising.  numpy and pyarrow
 arrays are parsed from their buffers, Python strings in one pass over their
-NUL-joined text.  The containers are rebuilt by :mod:`dggs.index._convert_out`.
+NUL-joined text.  The containers are rebuilt by :mod:`.cells_out` and :mod:`.values`.
 """
 
 from __future__ import annotations
@@ -17,10 +17,12 @@ from typing import Any
 
 import numpy as np
 
-from . import _codec
-from ._convert_kind import _OBJECT, _SCALAR_INT, _SCALAR_STR, _U64, Kind, _fail, _scalar_id
+from .._kernel import codec
+from . import strings
+from .values import values_out
+from .kind import OBJECT, SCALAR_INT, SCALAR_STR, U64, Kind, fail, value_id
 
-__all__ = ["cells_in", "is_valid_any", "scalar_id"]
+__all__ = ["cells_in", "is_valid_any"]
 
 
 # --------------------------------------------------------------------------
@@ -40,11 +42,11 @@ class _Parsed:
     def check(self) -> tuple[np.ndarray, Kind]:
         if self.bad >= 0:
             k = self.kind
-            _fail(self.value_at(self.bad), None if k.scalar else self.bad, k.form, k.shape)
+            fail(self.value_at(self.bad), None if k.scalar else self.bad, k.form, k.shape)
         return self.ids, self.kind
 
     def mask(self) -> np.ndarray:
-        return _codec.valid_ints(self.ids) if self.kind.form == "int" else self.ids != 0
+        return codec.valid_ints(self.ids) if self.kind.form == "int" else self.ids != 0
 
 
 def _scan(items: Any, kind: Kind) -> _Parsed:
@@ -52,7 +54,7 @@ def _scan(items: Any, kind: Kind) -> _Parsed:
     ids = np.zeros(len(items), dtype=np.uint64)
     form, bad = None, -1
     for i, x in enumerate(items):
-        v, f = _scalar_id(x)
+        v, f = value_id(x)
         form = form or f
         if v and f == form:
             ids[i] = v
@@ -65,7 +67,7 @@ def _parse_strings(items: Any, kind: Kind) -> _Parsed | None:
     """Python str (or bytes) elements in one pass; None if one is of another type."""
     if len(items) and isinstance(items[0], bytes) and not all(isinstance(x, bytes) for x in items):
         return None  # b"".join would take any buffer (a numpy integer's raw bytes): judge one by one
-    parsed = _codec.parse_pystrings(items)
+    parsed = strings.parse_pystrings(items)
     return None if parsed is None else _Parsed(parsed[0], kind, parsed[1], items.__getitem__)
 
 
@@ -73,11 +75,11 @@ def _parse_numpy(arr: np.ndarray, kind: Kind) -> _Parsed:
     flat = arr.reshape(-1)
     k = arr.dtype.kind
     if k in "US":
-        ids, bad = _codec.parse_chars(flat)
+        ids, bad = strings.parse_chars(flat)
         return _Parsed(ids, replace(kind, form="str"), bad, flat.__getitem__)
     if k in "iu":
         ids = np.ascontiguousarray(flat, dtype=np.int64 if k == "i" else np.uint64).view(np.uint64)
-        return _Parsed(ids, replace(kind, form="int"), int(_codec.check_ints(ids)), flat.__getitem__)
+        return _Parsed(ids, replace(kind, form="int"), int(codec.check_ints(ids)), flat.__getitem__)
     items = flat.tolist()  # object, StringDType, floats, bools, ...: Python values
     kind = replace(kind, form="str")
     return (_parse_strings(items, kind) if k in "OT" else None) or _scan(items, kind)
@@ -115,7 +117,7 @@ def _parse_arrow(arr: Any, pa: Any) -> _Parsed:
         t = chunk.type
         if form == "int":
             vals = chunk.fill_null(0).to_numpy() if chunk.null_count else chunk.to_numpy(zero_copy_only=True)
-            p = _parse_numpy(vals, _SCALAR_INT)
+            p = _parse_numpy(vals, SCALAR_INT)
             ids, b = p.ids, p.bad
         else:
             if pa.types.is_dictionary(t):
@@ -125,7 +127,7 @@ def _parse_arrow(arr: Any, pa: Any) -> _Parsed:
                     chunk = chunk.cast(pa.large_string())
                 except (pa.ArrowException, ValueError, TypeError, NotImplementedError):
                     chunk = pa.nulls(len(chunk), pa.string())
-            ids, b = _codec.parse_arrow_array(chunk, pa)
+            ids, b = strings.parse_arrow_array(chunk, pa)
         if b >= 0 and bad < 0:
             bad = start + b
         parts.append(ids)
@@ -149,7 +151,7 @@ def _parse_pandas(s: Any, pd: Any) -> _Parsed:
         p = _parse_numpy(s.to_numpy(dtype=object), kind)
     if not isinstance(dt, np.dtype):  # keep pandas string / integer dtypes only (not categories, ...)
         keep = (isinstance(dt, pd.StringDtype) or dt.kind == "U") if p.kind.form == "str" else dt.kind in "iu"
-        p.kind = replace(p.kind, dtype=dt if keep else _OBJECT if p.kind.form == "str" else _U64)
+        p.kind = replace(p.kind, dtype=dt if keep else OBJECT if p.kind.form == "str" else U64)
     p.value_at = lambda i: s.iloc[i]
     return p
 
@@ -161,8 +163,8 @@ def _parse_any(obj: Any) -> _Parsed:
     if isinstance(obj, (list, tuple)):
         return _parse_sequence(obj, "tuple" if isinstance(obj, tuple) else "list")
     if isinstance(obj, (str, bytes, bytearray, int, float, np.generic)) or obj is None:
-        v, f = _scalar_id(obj)
-        return _Parsed(np.array([v], dtype=np.uint64), _SCALAR_INT if f == "int" else _SCALAR_STR, -1 if v else 0, lambda i: obj)
+        v, f = value_id(obj)
+        return _Parsed(np.array([v], dtype=np.uint64), SCALAR_INT if f == "int" else SCALAR_STR, -1 if v else 0, lambda i: obj)
     pd, pa = sys.modules.get("pandas"), sys.modules.get("pyarrow")
     if pd is not None and isinstance(obj, pd.Series):
         return _parse_pandas(obj, pd)
@@ -173,16 +175,18 @@ def _parse_any(obj: Any) -> _Parsed:
         return _parse_numpy(arr, Kind("numpy", "str", arr.shape, dtype=arr.dtype))
     if hasattr(obj, "__iter__") and not isinstance(obj, dict):
         return _parse_sequence(list(obj), "list")
-    return _Parsed(np.zeros(1, dtype=np.uint64), _SCALAR_STR, 0, lambda i: obj)
+    return _Parsed(np.zeros(1, dtype=np.uint64), SCALAR_STR, 0, lambda i: obj)
 
 
-def cells_in(obj: Any) -> tuple[np.ndarray, Kind]:
+def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
     """Ids in any container as a flat uint64 array, and the :class:`Kind` that came in.
 
     Parameters
     ----------
     obj : str, int, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
         String ids or 64-bit integer ids (not a mix).
+    nulls : bool
+        Accept the null id 0 among integer ids (it stays 0).
 
     Returns
     -------
@@ -198,57 +202,40 @@ def cells_in(obj: Any) -> tuple[np.ndarray, Kind]:
     """
     t = type(obj)
     if t is str:
-        v, kind = _codec.parse_str(obj), _SCALAR_STR
+        v, kind = strings.parse_str(obj), SCALAR_STR
     elif t is int:
-        v, kind = (obj if _codec.valid_int(obj) else 0), _SCALAR_INT
+        v, kind = (obj if strings.valid_int(obj) else 0), SCALAR_INT
     else:
-        return _parse_any(obj).check()
+        p = _parse_any(obj)
+        if nulls and p.bad >= 0 and p.kind.form == "int":
+            p.bad = int(codec.max_level(p.ids)[1])  # the first bad id that is not the null id
+        return p.check()
     if not v:
-        _fail(obj, None, kind.form)
+        fail(obj, None, kind.form)
     a = np.empty(1, dtype=np.uint64)
     a[0] = v
     return a, kind
 
 
 def is_valid_any(obj: Any) -> Any:
-    """Whether ids are valid, never raising.
+    """Whether ids are valid, never raising: bools in the container that came in.
 
-    A bool for a scalar; a bool Series (same index) for a pandas Series; a
-    numpy bool array shaped like the input for anything else.
+    A bool for a scalar, a list for a list, a numpy array of the input's
+    shape, a bool Series on the input's index, a pyarrow bool array; input
+    that is no container of ids at all gives False (or a numpy array judging
+    its top-level elements).
     """
     t = type(obj)
     if t is str:
-        return _codec.parse_str(obj) != 0
+        return strings.parse_str(obj) != 0
     if t is int:
-        return _codec.valid_int(obj)
+        return strings.valid_int(obj)
     try:
         p = _parse_any(obj)
-        mask = p.mask()
-        if p.kind.scalar:
-            return bool(mask[0])
-        if p.kind.container == "pandas":
-            return sys.modules["pandas"].Series(mask, index=p.kind.index, name=p.kind.name)
-        return mask.reshape(p.kind.shape)
+        return values_out(p.mask(), p.kind)
     except Exception:  # noqa: BLE001  (never raises: judge the top-level elements alone)
         try:
-            return np.array([is_valid_any(x) is True for x in obj], dtype=bool)
+            flags = [is_valid_any(x) is True for x in obj]
+            return flags if isinstance(obj, (list, tuple)) else np.array(flags, dtype=bool)
         except Exception:  # noqa: BLE001
             return False
-
-
-_INT64_END = 1 << 63
-
-
-def scalar_id(obj: Any) -> int:
-    """The id of a plain ``str`` that is a valid id, or a plain positive int64 (not yet validated), else 0.
-
-    The caller passes it to a scalar kernel that validates ints, or takes the general path.
-
-    The single-id fast path: a few hundred nanoseconds, no numpy.
-    """
-    t = type(obj)
-    if t is str:
-        return _codec.parse_str(obj)
-    if t is int and 0 < obj < _INT64_END:  # validated by the kernel that takes it
-        return obj
-    return 0

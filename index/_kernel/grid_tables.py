@@ -1,4 +1,4 @@
-"""Tables for the compiled grid graph (:mod:`index._kgrid`), built once at import from the geometry,
+"""Tables for the compiled grid graph (:mod:`dggs.index._kernel.grid`), built once at import from the geometry,
 the largest disks and rings (:func:`disk_size_bound`, :func:`ring_size_bound`), and the
 planar charts that give exact distances (:func:`chart_distance`).
 
@@ -49,7 +49,7 @@ from dggs.geometry import split26
 from dggs.geometry.icosahedron import ISEA
 from dggs.geometry.snyder import FACE_EDGE, FACE_INRADIUS
 
-from ._bits import MAX_LEVEL
+from .bits import MAX_LEVEL
 
 EA, EB, EC = 0, 1, 2
 #: The two corners (indices into A, B, C) of each edge label.

@@ -6,11 +6,11 @@ mirror images carry the same edge labels.  Walking up from the last digit,
 the first digit whose edge is shared with a sibling changes and the digits
 after it stay: a neighbour is the id with one field replaced.  At the edge of
 the level-1 triangle a table gives the (face, level-1 digit) across.  The
-tables come from the geometry (:mod:`index._kgrid_tables`).
+tables come from the geometry (:mod:`dggs.index._kernel.grid_tables`).
 
 Conventions
 -----------
-* Ids are ``uint64`` in the layout of :mod:`index._bits`; 0 is the null id.
+* Ids are ``uint64`` in the layout of :mod:`dggs.index._kernel.bits`; 0 is the null id.
   Every kernel assumes valid ids (the caller validates).
 * ``neighbours`` column ``i`` is the cell across the edge from corner ``i`` to
   corner ``i + 1`` of the cell's counter-clockwise corners (as
@@ -28,10 +28,12 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import intrinsic
 
-from . import _kgrid_tables as _t
-from ._bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL, level_of
-from ._bits import is_valid as _bits_is_valid
-from ._kgrid_tables import chart_distance, disk_size_bound, ring_size_bound
+from dggs.geometry._parallel import loops
+
+from . import grid_tables as _t
+from .bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL, level_of
+from .bits import is_valid as _bits_is_valid
+from .grid_tables import chart_distance, disk_size_bound, ring_size_bound
 
 __all__ = [
     "are_neighbours",
@@ -153,7 +155,7 @@ def are_neighbours(a: np.ndarray, b: np.ndarray, out: np.ndarray) -> None:
 
 
 # ---------------------------------------------------------------------------
-# Disks and rings (sizes: disk_size_bound, ring_size_bound in _kgrid_tables)
+# Disks and rings (sizes: disk_size_bound, ring_size_bound in grid_tables)
 # ---------------------------------------------------------------------------
 @njit(cache=True, nogil=True)
 def _sort_small(a: np.ndarray, n: int) -> None:
@@ -401,7 +403,7 @@ def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
     adjacent faces, and the disk the count spans clear of the icosahedron
     vertices: most pairs at fine levels) it is the number of separating mirror
     lines, in O(level) time whatever the distance
-    (:func:`index._kgrid_tables.chart_distance`); otherwise a bidirectional
+    (:func:`dggs.index._kernel.grid_tables.chart_distance`); otherwise a bidirectional
     breadth-first search, O(d**2) cells.
     """
     if a == b:
@@ -422,24 +424,22 @@ def _distances_impl(a: np.ndarray, b: np.ndarray, max_steps: int, out: np.ndarra
         out[i] = distance(a[i], b[i], max_steps)
 
 
-# One body, two compilations: the prange loops run serially for small inputs
-# (starting numba's threads costs microseconds, more under load).
-disk = njit(cache=True, nogil=True, parallel=True)(_disk_impl)
-disk_serial = njit(cache=True, nogil=True)(_disk_impl)
-ring = njit(cache=True, nogil=True, parallel=True)(_ring_impl)
-ring_serial = njit(cache=True, nogil=True)(_ring_impl)
-distances = njit(cache=True, nogil=True, parallel=True)(_distances_impl)
-distances_serial = njit(cache=True, nogil=True)(_distances_impl)
+# One body, two compilations (serial for small inputs: starting numba's threads
+# costs microseconds, more under load); called as loop(n, *args).
+disk = loops(_disk_impl)
+ring = loops(_ring_impl)
+distances = loops(_distances_impl)
+_disk_serial = disk.serial  # for disk_of: compiled code calls a dispatcher, not a Loops
 
 
 @njit(cache=True, nogil=True)
 def disk_of(cell: int, k: int) -> np.ndarray:
-    """The disk of one id (int64), sorted (the scalar call path); empty if it is no id."""
+    """The disk of one id (int64), sorted (the single-id entry); empty if it is no id."""
     if not _bits_is_valid(np.uint64(cell)):
         return np.empty(0, dtype=np.uint64)
     out = np.empty((1, disk_size_bound(k)), dtype=np.uint64)
     counts = np.empty(1, dtype=np.int64)
     ids = np.empty(1, dtype=np.uint64)
     ids[0] = np.uint64(cell)
-    disk_serial(ids, k, out, counts)
+    _disk_serial(ids, k, out, counts)
     return out[0, : counts[0]]

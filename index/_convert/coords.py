@@ -1,47 +1,86 @@
-"""Coordinates in, ids out: the checks and containers of the point functions."""
+"""Coordinates in any container in: flat float64 arrays and the :class:`Kind` the answer goes out in.
+
+Latitudes and longitudes come as numbers, lists, numpy arrays, pandas Series
+or pyarrow arrays; the answer (ids via :func:`.cells_out.cells_out`, values
+via :func:`.values.values_out`) goes back in the same kind of container.
+"""
 
 from __future__ import annotations
 
+import sys
+from typing import Any
+
 import numpy as np
 
-from dggs.errors import CoordinateError, DggsValueError
+from dggs.errors import CoordinateError
 
-from . import _codec
-
-
-def _is_pandas(obj) -> bool:
-    """A pandas Series or Index (something with an index to keep), not pandas' NA or NaT."""
-    return type(obj).__module__.startswith("pandas") and hasattr(obj, "index")
+from .kind import OBJECT, Kind
 
 
-def as_coordinates(lat, lng) -> tuple[np.ndarray, np.ndarray, tuple, object]:
-    """``lat``, ``lng`` as flat float64 arrays, the output shape, and a pandas index (or None).
+def _container(obj: Any) -> tuple[str, Any] | None:
+    """``(container, the pandas index or whether chunked)`` of a coordinate container; None for a scalar."""
+    mod = type(obj).__module__
+    if mod.startswith("pandas") and hasattr(obj, "index"):  # a Series or Index, not pandas' NA or NaT
+        return "pandas", obj.index
+    if mod.startswith("pyarrow"):
+        pa = sys.modules["pyarrow"]
+        if isinstance(obj, (pa.Array, pa.ChunkedArray)):
+            return "arrow", isinstance(obj, pa.ChunkedArray)
+    if isinstance(obj, np.ndarray):
+        return ("numpy", None) if obj.ndim else None
+    if isinstance(obj, (list, tuple)):
+        return "list", None
+    return None
 
-    Raises :class:`CoordinateError` for non-numeric input (strings, bools,
-    objects) or shapes that do not broadcast.
+
+def _from_arrow(value: Any, name: str) -> np.ndarray:
+    """A pyarrow numeric array as float64 (a null is a bad coordinate: NaN, named by the check)."""
+    pa = sys.modules["pyarrow"]
+    if not (pa.types.is_floating(value.type) or pa.types.is_integer(value.type)):
+        raise CoordinateError(f"{name}s must be numbers, not a pyarrow {value.type} array")
+    chunks = value.chunks if isinstance(value, pa.ChunkedArray) else [value]
+    parts = [c.cast(pa.float64()).fill_null(float("nan")).to_numpy(zero_copy_only=False) for c in chunks]
+    return np.concatenate(parts) if parts else np.zeros(0)
+
+
+def coords_in(lat: Any, lng: Any) -> tuple[np.ndarray, np.ndarray, Kind]:
+    """``lat``, ``lng`` as flat float64 arrays, and the :class:`Kind` of container the answer goes out in.
+
+    The container is that of the first coordinate that is a container (a
+    pandas Series keeps its index, a pyarrow array gives pyarrow out); two
+    scalars give a scalar kind.  The form of the kind is ``"str"``; the
+    caller sets the form of its output with :func:`.kind.as_form`.
+
+    Raises
+    ------
+    CoordinateError
+        Non-numeric input (strings, bools, objects), or shapes that do not broadcast.
     """
-    index = None
-    if _is_pandas(lat):
-        index = lat.index
-    elif _is_pandas(lng):
-        index = lng.index
-    arrays = []
-    for name, value in (("latitude", lat), ("longitude", lng)):
-        arrays.append(_as_numbers(value, name))
-    lat_a, lng_a = arrays
+    found = _container(lat) or _container(lng)
+    lat_a, lng_a = _as_numbers(lat, "latitude"), _as_numbers(lng, "longitude")
     try:
         shape = np.broadcast_shapes(lat_a.shape, lng_a.shape)
     except ValueError:
         raise CoordinateError(f"latitude shape {lat_a.shape} does not match longitude shape {lng_a.shape}") from None
-    if index is not None and shape != (len(index),):
-        # the answer is a Series on the input's index: the other coordinate must not add dimensions or rows
-        raise CoordinateError(
-            f"a pandas Series of coordinates (length {len(index)}) needs the other coordinate as one number "
-            f"or as many numbers; together they make shape {shape}"
-        )
+    if found is None or shape == ():
+        kind = Kind("scalar", "str", (), True) if shape == () else Kind("numpy", "str", shape)
+    elif found[0] == "pandas":
+        index = found[1]
+        name = getattr(lat, "name", None) if _container(lat) else getattr(lng, "name", None)
+        if shape != (len(index),):
+            # the answer is a Series on the input's index: the other coordinate must not add dimensions or rows
+            raise CoordinateError(
+                f"a pandas Series of coordinates (length {len(index)}) needs the other coordinate as one number "
+                f"or as many numbers; together they make shape {shape}"
+            )
+        kind = Kind("pandas", "str", shape, dtype=OBJECT, index=index, name=name)
+    elif found[0] == "arrow":
+        kind = Kind("arrow", "str", shape, chunked=bool(found[1]))
+    else:
+        kind = Kind(found[0], "str", shape)
     lat_f = np.ascontiguousarray(np.broadcast_to(lat_a, shape), dtype=np.float64).reshape(-1)
     lng_f = np.ascontiguousarray(np.broadcast_to(lng_a, shape), dtype=np.float64).reshape(-1)
-    return lat_f, lng_f, shape, index
+    return lat_f, lng_f, kind
 
 
 _NOT_NUMBERS = (bool, np.bool_, str, bytes, np.str_, np.bytes_)
@@ -50,6 +89,8 @@ _PLAIN_NUMBERS = {float, int, np.float64, np.float32, np.int64}
 
 def _as_numbers(value, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
+    if (_container(value) or ("",))[0] == "arrow":
+        return _from_arrow(value, name)
     if isinstance(value, (list, tuple)) and not set(map(type, value)) <= _PLAIN_NUMBERS:
         # numpy turns [1.0, True] into floats: judge the elements themselves
         try:
@@ -101,20 +142,6 @@ def check_points(lat: np.ndarray, lng: np.ndarray, ids: np.ndarray) -> None:
         raise_bad_point(lat, lng, int(np.flatnonzero(ids == 0)[0]))
 
 
-def ids_out(ids: np.ndarray, shape: tuple, index, as_int: bool):
-    """Ids of points, shaped like the points: uint64 or ``U`` strings; a Series for pandas input."""
-    if as_int:
-        out = ids.reshape(shape)
-    else:
-        codes, _ = _codec.format_u32(ids)
-        out = codes.view(f"<U{codes.shape[1]}").reshape(shape)
-    if index is not None:
-        import pandas as pd
-
-        return pd.Series(out if as_int else out.astype(object), index=index)
-    return out
-
-
 def as_float_scalar(value, name: str) -> float:
     """A Python float of a numeric scalar (or 0-d array); strings and bools are refused."""
     if isinstance(value, np.ndarray) and value.ndim == 0:
@@ -125,11 +152,3 @@ def as_float_scalar(value, name: str) -> float:
         return float(value)
     except OverflowError:
         raise CoordinateError(f"{name} {value!r} is out of range") from None
-
-
-def check_densify(densify) -> int:
-    if isinstance(densify, (bool, np.bool_)) or not isinstance(densify, (int, np.integer)) or densify < 0:
-        raise DggsValueError(f"densify {densify!r} must be a non-negative integer")
-    if densify > 100_000:
-        raise DggsValueError(f"densify {densify!r} is over the limit of 100000 points per edge")
-    return int(densify)

@@ -2,7 +2,7 @@
 
 Every kernel takes a 1-d ``uint64`` array of VALID ids (the caller validates,
 e.g. with :func:`valid_mask`) and plain int levels already range-checked to
-``0 .. MAX_LEVEL``.  The layout is in :mod:`dggs.index._bits` (docs/grid.md,
+``0 .. MAX_LEVEL``.  The layout is in :mod:`dggs.index._kernel.bits` (docs/grid.md,
 "Integer ids"): marker bit 62, face in bits 61..57, the level-1 code in bits
 56..54, the level-k code (k >= 2) in bits ``2(28-k)+1 .. 2(28-k)``; a code of
 0 means "no digit", so the descendants of ``c`` at level ``l`` are the ints
@@ -37,7 +37,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ._bits import (
+from .bits import (
     DIGIT_LOW_BITS,
     L1_SHIFT,
     is_valid,
@@ -185,7 +185,7 @@ def levels(ids: np.ndarray) -> np.ndarray:
 def valid_mask(ids: np.ndarray) -> np.ndarray:
     """Whether each integer (any ``uint64``) is a well-formed id, as a ``bool`` array; never raises.
 
-    :func:`dggs.index._bits.is_valid`: rejects 0, bit 63 set, a clear marker
+    :func:`dggs.index._kernel.bits.is_valid`: rejects 0, bit 63 set, a clear marker
     bit, faces 20..31, level-1 code 7, and an empty field above a filled one.
     """
     out = np.empty(ids.size, dtype=np.bool_)

@@ -1,0 +1,275 @@
+"""The shapes floor: cell boundaries, and rings to shapely, WKB and GeoArrow (no Python loop per cell).
+
+:func:`boundaries` runs the compiled kernel; :func:`geometries` gives shapely
+polygons (all ordinary cells in one ``shapely.polygons`` call), :func:`wkb`
+little-endian WKB straight from the boundary arrays, :func:`geoarrow` native
+GeoArrow arrays.  :func:`dggs.cell_to_polygon`, :mod:`dggs.arrow`, the
+exports and the server all build cells here.
+
+A boundary ring (lat, lng) becomes a lng/lat polygon.  Rings that cross the
+antimeridian or touch a pole (a few cells per level) need unwrapping,
+closing over the pole and splitting at +-180; they take :func:`ring_to_geometry`
+one by one.  Every other ring is already a simple counter-clockwise lng/lat
+ring and goes into one vectorized call.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import shapely
+from shapely.geometry import MultiPolygon, Polygon, box
+from shapely.geometry.polygon import orient
+
+from ._checks import check_densify
+from ._kernel import hierarchy as kh
+from ._kernel import points as kp
+
+_POLE_TOL = 1e-9  # degrees
+_WKB_POLYGON = 3
+
+
+def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False) -> np.ndarray:
+    """(N, 3 (densify + 1), 2) (lat, lng) points of valid ids, or closed (lng, lat) rings one point longer."""
+    out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
+    kp.boundaries(ids.shape[0] * (densify + 1), ids, densify, out, lnglat)
+    return out
+
+
+def default_densify(level: int) -> int:
+    """Edge points that keep a polygon's geodesic area within 1e-6 of the cell's.
+
+    Measured with pyproj.Geod on WGS84 over random cells (tests/test_area.py):
+    level-0 and level-1 edges are nearly geodesics; cells touching an
+    icosahedron vertex bend the same at every level (the projection is
+    self-similar there), which sets the need at levels 2-12.
+    """
+    if level <= 1:
+        return 32
+    if level <= 12:
+        return 256
+    return 64 if level <= 16 else 32
+
+
+def special_rings(coords: np.ndarray) -> np.ndarray:
+    """Rows of closed (lng, lat) rings (N, M, 2) that may cross the antimeridian or touch a pole.
+
+    A step of more than 90 degrees of longitude between consecutive points
+    (across +-180, or past a pole between two points), or a point within a
+    degree of a pole: the few cells that take the exact per-cell path.
+    """
+    steps = np.abs(np.diff(coords[..., 0], axis=1))
+    return (steps > 90.0).any(axis=1) | (np.abs(coords[..., 1]) > 89.0).any(axis=1)
+
+
+def rings_to_geometries(coords: np.ndarray, ids: np.ndarray, densify: int) -> np.ndarray:
+    """Object array of shapely geometries of the cells ``ids`` from their closed (lng, lat) rings (N, M, 2).
+
+    Ordinary rings go into one ``shapely.polygons`` call; the special ones
+    are recomputed by the kernel with their exact pole and antimeridian
+    points (:func:`dggs.index.kp.special_ring`) and built one by one.
+    """
+    n = coords.shape[0]
+    out = np.empty(n, dtype=object)
+    if n == 0:
+        return out
+    special = special_rings(coords)
+    if special.any():
+        plain = ~special
+        out[plain] = shapely.polygons(coords[plain])
+        buf = np.empty((3 * (densify + 1) + kp.SPECIAL_EXTRA, 2))
+        for i in np.flatnonzero(special):
+            m = kp.special_ring(ids[i], densify, buf)
+            out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
+    else:
+        out[:] = shapely.polygons(coords)
+    return out
+
+
+def _pole_pairs(lat: np.ndarray, lng: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The ring with every point at a pole given as two: arriving and leaving longitude.
+
+    The kernel's exact rings already give pole points in pairs; a lone pole
+    point (a plain boundary's corner) takes its neighbours' longitudes.
+    """
+    at_pole = np.abs(np.abs(lat) - 90.0) < _POLE_TOL
+    if not at_pole.any():
+        return lat, lng
+    m = len(lat)
+    ys: list[float] = []
+    xs: list[float] = []
+    i = 0
+    while i < m:
+        if at_pole[i]:
+            pole = math.copysign(90.0, lat[i])
+            if i + 1 < m and at_pole[i + 1]:
+                xs += [float(lng[i]), float(lng[i + 1])]
+                i += 2
+            else:
+                xs += [float(lng[i - 1]), float(lng[(i + 1) % m])]
+                i += 1
+            ys += [pole, pole]
+        else:
+            xs.append(float(lng[i]))
+            ys.append(float(lat[i]))
+            i += 1
+    return np.array(ys), np.array(xs)
+
+
+def ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygon:
+    """A lng/lat ring on the sphere (counter-clockwise seen from outside) -> shapely geometry.
+
+    Longitudes are unwrapped so that consecutive points are under 180
+    degrees apart, except along a pole (two consecutive points at latitude
+    +-90), where the ring runs west at the North Pole and east at the South
+    Pole (the cell lies below, resp. above, that side), over the cell's
+    angle at the pole.  The result is split at the antimeridian, and every
+    exterior is counter-clockwise (RFC 7946).
+    """
+    ys, xs = _pole_pairs(np.asarray(lat, dtype=float), np.asarray(lng, dtype=float))
+    steps = np.diff(np.concatenate([xs, xs[:1]]))
+    steps = (steps + 180.0) % 360.0 - 180.0
+    along = (np.abs(ys) == 90.0) & (np.roll(ys, -1) == ys)
+    if along.any():
+        raw = np.roll(xs, -1)[along] - xs[along]
+        steps[along] = np.where(ys[along] > 0, -((-raw) % 360.0), raw % 360.0)
+    xs = xs[0] + np.concatenate([[0.0], np.cumsum(steps[:-1])])
+    winding = float(np.sum(steps))
+    if abs(winding) > 180.0:  # the ring goes round a pole: close it over the pole
+        pole = 90.0 if ys.mean() > 0 else -90.0
+        xs = np.concatenate([xs, [xs[-1], xs[0] + winding, xs[0] + winding]])
+        ys = np.concatenate([ys, [pole, pole, ys[0]]])
+    poly = Polygon(np.column_stack([xs, ys]))
+    if not poly.is_valid:
+        poly = shapely.make_valid(poly)
+    lo, hi = xs.min(), xs.max()
+    if lo >= -180.0 and hi <= 180.0:
+        parts = [poly]
+    else:
+        parts = []
+        for k in range(int(math.floor((lo + 180.0) / 360.0)), int(math.floor((hi + 180.0) / 360.0)) + 1):
+            window = box(-180.0 + 360.0 * k, -90.0, 180.0 + 360.0 * k, 90.0)
+            piece = poly.intersection(window)
+            if not piece.is_empty:
+                parts.append(shapely.affinity.translate(piece, xoff=-360.0 * k))
+    geoms: list = []
+    for p in parts:
+        geoms.extend(getattr(p, "geoms", [p]))
+    geoms = [orient(g, 1.0) for g in geoms if isinstance(g, Polygon) and g.area > 0]
+    return geoms[0] if len(geoms) == 1 else MultiPolygon(geoms)
+
+
+def densify_groups(ids: np.ndarray, densify: int | None) -> list[tuple[np.ndarray, int]]:
+    """(row indices, densify) per group of rows built alike: one group, or one per level's default."""
+    if densify is not None:
+        return [(np.arange(ids.shape[0]), check_densify(densify))]
+    lv = kh.levels(ids)
+    groups: dict[int, list[np.ndarray]] = {}
+    for level in np.unique(lv):
+        groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
+    return [(np.sort(np.concatenate(parts)), n) for n, parts in groups.items()]
+
+
+def special_geometries(ids: np.ndarray, densify: int) -> np.ndarray:
+    """Shapely geometries of cells that touch a pole or cross the antimeridian (exact kernel rings)."""
+    out = np.empty(ids.shape[0], dtype=object)
+    buf = np.empty((3 * (densify + 1) + kp.SPECIAL_EXTRA, 2))
+    for i in range(ids.shape[0]):
+        m = kp.special_ring(ids[i], densify, buf)
+        out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
+    return out
+
+
+def _wkb_records(coords: np.ndarray) -> np.ndarray:
+    """(N, L) uint8: the little-endian WKB Polygon of each closed (lng, lat) ring of ``coords`` (N, M, 2)."""
+    n, m = coords.shape[0], coords.shape[1]
+    record = np.dtype([("order", "u1"), ("type", "<u4"), ("rings", "<u4"), ("points", "<u4"), ("xy", "<f8", (m, 2))])
+    out = np.empty(n, dtype=record)
+    out["order"] = 1
+    out["type"] = _WKB_POLYGON
+    out["rings"] = 1
+    out["points"] = m
+    out["xy"] = coords
+    return out.view(np.uint8).reshape(n, record.itemsize)
+
+
+def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: int) -> Any:
+    import pyarrow as pa
+
+    """A binary array of ``n`` rows from (rows, offsets-from-0, data) chunks, put back in row order."""
+    rows = np.concatenate([c[0] for c in chunks]) if chunks else np.empty(0, np.int64)
+    lengths = np.concatenate([np.diff(c[1]) for c in chunks]) if chunks else np.empty(0, np.int64)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(lengths, out=offsets[1:])
+    data = np.concatenate([c[2] for c in chunks]) if chunks else np.empty(0, np.uint8)
+    arr = pa.LargeBinaryArray.from_buffers(pa.large_binary(), n, [None, pa.py_buffer(offsets), pa.py_buffer(data)])
+    if not np.array_equal(rows, np.arange(n)):
+        order = np.empty(n, dtype=np.int64)
+        order[rows] = np.arange(n)
+        arr = arr.take(pa.array(order))
+    return arr.cast(pa.binary()) if offsets[-1] < 2**31 - 1 else arr
+
+
+def wkb(ids: np.ndarray, densify: int | None) -> tuple[Any, np.ndarray, set[str]]:
+    """WKB of each cell, its (N, 4) bounds and the geometry types present."""
+    n = ids.shape[0]
+    chunks = []
+    bounds = np.empty((n, 4))
+    types: set[str] = set()
+    for rows, d in densify_groups(ids, densify):
+        coords = boundaries(ids[rows], d, lnglat=True)
+        special = special_rings(coords)
+        plain = rows[~special]
+        if plain.size:
+            block = _wkb_records(coords[~special])
+            offsets = np.arange(plain.size + 1, dtype=np.int64) * block.shape[1]
+            chunks.append((plain, offsets, block.reshape(-1)))
+            xy = coords[~special]
+            bounds[plain, :2] = xy.min(axis=1)
+            bounds[plain, 2:] = xy.max(axis=1)
+            types.add("Polygon")
+        if special.any():
+            sel = rows[special]
+            geoms = special_geometries(ids[sel], d)
+            blobs = shapely.to_wkb(geoms, byte_order=1, output_dimension=2)
+            lengths = np.fromiter((len(b) for b in blobs), dtype=np.int64, count=blobs.shape[0])
+            offsets = np.concatenate([[0], np.cumsum(lengths)])
+            chunks.append((sel, offsets, np.frombuffer(b"".join(blobs), dtype=np.uint8)))
+            bounds[sel] = shapely.bounds(geoms)
+            types.update(g.geom_type for g in geoms)
+    return _binary_array(chunks, n), bounds, types
+
+
+def geometries(ids: np.ndarray, densify: int | None) -> np.ndarray:
+    """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call."""
+    out = np.empty(ids.shape[0], dtype=object)
+    for rows, d in densify_groups(ids, densify):
+        coords = boundaries(ids[rows], d, lnglat=True)
+        special = special_rings(coords)
+        out[rows[~special]] = shapely.polygons(coords[~special])
+        if special.any():
+            out[rows[special]] = special_geometries(ids[rows[special]], d)
+    return out
+
+
+def geoarrow(ids: np.ndarray, densify: int | None) -> tuple[Any, str]:
+    import pyarrow as pa
+
+    """Native GeoArrow polygons (or multipolygons where any cell is split), separated x/y."""
+    geoms = geometries(ids, densify)
+    if geoms.size == 0:
+        kind, coords, offsets = shapely.GeometryType.POLYGON, np.empty((0, 2)), (np.zeros(1, np.int64),) * 2
+    else:
+        kind, coords, offsets = shapely.to_ragged_array(geoms)
+    fields = [pa.field("x", pa.float64()), pa.field("y", pa.float64())]
+    xy = pa.StructArray.from_arrays([pa.array(coords[:, 0]), pa.array(coords[:, 1])], fields=fields)
+    arr: Any = xy
+    for off in offsets:
+        if off[-1] < 2**31 - 1:
+            arr = pa.ListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int32)), arr)
+        else:  # over 2**31 coordinates (or rings): 64-bit offsets
+            arr = pa.LargeListArray.from_arrays(pa.array(np.asarray(off, dtype=np.int64)), arr)
+    name = "geoarrow.multipolygon" if kind == shapely.GeometryType.MULTIPOLYGON else "geoarrow.polygon"
+    return arr, name
