@@ -181,6 +181,10 @@ def __getattr__(name: str) -> Any:
         value = getattr(importlib.import_module(_LAZY[name]), name)
     elif name in _SUBMODULES:
         value = importlib.import_module(f"{__name__}.{name}")
+        # the modules of the name table inside it, as the eager face loaded them (dggs.index.points...)
+        for module in sorted(set(_LAZY.values())):
+            if module.startswith(f"{__name__}.{name}."):
+                importlib.import_module(module)
     else:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     globals()[name] = value
