@@ -2,7 +2,7 @@
 
 N random points uniform on the sphere (unit sphere, degrees in, fixed seed).
 Ours: :func:`dggs.geometry.snyder.forward` / :func:`dggs.geometry.snyder.inverse` (the public,
-checked API) and the unchecked vector cores ``forward_xyz`` / ``inverse_xyz``;
+checked API) and the unchecked numpy twins ``forward_xyz`` / ``inverse_xyz`` (:mod:`dggs.experiments.numpy_snyder`);
 the inverse runs the library's closed form and the thesis's methods (newton,
 newton-poly, poly: :func:`dggs.experiments.inverse.inverse`) on our own
 forward output.  PROJ: ``pyproj.Transformer.from_pipeline("+proj=isea +R=1")``
