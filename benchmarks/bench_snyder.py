@@ -2,7 +2,7 @@
 
 N random points uniform on the sphere (unit sphere, degrees in, fixed seed).
 Ours: :func:`dggs.geometry.snyder.forward` / :func:`dggs.geometry.snyder.inverse` (the public,
-checked API) and the unchecked vector cores ``forward_xyz`` / ``inverse_xyz``;
+checked API) and the unchecked numpy twins ``forward_xyz`` / ``inverse_xyz`` (:mod:`dggs.experiments.numpy_snyder`);
 the inverse runs the library's closed form and the thesis's methods (newton,
 newton-poly, poly: :func:`dggs.experiments.inverse.inverse`) on our own
 forward output.  PROJ: ``pyproj.Transformer.from_pipeline("+proj=isea +R=1")``
@@ -43,6 +43,7 @@ import numpy as np
 
 from dggs.experiments import inverse as thesis_inverse
 from dggs.geometry import snyder
+from dggs.experiments import numpy_snyder
 from dggs.geometry.icosahedron import latlng_to_xyz
 
 #: thesis §4.1: "a single call of the original Snyder inverse projection can occur within
@@ -129,14 +130,14 @@ def run(points: int, repeats: int, threads: int, library: bool = False,
 
     cases: list[tuple[str, str, Callable[..., object], list[np.ndarray], str]] = [
         ("forward", "dggs forward (lat/lng)", snyder.forward, [lat, lng], "fwd"),
-        ("forward", "dggs forward_xyz (core)", snyder.forward_xyz, [xyz], "fwd"),
+        ("forward", "dggs forward_xyz (core)", numpy_snyder.forward_xyz, [xyz], "fwd"),
         ("forward", "PROJ isea forward", lambda a, b: proj().transform(a, b), [lng, lat], "proj"),
     ]
     for m in INVERSE_METHODS:
         cases.append(("inverse", f"dggs inverse {m}",
                       lambda f, a, b, m=m: inverse(f, a, b, m), [face, x, y], m))
     cases.append(("inverse", "dggs inverse_xyz closed (core)",
-                  lambda f, a, b: snyder.inverse_xyz(f, a, b), [face, x, y], "closed"))
+                  lambda f, a, b: numpy_snyder.inverse_xyz(f, a, b), [face, x, y], "closed"))
     cases.append(("inverse", "PROJ isea inverse",
                   lambda a, b: proj().transform(a, b, direction="INVERSE"), [px, py], "proj"))
 

@@ -17,7 +17,18 @@ Examples
 >>> cell = dggs.latlng_to_cell(51.05, -114.07, 9)
 >>> dggs.get_level(cell), dggs.cell_to_parent(cell) == cell[:-1]
 (9, True)
+
+The names are loaded on first use (PEP 562): ``import dggs`` reads only this
+file and :mod:`dggs.errors`, and the first call of, say,
+``dggs.latlng_to_cell`` imports :mod:`dggs.index.points` (and with it numba
+and the compiled kernel).  Subpackages (``dggs.index``, ``dggs.storage``,
+``dggs.geometry``, ...) load the same way on first attribute access.
 """
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
 
 from dggs.errors import (
     CoordinateError,
@@ -30,49 +41,70 @@ from dggs.errors import (
     TooManyCellsError,
 )
 
-# Indexing
-from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
-from dggs.index.points import (
-    cell_to_boundary,
-    cell_to_latlng,
-    cell_to_polygon,
-    cells_to_geojson,
-    latlng_to_cell,
+__version__ = "0.3.0"
+
+#: Public name -> the module that defines it, imported on first access.
+#: The one table to update when a module moves.
+_LAZY: dict[str, str] = {
+    # indexing
+    "MAX_LEVEL": "dggs.index.ids",
+    "int_to_str": "dggs.index.ids",
+    "str_to_int": "dggs.index.ids",
+    "cell_to_boundary": "dggs.index.points",
+    "cell_to_latlng": "dggs.index.points",
+    "cell_to_polygon": "dggs.index.points",
+    "cells_to_geojson": "dggs.index.points",
+    "latlng_to_cell": "dggs.index.points",
+    # hierarchy
+    "cell_to_center_child": "dggs.index.hierarchy",
+    "cell_to_children": "dggs.index.hierarchy",
+    "cell_to_parent": "dggs.index.hierarchy",
+    "compact_cells": "dggs.index.hierarchy",
+    "get_base_cells": "dggs.index.hierarchy",
+    "get_face": "dggs.index.hierarchy",
+    "get_level": "dggs.index.hierarchy",
+    "get_num_cells": "dggs.index.hierarchy",
+    "is_valid_cell": "dggs.index.hierarchy",
+    "uncompact_cells": "dggs.index.hierarchy",
+    # traversal
+    "are_neighbor_cells": "dggs.index.grid",
+    "edge_neighbors": "dggs.index.grid",
+    "grid_disk": "dggs.index.grid",
+    "grid_distance": "dggs.index.grid",
+    "grid_ring": "dggs.index.grid",
+    # vertices, distances, lines
+    "cell_to_vertexes": "dggs.index.vertex",
+    "grid_disk_vertex": "dggs.index.vertex",
+    "is_valid_vertex": "dggs.index.vertex",
+    "vertex_neighbors": "dggs.index.vertex",
+    "vertex_to_cells": "dggs.index.vertex",
+    "vertex_to_latlng": "dggs.index.vertex",
+    "cell_centers_distance": "dggs.index.lines",
+    "geodesic_to_cells": "dggs.index.lines",
+    "great_circle_distance": "dggs.index.lines",
+    # regions and measures
+    "polygon_to_cells": "dggs.index.polyfill",
+    "cell_area": "dggs.index.measure",
+    "level_table": "dggs.index.measure",
+}
+
+#: Subpackages and modules reachable as attributes after a bare ``import dggs`` (``dggs.index.points``...).
+_SUBMODULES = frozenset(
+    {
+        "arrow",
+        "cell_cli",
+        "cli",
+        "dask",
+        "duckdb",
+        "experiments",
+        "geometry",
+        "index",
+        "pandas",
+        "server",
+        "storage",
+        "xdggs",
+    }
 )
-
-# Hierarchy
-from dggs.index.hierarchy import (
-    cell_to_center_child,
-    cell_to_children,
-    cell_to_parent,
-    compact_cells,
-    get_base_cells,
-    get_face,
-    get_level,
-    get_num_cells,
-    is_valid_cell,
-    uncompact_cells,
-)
-
-# Traversal
-from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
-
-# Vertices, distances, lines
-from dggs.index.vertex import (
-    cell_to_vertexes,
-    grid_disk_vertex,
-    is_valid_vertex,
-    vertex_neighbors,
-    vertex_to_cells,
-    vertex_to_latlng,
-)
-from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
-
-# Regions and measures
-from dggs.index.polyfill import polygon_to_cells
-from dggs.index.measure import cell_area, level_table
-
-__version__ = "0.2.0"
 
 __all__ = [
     # errors
@@ -125,3 +157,75 @@ __all__ = [
     "cell_area",
     "level_table",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name or a submodule on first access (PEP 562).
+
+    Parameters
+    ----------
+    name : str
+        An attribute of :mod:`dggs`.
+
+    Returns
+    -------
+    object
+        The function, constant or module; cached in the module's namespace.
+
+    Raises
+    ------
+    AttributeError
+        ``name`` is neither a public name nor a submodule.
+    """
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+    elif name in _SUBMODULES:
+        value = importlib.import_module(f"{__name__}.{name}")
+        # the modules of the name table inside it, as the eager face loaded them (dggs.index.points...)
+        for module in sorted(set(_LAZY.values())):
+            if module.startswith(f"{__name__}.{name}."):
+                importlib.import_module(module)
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    """The module's names, the lazy ones included."""
+    return sorted(set(globals()) | set(__all__) | _SUBMODULES)
+
+
+if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
+    from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
+    from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
+    from dggs.index.hierarchy import (
+        cell_to_center_child,
+        cell_to_children,
+        cell_to_parent,
+        compact_cells,
+        get_base_cells,
+        get_face,
+        get_level,
+        get_num_cells,
+        is_valid_cell,
+        uncompact_cells,
+    )
+    from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
+    from dggs.index.measure import cell_area, level_table
+    from dggs.index.points import (
+        cell_to_boundary,
+        cell_to_latlng,
+        cell_to_polygon,
+        cells_to_geojson,
+        latlng_to_cell,
+    )
+    from dggs.index.polyfill import polygon_to_cells
+    from dggs.index.vertex import (
+        cell_to_vertexes,
+        grid_disk_vertex,
+        is_valid_vertex,
+        vertex_neighbors,
+        vertex_to_cells,
+        vertex_to_latlng,
+    )

@@ -8,7 +8,7 @@ Equal Area Projections") and checks the degree-7 claim of §4.3:
 * **Table 4.2** - average Newton iterations and speed of the inverse for the
   four methods on triangulated faces of quality 25/50/75/100: ``O`` (Snyder's
   Newton from ``Az0 = Az'``), ``I`` (Newton from the cubic), ``E`` (the cubic
-  alone) and ``C`` (the exact closed form, SNYDER.md §4), timed in one run.
+  alone) and ``C`` (the exact closed form: Snyder 1992 eqs. 6-7 solved for Az), timed in one run.
 * **Table 4.3** - distance and triangle-area errors of ``E`` against the
   exact inverse.
 

@@ -16,6 +16,7 @@ import numpy as np
 
 from dggs.experiments.chapter4_constants import _HALF, _SECTOR, _SECTOR_AREA, THESIS_TABLE_4_1
 from dggs.geometry import snyder
+from dggs.experiments import numpy_snyder
 
 __all__ = ["implied_sample_size", "exact_az", "sector_samples", "SectorFit", "fit_sector", "fit_table"]
 
@@ -41,10 +42,10 @@ def implied_sample_size() -> int:
 def exact_az(ap: np.ndarray) -> np.ndarray:
     """Exact spherical azimuth ``Az`` of planar azimuths ``Az'`` in [0, 120] degrees (radians).
 
-    The closed form of SNYDER.md §4 (what Newton converges to).
+    The closed form (Snyder 1992 eqs. 6-7 solved for Az; thesis chapter 4): what Newton converges to.
     """
     ap = np.asarray(ap, dtype=float)
-    return snyder._az_closed(snyder._area_from_planar(np.sin(ap), np.cos(ap)))
+    return numpy_snyder.az_closed(numpy_snyder.area_from_planar(np.sin(ap), np.cos(ap)))
 
 
 def sector_samples(n: int, sampling: str = "area") -> np.ndarray:

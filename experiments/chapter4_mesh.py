@@ -68,7 +68,7 @@ def inverse_with_az(
 ) -> np.ndarray:
     """Inverse Snyder with a caller-supplied ``Az(Az')`` (unit vectors, (N, 3)).
 
-    The same steps as :func:`dggs.geometry.snyder.inverse_xyz` (eqs. 8-12 inverted),
+    The same steps as :func:`dggs.experiments.numpy_snyder.inverse_xyz` (eqs. 8-12 inverted),
     except that ``Az`` comes from ``az_of`` applied to ``Az'`` reduced to the
     [0, 120) degree sector: lets us evaluate fits that the library does not
     offer (the thesis's full-sector polynomial).

@@ -15,7 +15,7 @@ from dggs.experiments.chapter4_constants import _SECTOR, QUALITIES, TOL, TOLERAN
 from dggs.experiments.chapter4_errors import error_rows
 from dggs.experiments.chapter4_fits import fit_sector
 from dggs.experiments.chapter4_mesh import face_mesh
-from dggs.geometry import snyder
+from dggs.experiments import numpy_snyder
 from dggs.geometry.icosahedron import NUM_FACES
 
 __all__ = ["iteration_rows", "timing_rows", "degree7_check"]
@@ -35,7 +35,7 @@ def _sector_azimuths(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarr
     """Planar azimuth reduced to [0, 120) degrees and the planar area A_G (eq. 8 inverted)."""
     ap = np.mod(np.arctan2(x, y), 2.0 * math.pi)
     ap = ap - np.minimum(ap // _SECTOR, 2) * _SECTOR
-    return ap, snyder._area_from_planar(np.sin(ap), np.cos(ap))
+    return ap, numpy_snyder.area_from_planar(np.sin(ap), np.cos(ap))
 
 
 def iteration_rows(qualities=QUALITIES, tol: float = TOL, max_iter: int = 20) -> list[dict[str, Any]]:
@@ -93,7 +93,7 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
             "O": lambda: thesis_inverse.newton(area, ap, tol, 20),
             "I": lambda: thesis_inverse.newton(area, thesis_inverse.az_poly(ap, 3), tol, 20),
             "E": lambda: thesis_inverse.az_poly(ap, 3),
-            "C": lambda: snyder._az_closed(area),
+            "C": lambda: numpy_snyder.az_closed(area),
         }
         t_whole: dict[str, list[float]] = {m: [] for m in methods}
         t_step: dict[str, list[float]] = {m: [] for m in methods}

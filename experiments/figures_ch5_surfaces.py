@@ -4,7 +4,8 @@
 * 5.6: a face ABC on S with M, the foot of the height from A, and the angles
   of the area formula.  The thesis writes the chords as ``2 R tan(angle / 2)``;
   a chord of central angle ``a`` is ``2 R sin(a / 2)`` (a typo, like those
-  SNYDER.md lists): :func:`thesis_triangle_area` uses ``sin`` and matches the
+  the thesis's G = 46 degrees for 36 noted in dggs/geometry/constants.py): :func:`thesis_triangle_area`
+  uses ``sin`` and matches the
   cross-product area; with ``tan`` it would not.
 * 5.7: the flattened Loop (1:4) split.
 * 5.8-5.10: the steps of global surface preservation: the initial

@@ -29,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from dggs.errors import DggsValueError
+from dggs.experiments import numpy_snyder
 from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA, Orientation, xyz_to_latlng
 from dggs.geometry.snyder import G, G_ARC
@@ -100,7 +101,7 @@ def polynomial(degree: int = 3) -> np.ndarray:
         raise DggsValueError(f"polynomial degree {degree!r} is out of range 1..9")
     half = math.pi / 3
     t = 0.5 * half * (1 - np.cos(np.linspace(0.0, math.pi, 4001)))
-    az = snyder._az_closed(snyder._area_from_planar(np.sin(t), np.cos(t)))
+    az = numpy_snyder.az_closed(numpy_snyder.area_from_planar(np.sin(t), np.cos(t)))
     coeffs = np.polyfit(t, az, degree)
     coeffs.setflags(write=False)
     return coeffs
@@ -130,11 +131,11 @@ def inverse_xyz(
 
     No checks; see :func:`inverse` for the checked version.
     """
-    ap, k, sin_a, cos_a, rho = snyder.planar_azimuth(x, y)
-    area = snyder._area_from_planar(sin_a, cos_a)
+    ap, k, sin_a, cos_a, rho = numpy_snyder.planar_azimuth(x, y)
+    area = numpy_snyder.area_from_planar(sin_a, cos_a)
     iterations = np.zeros(ap.shape, dtype=np.int64)
     if method == "closed":
-        sin_az, cos_az = snyder._az_closed_sincos(area)
+        sin_az, cos_az = numpy_snyder.az_closed_sincos(area)
     else:
         if method == "newton":
             az, iterations = newton(area, ap, tol, max_iter)
@@ -145,7 +146,7 @@ def inverse_xyz(
         else:
             raise DggsValueError(f"inverse method {method!r} is not one of {', '.join(METHODS)}")
         sin_az, cos_az = np.sin(az), np.cos(az)
-    return snyder.sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation), iterations
+    return numpy_snyder.sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation), iterations
 
 
 def inverse(

@@ -121,11 +121,13 @@ class Ellipsoid:
         return 4.0 * math.pi * self.authalic_radius**2
 
     @cached_property
-    def _to_authalic(self) -> np.ndarray:
+    def to_authalic_series(self) -> np.ndarray:
+        """Coefficients of ``beta - phi = sum c_k sin 2k phi`` (Karney 2023, eq. A19; summed by Clenshaw)."""
         return _series_coefficients(_C_XI_PHI, self.n)
 
     @cached_property
-    def _to_geodetic(self) -> np.ndarray:
+    def to_geodetic_series(self) -> np.ndarray:
+        """Coefficients of ``phi - beta = sum c_k sin 2k beta`` (Karney 2023, eq. A20)."""
         return _series_coefficients(_C_PHI_XI, self.n)
 
     def geodetic_to_authalic(self, phi):
@@ -133,14 +135,14 @@ class Ellipsoid:
         phi = np.asarray(phi, dtype=np.float64)
         if self.f == 0.0:
             return phi
-        return phi + _clenshaw_sin(self._to_authalic, phi)
+        return phi + _clenshaw_sin(self.to_authalic_series, phi)
 
     def authalic_to_geodetic(self, xi):
         """Geodetic latitude (radians) of authalic latitude ``xi`` (radians)."""
         xi = np.asarray(xi, dtype=np.float64)
         if self.f == 0.0:
             return xi
-        return xi + _clenshaw_sin(self._to_geodetic, xi)
+        return xi + _clenshaw_sin(self.to_geodetic_series, xi)
 
     def geodetic_to_authalic_deg(self, lat):
         """Authalic latitude in degrees of geodetic latitude ``lat`` in degrees."""

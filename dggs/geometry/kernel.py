@@ -2,14 +2,19 @@
 
 Every function here is a numba ``@njit`` over Python floats and ints, so the
 point-location, centre and boundary loops of :mod:`dggs.index` (and the
-public :func:`dggs.geometry.snyder.forward` / ``inverse``) run one
-implementation for a single point and for a billion.  The formulas are those
-of :mod:`dggs.geometry.snyder` (Snyder 1992, SNYDER.md), :mod:`.authalic`
-(Karney 2023) and :mod:`.split26` (thesis §6.1.7), written per point.
+public :func:`dggs.geometry.snyder.forward` / ``inverse``, which check their
+input and then call this module) run one implementation for a single point
+and for a billion.  The formulas are Snyder's (Snyder 1992, eqs. 6-14, with
+the closed-form inverse azimuth derived in thesis chapter 4), the authalic
+series of :mod:`.authalic` (Karney 2023) and the Split (2:6) steps of
+:mod:`.split26` (thesis §6.1.7), written per point.
 
-The tables of the standard grid (PROJ's ISEA orientation, WGS84) are module
-constants that numba bakes into the compiled code: a call passes no arrays.
-Functions that take an ``orientation`` take its tables as arrays instead.
+This module sits below :mod:`.snyder`: it reads its constants from
+:mod:`.constants` and its tables from :mod:`.authalic`, :mod:`.icosahedron`
+and :mod:`.split26`, and imports nothing above them.  The tables of the
+standard grid (PROJ's ISEA orientation, WGS84) are module constants that
+numba bakes into the compiled code: a call passes no arrays.  Functions that
+take an ``orientation`` take its tables as arrays instead.
 """
 
 from __future__ import annotations
@@ -20,49 +25,45 @@ import os
 import numpy as np
 from numba import njit, prange
 
+from ._parallel import loops
 from .authalic import WGS84
-from .icosahedron import ISEA, NUM_FACES, TIE_STEP
-from .snyder import (
-    _COS_G,
-    _COS_SMALL_G,
-    _RT2,
-    _SIN_G,
+from .constants import (
+    COS_G,
+    COS_SMALL_G,
     COT_THETA,
+    D_PRIME_NUM,
+    RT2,
+    SIN_G,
+    SQRT3,
+    TAN_G2,
+    TINY,
+    UNTINY,
+    ROT_COS,
+    ROT_SIN,
     G,
-    R_PRIME,
-    TAN_G,
 )
-from .split26 import _AMBIGUOUS, _GRID_H, _GRID_W, _L1_C, _L1_ROWS, _M, _T, FACE_VERTICES, LEVEL1, _jump_table
+from .icosahedron import ISEA, NUM_FACES, TIE_STEP
+from .split26 import AMBIGUOUS, CHILD_M, CHILD_T, FACE_VERTICES, GRID_H, GRID_W, L1_C, L1_ROWS, LEVEL1, jump_table
 
 _TWO_PI = 2.0 * math.pi
-#: Below this planar distance from a face centre the azimuth comes from scaled copies of (x, y).
-_TINY = 2.0**-500
-_UNTINY = 2.0**600
-_SECTOR = 2.0 * math.pi / 3.0
-_SQRT3 = math.sqrt(3.0)
-_HALF_SQRT3 = 0.5 * math.sqrt(3.0)
-_ROT_COS = np.cos(_SECTOR * np.arange(3))
-_ROT_SIN = np.sin(_SECTOR * np.arange(3))
-_D_PRIME_NUM = R_PRIME * TAN_G
-_TAN_G2 = TAN_G * TAN_G
-_SIN_BIG_G = math.sin(G)
+_HALF_SQRT3 = 0.5 * SQRT3
 
 # The standard grid's tables, as compile-time constants.
 ISEA_CENTRES = np.ascontiguousarray(ISEA.geometry.centres)
 ISEA_FRAMES = np.ascontiguousarray(ISEA.geometry.frames)
 TIE_BIAS = -TIE_STEP * np.arange(NUM_FACES, dtype=np.float64)
-TO_AUTHALIC = np.ascontiguousarray(WGS84._to_authalic)
-TO_GEODETIC = np.ascontiguousarray(WGS84._to_geodetic)
-L1_C = np.ascontiguousarray(_L1_C)
-L1_ROWS = np.ascontiguousarray(_L1_ROWS)
-CHILD_M = np.ascontiguousarray(_M)
-CHILD_T = np.ascontiguousarray(_T)
+TO_AUTHALIC = np.ascontiguousarray(WGS84.to_authalic_series)
+TO_GEODETIC = np.ascontiguousarray(WGS84.to_geodetic_series)
+L1_C = np.ascontiguousarray(L1_C)
+L1_ROWS = np.ascontiguousarray(L1_ROWS)
+CHILD_M = np.ascontiguousarray(CHILD_M)
+CHILD_T = np.ascontiguousarray(CHILD_T)
 LEVEL1_CORNERS = np.ascontiguousarray(LEVEL1)
 
 
 def jump_constants():
     """split26's 4-level jump table as flat arrays: cell codes, packed digit codes, maps (computed, ~0.5 s)."""
-    table, digit_rows, coef = _jump_table()
+    table, digit_rows, coef = jump_table()
     # the 4 digit codes (digit + 1) of each path, packed 2 bits each, first level highest
     packed = np.zeros(81, dtype=np.uint64)
     for j in range(4):
@@ -85,8 +86,8 @@ def _load_jump_constants():
 
 
 JUMP_TABLE, JUMP_PACKED, JUMP_MAPS = _load_jump_constants()
-_JUMP_SX = _GRID_W / math.sqrt(3.0)
-_JUMP_W2 = _GRID_W + 2
+_JUMP_SX = GRID_W / SQRT3
+_JUMP_W2 = GRID_W + 2
 #: A base cell's corners counter-clockwise: the face vertices in reverse (azimuth) order.
 FACE_CORNERS_CCW = np.ascontiguousarray(FACE_VERTICES[::-1])
 
@@ -157,7 +158,7 @@ def geodetic_to_unit(lat_deg: float, lng_deg: float):
 
 
 # ----------------------------------------------------------------------------
-# Snyder forward and inverse (SNYDER.md; Snyder 1992 eqs. 6-14)
+# Snyder forward and inverse (Snyder 1992, eqs. 6-14)
 # ----------------------------------------------------------------------------
 @njit(cache=True, nogil=True)
 def nearest_face(centres: np.ndarray, px: float, py: float, pz: float) -> int:
@@ -176,16 +177,16 @@ def nearest_face(centres: np.ndarray, px: float, py: float, pz: float) -> int:
 def sector_forward(sin_az: float, cos_az: float, sin_half_z: float):
     """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')``."""
     u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(_TAN_G2 + u * u)))
-    cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
+    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(TAN_G2 + u * u)))
+    cos_h = sin_az * (SIN_G * COS_SMALL_G) - cos_az * COS_G  # eq. 6
     sin_h = math.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees
     az_plus_h = math.atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
     if az_plus_h < 0.0:
         az_plus_h += _TWO_PI
     area = az_plus_h + (G - math.pi)  # eq. 7
-    big_x = _RT2 - 2.0 * area * COT_THETA  # eq. 8 as (X, Y)
+    big_x = RT2 - 2.0 * area * COT_THETA  # eq. 8 as (X, Y)
     big_y = 2.0 * area
-    rho = _D_PRIME_NUM / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q  # eqs. 10-12
+    rho = D_PRIME_NUM / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q  # eqs. 10-12
     return rho * big_y, rho * big_x
 
 
@@ -210,7 +211,7 @@ def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, 
         k = 2
     else:
         k = 1
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]
+    rc, rs = ROT_COS[k], ROT_SIN[k]
     inv_h = 1.0 / math.sqrt(h2)
     sin_az = (e * rc - n * rs) * inv_h
     cos_az = (n * rc + e * rs) * inv_h
@@ -231,7 +232,7 @@ def sector_of(x: float, y: float) -> int:
 
 @njit(cache=True, nogil=True)
 def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
-    """Face-frame ``(x, y)`` -> unit vector, by the exact closed form (SNYDER.md §4).
+    """Face-frame ``(x, y)`` -> unit vector, by the exact closed form (Snyder 1992 eqs. 6-8 solved for Az; thesis ch. 4).
 
     Two sines and cosines in all: the sector comes from half-planes, and
     ``sin(G - A/2)``, ``sin(G - A)`` from ``sin(A/2)``, ``cos(A/2)`` by the
@@ -239,30 +240,30 @@ def inverse_unit(frames: np.ndarray, face: int, x: float, y: float):
     """
     rho = math.hypot(x, y)
     k = sector_of(x, y)
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    if rho > _TINY:
+    rc, rs = ROT_COS[k], ROT_SIN[k]
+    if rho > TINY:
         inv_rho = 1.0 / rho
         sin_a = (x * rc - y * rs) * inv_rho
         cos_a = (y * rc + x * rs) * inv_rho
     elif rho > 0.0:  # subnormal or tiny: 1 / rho would overflow; the direction from scaled copies
-        sx, sy = x * _UNTINY, y * _UNTINY
+        sx, sy = x * UNTINY, y * UNTINY
         inv_rho = 1.0 / math.hypot(sx, sy)
         sin_a = (sx * rc - sy * rs) * inv_rho
         cos_a = (sy * rc + sx * rs) * inv_rho
     else:
         sin_a, cos_a = 0.0, 1.0
-    area = _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))  # eq. 8 inverted
+    area = RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))  # eq. 8 inverted
     sh = math.sin(0.5 * area)
     ch = math.cos(0.5 * area)
-    sin_g_half = _SIN_BIG_G * ch - _COS_G * sh  # sin(G - A/2)
-    sin_g_full = _SIN_BIG_G * (ch * ch - sh * sh) - _COS_G * (2.0 * sh * ch)  # sin(G - A)
+    sin_g_half = SIN_G * ch - COS_G * sh  # sin(G - A/2)
+    sin_g_full = SIN_G * (ch * ch - sh * sh) - COS_G * (2.0 * sh * ch)  # sin(G - A)
     num = 2.0 * sin_g_half * sh
-    den = sin_g_full - _SIN_G * _COS_SMALL_G
+    den = sin_g_full - SIN_G * COS_SMALL_G
     r = math.sqrt(num * num + den * den)
     sin_az, cos_az = num / r, den / r
     u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(_TAN_G2 + u * u)))
-    d_prime = _D_PRIME_NUM / (cos_a + sin_a * COT_THETA)  # eq. 10
+    sin_half_q = math.sqrt(0.5 * (1.0 - u / math.sqrt(TAN_G2 + u * u)))
+    d_prime = D_PRIME_NUM / (cos_a + sin_a * COT_THETA)  # eq. 10
     s = min(rho / d_prime * sin_half_q, 1.0)  # sin(z/2), eqs. 11-12 inverted
     cos_z = 1.0 - 2.0 * s * s
     sin_z = 2.0 * s * math.sqrt(1.0 - s * s)
@@ -315,7 +316,7 @@ def descend(px: float, py: float):
     Child 0 (BCD) lies on C's side of BD (``sqrt3 x + y < 1``), child 2 (ADE)
     on A's side of DE (``sqrt3 x - y > 1``), child 1 between them.
     """
-    sx = _SQRT3 * px
+    sx = SQRT3 * px
     # branch-free (the digits of random points are random): 0 wins over 2
     c = (1 - int(sx + py < 1.0)) * (1 + int(sx - py > 1.0))
     return (
@@ -333,10 +334,10 @@ def descend4(px: float, py: float):
     whose cells lie inside one level-4 descendant); points in ambiguous grid
     cells, near an edge, take four exact steps of :func:`descend`.
     """
-    fx = min(max(px * _JUMP_SX + 1.0, 0.0), _GRID_W + 1.0)
-    fy = min(max(py * _GRID_H + 1.0, 0.0), _GRID_H + 1.0)
+    fx = min(max(px * _JUMP_SX + 1.0, 0.0), GRID_W + 1.0)
+    fy = min(max(py * GRID_H + 1.0, 0.0), GRID_H + 1.0)
     code = JUMP_TABLE[int(fy) * _JUMP_W2 + int(fx)]
-    if code == _AMBIGUOUS:
+    if code == AMBIGUOUS:
         packed = np.uint64(0)
         for _ in range(4):
             c, px, py = descend(px, py)
@@ -365,8 +366,7 @@ def child_corners(ax, ay, bx, by, cx, cy, digit: int):
 # ----------------------------------------------------------------------------
 # Loops for dggs.geometry.snyder.forward / inverse (any orientation)
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, parallel=True)
-def forward_rad(lat, lng, centres, frames, face, x, y):
+def _forward_rad(lat, lng, centres, frames, face, x, y):
     """Spherical radians -> face, x, y on the unit sphere."""
     for i in prange(lat.shape[0]):
         cl = math.cos(lat[i])
@@ -375,14 +375,18 @@ def forward_rad(lat, lng, centres, frames, face, x, y):
         )
 
 
-@njit(cache=True, nogil=True, parallel=True)
-def inverse_deg(face, x, y, frames, lat, lng):
+def _inverse_deg(face, x, y, frames, lat, lng):
     """Face-frame points -> spherical (lat, lng) degrees."""
     for i in prange(face.shape[0]):
         px, py, pz = inverse_unit(frames, face[i], x[i], y[i])
         lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
         lng[i] = math.degrees(math.atan2(py, px))
 
+
+#: ``forward_rad(n, lat, lng, centres, frames, face, x, y)``: threads chosen by :func:`._parallel.parallel`.
+forward_rad = loops(_forward_rad)
+#: ``inverse_deg(n, face, x, y, frames, lat, lng)``: threads chosen by :func:`._parallel.parallel`.
+inverse_deg = loops(_inverse_deg)
 
 
 def write_jump_file() -> None:

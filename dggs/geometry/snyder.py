@@ -1,8 +1,10 @@
-"""Snyder's equal-area projection of the icosahedron (ISEA), forward and inverse.
+"""Snyder's equal-area projection of the icosahedron (ISEA), forward and inverse: the checked public API.
 
 Snyder, J. P. (1992), "An equal-area map projection for polyhedral globes",
 Cartographica 29(1): 10-21; thesis §3.1.3-3.1.4 and chapter 4.  Constants and
-conventions as in PROJ's ``+proj=isea`` (see ``shared/SNYDER.md``).
+conventions as in PROJ's ``+proj=isea`` (``isea.cpp``); the constants live in
+:mod:`dggs.geometry.constants`, the compiled per-point formulas in
+:mod:`dggs.geometry.kernel`.  This module checks input and runs the kernel.
 
 Coordinates are on the unit sphere.  :func:`forward` maps a point to its face
 and to ``(x, y)`` in that face's frame: origin at the face centre, ``+y``
@@ -12,7 +14,9 @@ circumradius :data:`FACE_CIRCUMRADIUS` and area ``pi / 5``, exactly the area
 of its spherical face: the map is equal-area.
 
 For geodetic WGS84 coordinates use :class:`Projection`, which converts to
-authalic latitude and scales by the authalic radius.
+authalic latitude and scales by the authalic radius.  Numpy versions of the
+same formulas, for the thesis's experiments, are in
+:mod:`dggs.experiments.numpy_snyder`.
 
 Examples
 --------
@@ -30,47 +34,38 @@ import math
 
 import numpy as np
 
+from dggs.errors import CoordinateError, DggsValueError
+from dggs.geometry import kernel
 from dggs.geometry._validate import as_latlng
 from dggs.geometry.authalic import WGS84, Ellipsoid
-from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation, face_dots
+from dggs.geometry.constants import (
+    COT_THETA,
+    FACE_CIRCUMRADIUS,
+    FACE_EDGE,
+    FACE_INRADIUS,
+    G,
+    G_ARC,
+    R_PRIME,
+    TAN_G,
+    THETA,
+)
+from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation
 
 __all__ = [
     "forward",
     "inverse",
-    "forward_xyz",
-    "inverse_xyz",
+    "checked_face_xy",
     "Projection",
     "TAN_G",
     "G",
+    "G_ARC",
     "THETA",
+    "COT_THETA",
     "R_PRIME",
     "FACE_CIRCUMRADIUS",
     "FACE_INRADIUS",
     "FACE_EDGE",
 ]
-
-# Snyder 1992, Table 1 (icosahedron); SNYDER.md §1.
-TAN_G = 3.0 - math.sqrt(5.0)  # g: arc from face centre to vertex, tan g = 3 - sqrt 5
-G_ARC = math.atan(TAN_G)  # g = 37.3773681406 degrees
-G = math.pi / 5  # G = 36 degrees (the thesis's "46" is a typo)
-THETA = math.pi / 6  # theta = 30 degrees
-COT_THETA = math.sqrt(3.0)
-#: Planar circumradius of a face: sqrt(4 pi / (15 sqrt 3)) so the face has area pi / 5.
-FACE_CIRCUMRADIUS = math.sqrt(4 * math.pi / (15 * math.sqrt(3.0)))
-#: R' / R = 0.9103832815 (Snyder 1992, eq. 3.1 = 3.2 solved for R').
-R_PRIME = FACE_CIRCUMRADIUS / TAN_G
-FACE_INRADIUS = FACE_CIRCUMRADIUS / 2
-FACE_EDGE = FACE_CIRCUMRADIUS * math.sqrt(3.0)
-
-_SECTOR = 2 * math.pi / 3  # Az runs over 120-degree sectors, vertex to vertex
-_SIN_G, _COS_G = math.sin(G), math.cos(G)
-_COS_SMALL_G = math.cos(G_ARC)
-_RT2 = (R_PRIME * TAN_G) ** 2  # R'^2 tan^2 g
-_ROT_COS = np.cos(_SECTOR * np.arange(3))
-_ROT_SIN = np.sin(_SECTOR * np.arange(3))
-_TINY = 2.0**-500  # planar distances below this are scaled by _UNTINY before 1 / rho
-_UNTINY = 2.0**600
 
 
 # ----------------------------------------------------------------------------
@@ -97,55 +92,6 @@ def _numbers(value, name: str) -> None:
 # ----------------------------------------------------------------------------
 # Forward
 # ----------------------------------------------------------------------------
-def forward_xyz(xyz: np.ndarray, orientation: Orientation = ISEA):
-    """Project unit vectors ``xyz`` (N, 3) to ``(face, x, y)`` on the unit sphere.
-
-    The vector form of Snyder's forward (eqs. 6-12 and 14): azimuth and
-    distance from the face centre come from dot products with the face
-    frame's centre, north and east vectors, and ``Az + H`` is one angle
-    (``arg(e^{i Az} e^{i H})``), so the whole map costs two arctangents.
-    """
-    geo = orientation.geometry
-    face = np.argmax(face_dots(orientation, xyz), axis=1)
-    cne = np.einsum("nij,nj->ni", geo.frames[face], xyz)  # rows: centre, north, east
-    c, n, e = cne[:, 0], cne[:, 1], cne[:, 2]
-    az = np.arctan2(e, n)  # eq. 14, clockwise from the face's reference vertex
-    az += np.where(az < 0, 2 * math.pi, 0.0)
-    k = np.minimum((az * (1.0 / _SECTOR)).astype(np.intp), 2)
-    az -= k * _SECTOR
-    sin_az, cos_az = np.sin(az), np.cos(az)
-    # sin(z/2) without cancellation near the centre: 1 - cos z = sin^2 z / (1 + cos z)
-    sin_half_z = np.sqrt(0.5 * (n * n + e * e) / (1.0 + c))
-    sin_p, cos_p = sector_forward(sin_az, cos_az, sin_half_z)
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]  # Az' + 120 k
-    x = sin_p * rc + cos_p * rs
-    y = cos_p * rc - sin_p * rs
-    return face, x, y
-
-
-def sector_forward(sin_az, cos_az, sin_half_z):
-    """Snyder's forward inside one 120-degree sector: ``(rho sin Az', rho cos Az')`` (arrays).
-
-    Takes the reduced azimuth's sine and cosine and ``sin(z/2)``.  The
-    compiled kernel has the per-point twin (:func:`dggs.geometry.kernel.sector_forward`);
-    this numpy form serves :func:`forward_xyz` and the thesis's experiments.
-    """
-    # eq. 9: tan q = tan g / (cos Az + sin Az cot theta); we need sin(q/2).
-    u = cos_az + sin_az * COT_THETA
-    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
-    cos_h = sin_az * (_SIN_G * _COS_SMALL_G) - cos_az * _COS_G  # eq. 6
-    sin_h = np.sqrt(1.0 - cos_h * cos_h)  # H in (36, 144) degrees: sin H > 0
-    az_plus_h = np.arctan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h)
-    az_plus_h = az_plus_h + (az_plus_h < 0) * (2 * math.pi)
-    area = az_plus_h + (G - math.pi)  # eq. 7, spherical excess of triangle ABD
-    # eq. 8: Az' = atan2(2 A_G, R'^2 tan^2 g - 2 A_G cot theta), kept as sin/cos.
-    big_x = _RT2 - 2.0 * area * COT_THETA
-    big_y = 2.0 * area
-    # eq. 10 (d') and eqs. 11-12 (rho = d' sin(z/2) / sin(q/2)); |(X, Y)| cancels against d'
-    rho = (R_PRIME * TAN_G) / (big_x + big_y * COT_THETA) * sin_half_z / sin_half_q
-    return rho * big_y, rho * big_x
-
-
 def forward(lat, lng, orientation: Orientation = ISEA):
     """Project spherical latitude/longitude (degrees) to a face and face-plane ``(x, y)``.
 
@@ -188,15 +134,13 @@ def forward(lat, lng, orientation: Orientation = ISEA):
 
 def _forward_rad(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
     """Forward of radian arrays (1-d) through the compiled kernel."""
-    from . import kernel
-
     geo = orientation.geometry
     n = lat.shape[0]
     face = np.empty(n, dtype=np.intp)
     x = np.empty(n)
     y = np.empty(n)
     kernel.forward_rad(
-        np.ascontiguousarray(lat), np.ascontiguousarray(lng),
+        n, np.ascontiguousarray(lat), np.ascontiguousarray(lng),
         np.ascontiguousarray(geo.centres), np.ascontiguousarray(geo.frames), face, x, y,
     )
     return face, x, y
@@ -205,46 +149,6 @@ def _forward_rad(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
 # ----------------------------------------------------------------------------
 # Inverse
 # ----------------------------------------------------------------------------
-def _area_from_planar(sin_a: np.ndarray, cos_a: np.ndarray) -> np.ndarray:
-    """A_G of planar azimuth Az' (eq. 8 inverted; the sin/cos form has no pole at Az' = 0)."""
-    return _RT2 * sin_a / (2.0 * (cos_a + COT_THETA * sin_a))
-
-
-def _az_closed(area: np.ndarray) -> np.ndarray:
-    """Exact spherical azimuth Az of the excess A_G (SNYDER.md §4 closed form).
-
-    With Y = A_G + pi - G = Az + H, the cosine rule for H gives
-    tan Az = (cos Y + cos G) / (sin G cos g - sin Y), rewritten without
-    cancellation.
-    """
-    return np.arctan2(
-        2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area),
-        np.sin(G - area) - _SIN_G * _COS_SMALL_G,
-    )
-
-
-def _az_closed_sincos(area):
-    """``(sin Az, cos Az)`` of :func:`_az_closed` without the arctangent."""
-    num = 2.0 * np.sin(G - 0.5 * area) * np.sin(0.5 * area)
-    den = np.sin(G - area) - _SIN_G * _COS_SMALL_G
-    r = np.hypot(num, den)
-    return num / r, den / r
-
-
-def sector_distance(sin_az, cos_az, sin_a, cos_a, rho):
-    """``(cos z, sin z)`` of planar points at distance ``rho``, spherical/planar azimuths given (arrays).
-
-    Snyder's eqs. 9-12 inverted.
-    """
-    u = cos_az + sin_az * COT_THETA  # eq. 9
-    sin_half_q = np.sqrt(0.5 * (1.0 - u / np.hypot(TAN_G, u)))
-    d_prime = (R_PRIME * TAN_G) / (cos_a + sin_a * COT_THETA)  # eq. 10
-    s = rho / d_prime * sin_half_q  # sin(z/2), eqs. 11-12 inverted
-    s = s - (s > 1.0) * (s - 1.0)  # at most 1 (rounding at face vertices)
-    return 1.0 - 2.0 * s * s, 2.0 * s * np.sqrt(1.0 - s * s)
-
-
-
 def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
     """True where (x, y) lies outside the face triangle by more than ``slack``."""
     # Edge normals point at the edge midpoints, azimuths 60, 180, 300 degrees.
@@ -253,53 +157,6 @@ def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
     return (
         (s3 * x + 0.5 * y > limit) | (-y > limit) | (-s3 * x + 0.5 * y > limit)
     )
-
-
-
-
-def planar_azimuth(x: np.ndarray, y: np.ndarray):
-    """Reduce face-plane points to one 120-degree sector (arrays; the first step of the inverse).
-
-    Returns ``(ap, k, sin_a, cos_a, rho)``: the reduced planar azimuth Az' in
-    [0, 120) degrees (radians), the sector ``k`` (0..2), Az''s sine and cosine
-    and the distance from the face centre.
-    """
-    rho = np.hypot(x, y)
-    ap = np.arctan2(x, y)
-    ap += np.where(ap < 0, 2 * math.pi, 0.0)
-    k = np.minimum((ap * (1.0 / _SECTOR)).astype(np.intp), 2)
-    ap -= k * _SECTOR
-    # sin/cos of the reduced Az': turn (x, y) back by 120 k instead of calling sin and cos
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    # the azimuth's sine and cosine; tiny (x, y) are scaled first so that 1 / rho does not overflow
-    scale = np.where(rho < _TINY, _UNTINY, 1.0)
-    sx, sy = x * scale, y * scale
-    srho = np.hypot(sx, sy)
-    inv_rho = 1.0 / np.where(srho > 0, srho, 1.0)
-    sin_a = (sx * rc - sy * rs) * inv_rho
-    cos_a = np.where(srho > 0, (sy * rc + sx * rs) * inv_rho, 1.0)
-    return ap, k, sin_a, cos_a, rho
-
-
-def sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation: Orientation = ISEA) -> np.ndarray:
-    """Unit vectors (N, 3) of points given their spherical azimuth Az in sector ``k`` (the inverse's last step)."""
-    cos_z, sin_z = sector_distance(sin_az, cos_az, sin_a, cos_a, rho)
-    rc, rs = _ROT_COS[k], _ROT_SIN[k]
-    ct = cos_az * rc - sin_az * rs  # Az + 120 k
-    st = sin_az * rc + cos_az * rs
-    frame = orientation.geometry.frames[np.asarray(face)]  # rows: centre, north, east
-    coef = np.stack([cos_z, sin_z * ct, sin_z * st], axis=1)
-    return np.einsum("ni,nij->nj", coef, frame)
-
-
-def inverse_xyz(face, x, y, orientation: Orientation = ISEA) -> np.ndarray:
-    """Inverse of :func:`forward_xyz`: unit vectors (N, 3), by the exact closed form.
-
-    No checks; see :func:`inverse` for the checked public version.
-    """
-    _, k, sin_a, cos_a, rho = planar_azimuth(x, y)
-    sin_az, cos_az = _az_closed_sincos(_area_from_planar(sin_a, cos_a))
-    return sector_to_xyz(face, k, sin_az, cos_az, sin_a, cos_a, rho, orientation)
 
 
 def checked_face_xy(face, x, y):
@@ -351,8 +208,8 @@ def checked_face_xy(face, x, y):
 def inverse(face, x, y, orientation: Orientation = ISEA):
     """Map face-plane ``(x, y)`` on face ``face`` back to latitude/longitude (degrees).
 
-    The exact, non-iterative closed form of the azimuth (``shared/SNYDER.md``
-    §4).  Snyder's Newton-Raphson and the thesis's polynomial inverses
+    The exact, non-iterative closed form of the azimuth (Snyder 1992 eqs.
+    6-8 solved for Az; thesis chapter 4).  Snyder's Newton-Raphson and the thesis's polynomial inverses
     (§4.1.2-4.1.3) are research code: :mod:`dggs.experiments.inverse`.
 
     Parameters
@@ -389,12 +246,10 @@ def inverse(face, x, y, orientation: Orientation = ISEA):
     if not isinstance(orientation, Orientation):
         raise DggsValueError(f"orientation {orientation!r} is not an Orientation")
     face_a, x_a, y_a, shape, scalar = checked_face_xy(face, x, y)
-    from . import kernel
-
     n = face_a.shape[0]
     lat, lng = np.empty(n), np.empty(n)
     kernel.inverse_deg(
-        np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a), np.ascontiguousarray(y_a),
+        n, np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a), np.ascontiguousarray(y_a),
         np.ascontiguousarray(orientation.geometry.frames), lat, lng,
     )
     if scalar:

@@ -22,12 +22,17 @@ Level-1 digits ``d = 0..5`` number the six triangles clockwise from the face's
 reference vertex: triangle ``d`` spans planar azimuths ``60 d .. 60 (d + 1)``
 degrees.
 
+The compiled point location (:func:`dggs.geometry.kernel.level1_start`,
+``descend``, ``descend4``) reads its tables from here: :data:`CHILD_M`,
+:data:`CHILD_T`, :data:`L1_ROWS`, :data:`L1_C` and :func:`jump_table`.
+
 Examples
 --------
 >>> import numpy as np
->>> digits = locate(np.array([0.01]), np.array([0.2]), 3)
->>> digits.tolist()
-[[0, 1, 2]]
+>>> a, b, c = cell_vertices(np.zeros(3, dtype=np.intp), np.array([[0], [1], [2]]))
+>>> A, B, C = LEVEL1[0]
+>>> bool(np.allclose(b, C + (A - C) / 3))  # every child's B' is D, a third of the way from C to A
+True
 """
 
 from __future__ import annotations
@@ -37,17 +42,27 @@ from functools import lru_cache
 
 import numpy as np
 
-from dggs.geometry.snyder import FACE_CIRCUMRADIUS, FACE_INRADIUS
+from dggs.geometry.constants import FACE_CIRCUMRADIUS, FACE_INRADIUS, SQRT3
 
 __all__ = [
     "FACE_VERTICES",
+    "LEVEL1",
     "level1_triangles",
-    "locate",
+    "level1_digit",
     "cell_vertices",
+    "neighbour_points",
+    "EDGE_NORMALS",
     "CHILD_COUNT",
+    "CHILD_M",
+    "CHILD_T",
+    "L1_ROWS",
+    "L1_C",
+    "jump_table",
+    "JUMP_LEVELS",
+    "GRID_W",
+    "GRID_H",
+    "AMBIGUOUS",
 ]
-
-SQRT3 = math.sqrt(3.0)
 #: Planar face vertices: vertex k at azimuth 120 k degrees, clockwise from +y.
 FACE_VERTICES = np.array(
     [
@@ -101,10 +116,10 @@ def _child_affines() -> tuple[np.ndarray, np.ndarray]:
     return np.array(mats), np.array(offs)
 
 
-_M, _T = _child_affines()
+CHILD_M, CHILD_T = _child_affines()
 # Level-1 triangle d: canonical = (rows @ (p - C)) / inradius_of_cell
-_L1_ROWS = np.array([_frame_rows(*LEVEL1[d]) / FACE_INRADIUS for d in range(6)])
-_L1_C = LEVEL1[:, 2].copy()
+L1_ROWS = np.array([_frame_rows(*LEVEL1[d]) / FACE_INRADIUS for d in range(6)])
+L1_C = LEVEL1[:, 2].copy()
 
 
 def level1_digit(x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -118,7 +133,7 @@ def level1_digit(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.minimum((az * (3 / math.pi)).astype(np.intp), 5)
 
 
-def _descend(px: np.ndarray, py: np.ndarray, steps: int, rows: np.ndarray, row: int):
+def descend_rows(px: np.ndarray, py: np.ndarray, steps: int, rows: np.ndarray, row: int):
     """Exact per-level descent in the canonical frame: writes digit rows ``row..row+steps-1``.
 
     ``rows`` holds one row of digits per level (shape (levels, N)).  Child 0
@@ -127,8 +142,8 @@ def _descend(px: np.ndarray, py: np.ndarray, steps: int, rows: np.ndarray, row: 
     both of its internal edges.  Returns the point in the last child's
     canonical frame.
     """
-    m00, m01, m10, m11 = _M[:, 0, 0], _M[:, 0, 1], _M[:, 1, 0], _M[:, 1, 1]
-    t0, t1 = _T[:, 0], _T[:, 1]
+    m00, m01, m10, m11 = CHILD_M[:, 0, 0], CHILD_M[:, 0, 1], CHILD_M[:, 1, 0], CHILD_M[:, 1, 1]
+    t0, t1 = CHILD_T[:, 0], CHILD_T[:, 1]
     for r in range(row, row + steps):
         sx = SQRT3 * px
         c = np.where(sx + py < 1.0, 0, np.where(sx - py > 1.0, 2, 1)).astype(np.uint8)
@@ -141,104 +156,57 @@ def _descend(px: np.ndarray, py: np.ndarray, steps: int, rows: np.ndarray, row: 
 # [0, sqrt3] x [0, 1] is cut into a W x H grid; a grid cell that lies wholly
 # inside one level-K descendant (checked at its corners pushed outwards by
 # _EPS: each descendant's region is convex) stores that descendant's code,
-# the others store _AMBIGUOUS and their points take the exact descent.
-_K = 4
-_GRID_W, _GRID_H = 1024, 592
+# the others store AMBIGUOUS and their points take the exact descent.
+JUMP_LEVELS = 4
+GRID_W, GRID_H = 1024, 592
 _EPS = 1e-9
-_AMBIGUOUS = 255
+AMBIGUOUS = 255
 
 
 @lru_cache(maxsize=1)
-def _jump_table():
-    k = _K
+def jump_table():
+    """The jump table: :data:`JUMP_LEVELS` levels of descent in one look-up (computed, ~0.5 s; cached).
+
+    Returns
+    -------
+    table : ndarray of uint8, ((GRID_H + 2) * (GRID_W + 2),)
+        Per grid cell (row-major, with a one-cell border), the base-3 code of
+        the level-4 descendant that holds the whole grid cell, or
+        :data:`AMBIGUOUS`.
+    digit_rows : tuple of 4 ndarrays of uint8, (81,)
+        The digits of each code, first level first.
+    coef : tuple of 6 ndarrays, (81,)
+        ``(a00, a01, a10, a11, b0, b1)`` of each code's composite map
+        ``p -> A p + b`` from the canonical frame to the descendant's.
+    """
+    k = JUMP_LEVELS
     codes = np.indices((3,) * k).reshape(k, -1).T.astype(np.uint8)  # (81, K), base-3 order
     # composite affine maps p -> A p + t of each K-digit path
     mats = np.tile(np.eye(2), (len(codes), 1, 1))
     offs = np.zeros((len(codes), 2))
     for j in range(k):
-        m, t = _M[codes[:, j]], _T[codes[:, j]]
+        m, t = CHILD_M[codes[:, j]], CHILD_T[codes[:, j]]
         offs = np.einsum("nij,nj->ni", m, offs) + t
         mats = np.einsum("nij,njk->nik", m, mats)
-    xs = np.arange(_GRID_W + 1) * (SQRT3 / _GRID_W)
-    ys = np.arange(_GRID_H + 1) * (1.0 / _GRID_H)
+    xs = np.arange(GRID_W + 1) * (SQRT3 / GRID_W)
+    ys = np.arange(GRID_H + 1) * (1.0 / GRID_H)
     gx, gy = np.meshgrid(xs, ys)  # (H+1, W+1) grid nodes
 
     def node_codes(sx: float, sy: float) -> np.ndarray:
         px, py = (gx + sx * _EPS).ravel(), (gy + sy * _EPS).ravel()
         d = np.empty((k, px.size), dtype=np.uint8)
-        _descend(px, py, k, d, 0)
+        descend_rows(px, py, k, d, 0)
         return (3 ** np.arange(k - 1, -1, -1) @ d.astype(np.intp)).reshape(gx.shape)
 
     ll, lr = node_codes(-1, -1)[:-1, :-1], node_codes(+1, -1)[:-1, 1:]
     ul, ur = node_codes(-1, +1)[1:, :-1], node_codes(+1, +1)[1:, 1:]
     same = (ll == lr) & (ll == ul) & (ll == ur)
     # a border of ambiguous cells catches points off the grid (after clipping)
-    table = np.full((_GRID_H + 2, _GRID_W + 2), _AMBIGUOUS, dtype=np.uint8)
-    table[1:-1, 1:-1] = np.where(same, ll, _AMBIGUOUS)
+    table = np.full((GRID_H + 2, GRID_W + 2), AMBIGUOUS, dtype=np.uint8)
+    table[1:-1, 1:-1] = np.where(same, ll, AMBIGUOUS)
     digit_rows = tuple(np.ascontiguousarray(codes[:, j]) for j in range(k))
     coef = tuple(np.ascontiguousarray(v) for v in (mats[:, 0, 0], mats[:, 0, 1], mats[:, 1, 0], mats[:, 1, 1], offs[:, 0], offs[:, 1]))
     return table.ravel(), digit_rows, coef
-
-
-def _jump(px: np.ndarray, py: np.ndarray, rows: np.ndarray, row: int):
-    """K levels at once through the jump table; exact descent where it is ambiguous."""
-    table, digit_rows, (a00, a01, a10, a11, b0, b1) = _jump_table()
-    # grid cell + 1 (the border), clipped: off-grid points land on the ambiguous border
-    ix = np.clip(px * (_GRID_W / SQRT3) + 1.0, 0.0, _GRID_W + 1.0).astype(np.intp)
-    iy = np.clip(py * _GRID_H + 1.0, 0.0, _GRID_H + 1.0).astype(np.intp)
-    iy *= _GRID_W + 2
-    iy += ix
-    code = table[iy]
-    amb = np.flatnonzero(code == _AMBIGUOUS)
-    if amb.size:
-        sub = np.empty((_K, amb.size), dtype=np.uint8)
-        _descend(px[amb], py[amb], _K, sub, 0)
-        code[amb] = 3 ** np.arange(_K - 1, -1, -1) @ sub.astype(np.intp)
-    for j in range(_K):
-        rows[row + j] = digit_rows[j][code]
-    return a00[code] * px + a01[code] * py + b0[code], a10[code] * px + a11[code] * py + b1[code]
-
-
-def _start(x: np.ndarray, y: np.ndarray, level: int):
-    """Digit rows (level, N) with the level-1 digits filled, and the points in their level-1 canonical frame."""
-    rows = np.empty((max(level, 0), x.shape[0]), dtype=np.uint8)
-    if level <= 0:
-        return rows, None, None
-    d = level1_digit(x, y)
-    rows[0] = d
-    dx, dy = x - _L1_C[d, 0], y - _L1_C[d, 1]
-    m = _L1_ROWS[d]
-    return rows, m[:, 0, 0] * dx + m[:, 0, 1] * dy, m[:, 1, 0] * dx + m[:, 1, 1] * dy
-
-
-def locate(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
-    """Digits (N, level) uint8 of the level-``level`` cells holding face-frame points.
-
-    Column 0 holds the level-1 digit (0..5), later columns 0..2.  Points on a
-    shared edge go to one side by fixed comparisons (child 1 wins its two
-    internal edges), so the same point always gets the same cell.  Four
-    levels at a time go through a precomputed jump table that reproduces the
-    per-level comparisons exactly (points near a cell edge take the
-    per-level path).
-    """
-    rows, px, py = _start(x, y, level)
-    if level <= 0:
-        return rows.T
-    row = 1
-    while level - row >= _K:
-        px, py = _jump(px, py, rows, row)
-        row += _K
-    _descend(px, py, level - row, rows, row)
-    return rows.T
-
-
-def _locate_per_level(x: np.ndarray, y: np.ndarray, level: int) -> np.ndarray:
-    """Reference: :func:`locate` without the jump table (for tests)."""
-    rows, px, py = _start(x, y, level)
-    if level <= 0:
-        return rows.T
-    _descend(px, py, level - 1, rows, 1)
-    return rows.T
 
 
 @lru_cache(maxsize=1)
@@ -248,10 +216,10 @@ def _inverse_blocks():
     For digits d1..dk (parent to child), ``G = f_d1^-1 o ... o f_dk^-1`` as
     ``(A, b)`` with ``G(p) = A p + b``; index = digits read as a base-3 number.
     """
-    inv_m = np.linalg.inv(_M)
-    inv_t = -np.einsum("nij,nj->ni", inv_m, _T)
+    inv_m = np.linalg.inv(CHILD_M)
+    inv_t = -np.einsum("nij,nj->ni", inv_m, CHILD_T)
     out = {}
-    for k in (1, _K):
+    for k in (1, JUMP_LEVELS):
         codes = np.indices((3,) * k).reshape(k, -1).T
         a = np.tile(np.eye(2), (len(codes), 1, 1))
         b = np.zeros((len(codes), 2))
@@ -274,7 +242,7 @@ def _compose_contractions(digits: np.ndarray) -> tuple[np.ndarray, ...]:
     b0, b1 = np.zeros(n), np.zeros(n)
     col = 0
     while col < depth:
-        k = _K if depth - col >= _K else 1
+        k = JUMP_LEVELS if depth - col >= JUMP_LEVELS else 1
         code = np.zeros(n, dtype=np.intp)
         for j in range(k):
             code = code * 3 + digits[:, col + j]
@@ -322,29 +290,9 @@ def cell_vertices(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None 
     cb = np.stack([a01 + b0, a11 + b1], axis=1)
     cc = np.stack([b0, b1], axis=1)
     # level-1 canonical -> face frame: p = C_d + r * rows_d^T p_can
-    rows_t = np.swapaxes(_L1_ROWS[l1], 1, 2) * (FACE_INRADIUS**2)
-    centre = _L1_C[l1]
+    rows_t = np.swapaxes(L1_ROWS[l1], 1, 2) * (FACE_INRADIUS**2)
+    centre = L1_C[l1]
     return tuple(centre + np.einsum("nij,nj->ni", rows_t, v) for v in (ca, cb, cc))
-
-
-def _cell_vertices_per_level(l1: np.ndarray, digits: np.ndarray, levels: np.ndarray | None = None):
-    """Reference for :func:`cell_vertices`: D and E level by level (thesis §6.1.7)."""
-    tri = LEVEL1[l1]
-    a, b, c = tri[:, 0].copy(), tri[:, 1].copy(), tri[:, 2].copy()
-    for col in range(digits.shape[1]):
-        dig = digits[:, col]
-        dpt = c + (a - c) / 3.0  # D: a third of the way from C to A
-        ept = 0.5 * (a + b)  # E: the midpoint of AB
-        active = None if levels is None else (levels > col + 1)
-        na = np.where((dig == 2)[:, None], a, b)
-        nb = dpt
-        nc = np.where((dig == 0)[:, None], c, ept)
-        if active is None:
-            a, b, c = na, nb, nc
-        else:
-            m = active[:, None]
-            a, b, c = np.where(m, na, a), np.where(m, nb, b), np.where(m, nc, c)
-    return a, b, c
 
 
 def _face_edge_transforms(face_vertices: np.ndarray):
@@ -408,8 +356,3 @@ def _transforms(key: bytes, shape):
     if key not in _TRANSFORM_CACHE:
         _TRANSFORM_CACHE[key] = _face_edge_transforms(np.frombuffer(key, dtype=np.int64).reshape(shape))
     return _TRANSFORM_CACHE[key]
-
-
-def face_adjacency(face_vertices: np.ndarray) -> np.ndarray:
-    """(20, 3) faces across edges 0, 1, 2 of each face."""
-    return _transforms(face_vertices.astype(np.int64).tobytes(), face_vertices.shape)[0]

@@ -47,7 +47,7 @@ from numba import njit
 
 from dggs.geometry import split26
 from dggs.geometry.icosahedron import ISEA
-from dggs.geometry.snyder import FACE_EDGE, FACE_INRADIUS
+from dggs.geometry.constants import FACE_EDGE, FACE_INRADIUS
 
 from .bits import MAX_LEVEL
 

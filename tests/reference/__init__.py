@@ -1,0 +1,1 @@
+"""Reference data (fixtures/) and independent numpy oracles of the compiled kernel."""
