@@ -245,8 +245,9 @@ def test_containers_of_ids(data, func):
             assert np.shape(res) == shape
         elif func == "edge_neighbors" and isinstance(obj, np.ndarray):
             assert res.shape == shape + (3,)
-        elif func == "cell_to_boundary":
-            assert res.shape == shape + (3, 2)
+        elif func == "cell_to_boundary":  # the input's container, of (lat, lng) rows
+            plain = res.to_pylist() if hasattr(res, "to_pylist") else res.tolist() if hasattr(res, "index") else res
+            assert np.shape(plain) == shape + (3, 2)
         elif func == "str_to_int":
             assert dggs.int_to_str(res) is not None and len(res) == len(obj)
     elif valid_flat.all():
@@ -261,7 +262,7 @@ def test_containers_of_ids(data, func):
 def test_is_valid_cell_never_raises(value):
     with time_limit():
         res = dggs.is_valid_cell(value)
-    assert isinstance(res, (bool, np.ndarray, pd.Series))
+    assert isinstance(res, (bool, list, np.ndarray, pd.Series, pa.Array, pa.ChunkedArray))
 
 
 # --------------------------------------------------------------------------
@@ -430,7 +431,7 @@ def test_bools_and_strings_are_not_coordinates():
 def test_zero_dim_and_empty_coordinates():
     assert dggs.latlng_to_cell(np.array(51.05), np.array(-114.07), 9) == "F200021102"
     assert dggs.latlng_to_cell(np.array([]), np.array([]), 3).shape == (0,)
-    assert dggs.latlng_to_cell([], [], 3, as_int=True).dtype == np.uint64
+    assert dggs.latlng_to_cell([], [], 3, as_int=True) == []  # a list in, a list out
     with pytest.raises(dggs.CoordinateError, match=r"\(2,\).*\(3,\)"):
         dggs.latlng_to_cell(np.zeros(2), np.zeros(3), 3)
 
@@ -451,7 +452,7 @@ def test_special_points(point):
         assert dggs.latlng_to_cell(*dggs.cell_to_latlng(cell), level) == cell
         assert len(dggs.cell_to_boundary(cell)) == 3
         assert dggs.cell_to_polygon(cell).is_valid
-        assert dggs.are_neighbor_cells(cell, dggs.edge_neighbors(cell)).all()
+        assert all(dggs.are_neighbor_cells(cell, dggs.edge_neighbors(cell)))
 
 
 # --------------------------------------------------------------------------

@@ -38,14 +38,14 @@ PARALLEL_MIN = 8192
 def _configure() -> int:
     env = os.environ.get("DGGS_THREADS")
     if not env:
-        return int(numba.config.NUMBA_NUM_THREADS)
+        return int(numba.config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]
     try:
         wanted = int(env)
     except ValueError:
         raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer") from None
     if wanted < 1:
         raise DggsValueError(f"DGGS_THREADS {env!r} must be a positive integer")
-    n = min(wanted, int(numba.config.NUMBA_NUM_THREADS))
+    n = min(wanted, int(numba.config.NUMBA_NUM_THREADS))  # type: ignore[attr-defined]
     if n > 1:  # one thread never starts the pool: every loop takes its serial version
         numba.set_num_threads(n)
     return n
