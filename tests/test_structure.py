@@ -1,0 +1,202 @@
+"""The package's layering, checked statically from the source (ast; nothing of dggs is imported).
+
+Source folders and the names they are installed under: ``dggs/`` (``dggs``),
+``index/`` (``dggs.index``), ``storage/`` (``dggs.storage``).  Verb modules
+are the public-function modules of ``dggs.index``: ``ids`` and ``cellid``
+(the same file, being renamed), ``points``, ``hierarchy``, ``grid``,
+``vertex``, ``lines``, ``polyfill``, ``measure``.
+
+The rules:
+
+(a) No module imports a private (underscore) name from a verb module:
+    not ``from dggs.index.grid import _pair``, not ``from .grid import _pair``,
+    not ``grid._pair`` after ``from . import grid`` (or ``import
+    dggs.index.grid as grid``).  What verbs share lives in a private module.
+(b) Verbs contain no single-id shortcut of their own: no comparison whose
+    operand is a call of ``type(...)`` (``type(x) is str``, ``type(x) in
+    (...)``), no ``isinstance`` call whose second argument names ``str`` or
+    ``int``, and no call to a converter's scalar helpers (a called name
+    containing ``scalar_id``, starting ``one_`` or ending ``_of``).  The
+    single-id fast path lives in ``dggs.index._convert``.
+(c) Only ``dggs.index`` modules import the kernel: ``dggs.index._kernel``,
+    any ``dggs.index._k*`` module, ``dggs.index._bits`` and
+    ``dggs.index._codec``.  ``dggs/arrow.py``, ``dggs/server/*``,
+    ``storage/*`` and the rest go through the verbs or the converter and
+    shape modules (``dggs.index._convert``, ``dggs.index._shapes``).
+(d) The geometry floor: ``dggs/geometry/*`` imports nothing from ``dggs``
+    but ``dggs.errors`` and ``dggs.geometry.*``.
+(e) Every module is at most 400 lines.
+
+Each check lists every offence as ``file:line: what``.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGES = {"dggs": ROOT / "dggs", "dggs.index": ROOT / "index", "dggs.storage": ROOT / "storage"}
+VERBS = {f"dggs.index.{m}" for m in ("ids", "cellid", "points", "hierarchy", "grid", "vertex", "lines", "polyfill", "measure")}
+MAX_LINES = 400
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for pkg, folder in PACKAGES.items():
+        for path in sorted(folder.rglob("*.py")):
+            rel = path.relative_to(folder).with_suffix("")
+            parts = [p for p in rel.parts if p != "__init__"]
+            if pkg == "dggs" and parts and parts[0] in ("index", "storage", "experiments"):
+                continue
+            out[".".join([pkg, *parts])] = path
+    return out
+
+
+MODULES = _modules()
+TREES = {name: ast.parse(path.read_text(encoding="utf-8"), str(path)) for name, path in MODULES.items()}
+
+
+def _where(module: str, node: ast.AST) -> str:
+    return f"{MODULES[module].relative_to(ROOT)}:{getattr(node, 'lineno', 0)}"
+
+
+def _package_of(module: str) -> str:
+    return module if MODULES[module].name == "__init__.py" else module.rpartition(".")[0]
+
+
+def _resolve(module: str, node: ast.ImportFrom) -> str:
+    """The absolute module an ``ImportFrom`` reads from."""
+    if not node.level:
+        return node.module or ""
+    base = _package_of(module).split(".")
+    base = base[: len(base) - (node.level - 1)]
+    return ".".join(base + ([node.module] if node.module else []))
+
+
+def _imports(module: str):
+    """(node, absolute module name, bound name or None) for every import in a module."""
+    for node in ast.walk(TREES[module]):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                yield node, alias.name, alias.asname
+        elif isinstance(node, ast.ImportFrom):
+            source = _resolve(module, node)
+            for alias in node.names:
+                yield node, source, None
+                yield node, f"{source}.{alias.name}", alias.asname or alias.name  # a submodule, if it is one
+
+
+def _report(offences: list[str]) -> None:
+    for line in offences:
+        print(line)
+    assert not offences, f"{len(offences)} offences:\n" + "\n".join(offences)
+
+
+def test_no_private_names_from_verb_modules():
+    offences = []
+    for module, tree in TREES.items():
+        bound_verbs = {}
+        for node, name, bound in _imports(module):
+            if isinstance(node, ast.ImportFrom) and name in VERBS and bound:
+                bound_verbs[bound] = name
+            if isinstance(node, ast.Import) and name in VERBS:
+                bound_verbs[bound or name] = name
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and _resolve(module, node) in VERBS:
+                for alias in node.names:
+                    if alias.name.startswith("_"):
+                        offences.append(f"{_where(module, node)}: imports {alias.name} from {_resolve(module, node)}")
+            if isinstance(node, ast.Attribute) and node.attr.startswith("_") and not node.attr.startswith("__"):
+                target = ast.unparse(node.value)
+                if target in bound_verbs:
+                    offences.append(f"{_where(module, node)}: uses {target}.{node.attr} of {bound_verbs[target]}")
+    _report(offences)
+
+
+def _calls_type(node: ast.AST) -> bool:
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "type"
+
+
+def _called_name(node: ast.Call) -> str:
+    if isinstance(node.func, ast.Name):
+        return node.func.id
+    if isinstance(node.func, ast.Attribute):
+        return node.func.attr
+    return ""
+
+
+def test_verbs_have_no_single_id_shortcut():
+    offences = []
+    for module in sorted(VERBS & set(TREES)):
+        for node in ast.walk(TREES[module]):
+            if isinstance(node, ast.Compare) and any(_calls_type(x) for x in [node.left, *node.comparators]):
+                offences.append(f"{_where(module, node)}: type comparison `{ast.unparse(node)}`")
+            if isinstance(node, ast.Call):
+                name = _called_name(node)
+                if name == "isinstance" and len(node.args) == 2:
+                    names = {n.id for n in ast.walk(node.args[1]) if isinstance(n, ast.Name)}
+                    if names & {"str", "int"}:
+                        offences.append(f"{_where(module, node)}: `{ast.unparse(node)}`")
+                if "scalar_id" in name or name.startswith("one_") or name.endswith("_of"):
+                    offences.append(f"{_where(module, node)}: scalar helper call `{ast.unparse(node.func)}(...)`")
+    _report(offences)
+
+
+def _is_kernel(name: str) -> bool:
+    if not name.startswith("dggs.index."):
+        return False
+    first = name[len("dggs.index.") :].split(".")[0]
+    return first.startswith("_k") or first in ("_bits", "_codec")
+
+
+def test_only_the_index_package_imports_the_kernel():
+    offences = []
+    for module in TREES:
+        if module == "dggs.index" or module.startswith("dggs.index."):
+            continue
+        for node, name, _ in _imports(module):
+            if _is_kernel(name):
+                offences.append(f"{_where(module, node)}: {module} imports {name}")
+    _report(sorted(set(offences)))
+
+
+def test_geometry_imports_only_errors_and_geometry():
+    offences = []
+    for module in TREES:
+        if not module.startswith("dggs.geometry"):
+            continue
+        for node in ast.walk(TREES[module]):
+            if isinstance(node, ast.Import):
+                sources = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                source = _resolve(module, node)
+                sources = [f"{source}.{a.name}" if source == "dggs" else source for a in node.names]
+            else:
+                continue
+            for source in sources:
+                if source.split(".")[0] != "dggs":
+                    continue
+                if source == "dggs.errors" or source == "dggs.geometry" or source.startswith("dggs.geometry."):
+                    continue
+                offences.append(f"{_where(module, node)}: {module} imports {source}")
+    _report(offences)
+
+
+@pytest.mark.parametrize("folder", list(PACKAGES.values()), ids=list(PACKAGES))
+def test_modules_are_at_most_400_lines(folder):
+    offences = []
+    for module, path in MODULES.items():
+        if path.is_relative_to(folder):
+            n = len(path.read_text(encoding="utf-8").splitlines())
+            if n > MAX_LINES:
+                offences.append(f"{path.relative_to(ROOT)}:{n}: {n} lines, over {MAX_LINES}")
+    _report(offences)
+
+
+def test_the_checks_see_the_package():
+    """The folders are where the checks look (an empty scan would pass every rule)."""
+    assert "dggs.index.grid" in MODULES and "dggs.storage.store" in MODULES and "dggs.geometry.snyder" in MODULES
+    assert VERBS & set(MODULES)
