@@ -7,6 +7,7 @@ verbs call them before any work, on every path.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -15,12 +16,13 @@ from dggs.errors import DggsValueError, LevelError, TooManyCellsError
 
 from ._kernel.bits import MAX_LEVEL
 
-__all__ = ["MAX_CELLS", "K_LIMIT", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "is_level_input"]
+__all__ = ["MAX_CELLS", "K_LIMIT", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows"]
 
 #: Default limit on the cells one call may return (400 MB of integer ids).
 MAX_CELLS = 50_000_000
 #: Largest ``k`` (and ``max_steps``) the kernels take; a disk of this radius covers the globe at every level.
 K_LIMIT = 1 << 31
+_INT64_MAX = (1 << 63) - 1
 #: Most points a caller may ask for along one edge.
 DENSIFY_LIMIT = 100_000
 
@@ -63,7 +65,7 @@ def check_max_cells(max_cells: Any) -> int:
         return MAX_CELLS
     if not _is_int(max_cells) or max_cells < 0:
         raise DggsValueError(f"max_cells {max_cells!r} must be a non-negative integer (or None for {MAX_CELLS:,})")
-    return int(max_cells)
+    return min(int(max_cells), _INT64_MAX)  # more than any call can return: no limit, in a kernel's integer
 
 
 def check_size(total: int, max_cells: Any, what: str) -> None:
@@ -127,19 +129,37 @@ def check_densify(densify: Any) -> int:
     return int(densify)
 
 
-def is_level_input(value: Any) -> bool:
-    """Small integers are levels; strings, ids (>= 2**62) and containers of them are cells."""
-    if isinstance(value, (bool, np.bool_)):
-        return True  # check_level refuses it with a LevelError
-    if isinstance(value, (int, np.integer)):
-        return int(value) < 2**62
-    if isinstance(value, np.ndarray) and value.dtype.kind in "iu":
-        return bool(value.size) and int(value.max()) < 2**62
-    if isinstance(value, (list, tuple)) and len(value):
-        try:
-            items = np.asarray(value, dtype=object).ravel()
-        except ValueError:  # ragged: judged (and refused) as cells
-            return False
-        if items.size and all(isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in items):
-            return int(max(items)) < 2**62
-    return False
+def property_rows(properties: Any, n: int) -> Iterator[dict[str, Any]]:
+    """One dict of plain (JSON-ready) values per cell from columns or rows of properties.
+
+    Raises
+    ------
+    DggsValueError
+        ``properties`` are neither a dict of columns nor a sequence of dicts, or
+        do not give one value (row) per cell.
+    """
+    if properties is None:
+        return ({} for _ in range(n))
+    if isinstance(properties, dict):
+        bad = [k for k, v in properties.items() if isinstance(v, (str, bytes)) or not hasattr(v, "__len__")]
+        if bad:
+            raise DggsValueError(f"property {bad[0]!r} must be a column (a sequence of {n} values), not {properties[bad[0]]!r}")
+        cols = {k: list(v) for k, v in properties.items()}
+        for k, col in cols.items():
+            if len(col) != n:
+                raise DggsValueError(f"property {k!r} has {len(col)} values for {n} cells")
+        return ({k: _plain(col[i]) for k, col in cols.items()} for i in range(n))
+    if isinstance(properties, (str, bytes)) or not hasattr(properties, "__iter__"):
+        raise DggsValueError(f"properties must be a dict of columns or a list of dicts, not {properties!r}")
+    listed = list(properties)
+    if len(listed) != n:
+        raise DggsValueError(f"properties has {len(listed)} rows for {n} cells")
+    odd = next((r for r in listed if not hasattr(r, "keys")), None)
+    if odd is not None:
+        raise DggsValueError(f"properties rows must be dicts, not {odd!r}")
+    return ({k: _plain(v) for k, v in dict(r).items()} for r in listed)
+
+
+def _plain(v: Any) -> Any:
+    """numpy scalars -> Python scalars, for JSON."""
+    return v.item() if isinstance(v, np.generic) else v

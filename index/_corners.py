@@ -17,7 +17,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError
 
-from ._convert import name_of, parse_str
+from ._convert import id_name, parse_str
 from ._kernel import grid as kg
 from ._shapes import boundaries
 
@@ -76,7 +76,7 @@ def fans(ids: np.ndarray, corner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         came_by_m = nb[rows, m] == cur[active]
         edge[active] = np.where(came_by_m, (m + 2) % 3, m)
         cur[active] = nxt
-    raise RuntimeError(f"walk around a corner of cell {name_of(ids[active[0]])!r} did not close")
+    raise RuntimeError(f"walk around a corner of cell {id_name(ids[active[0]])!r} did not close")
 
 
 def all_fans(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -99,7 +99,7 @@ def vertex_keys(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def format_vertex(owner: int, index: int) -> str:
-    return f"{name_of(owner)}:{index}"
+    return f"{id_name(owner)}:{index}"
 
 
 def parse_vertex(vertex: Any) -> tuple[int, int]:

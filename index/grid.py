@@ -17,15 +17,12 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelMismatchError
 
 from ._checks import K_LIMIT, check_k, check_max_cells, check_radius, check_size
-from ._convert import ROWS, VALUE, Op, apply, apply_pair, name_of
+from ._convert import ROWS, VALUE, Op, apply, apply_pair, id_name
+from ._kernel import distance as kd
 from ._kernel import grid as kg
 from ._kernel import hierarchy as kh
 
 __all__ = ["edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "grid_distance"]
-
-#: Largest k whose disk the single-id entry takes (a row on the stack of the kernel, 3k(k+1)+1 cells).
-_ONE_DISK_K = 64
-
 
 def _neighbours(ids: np.ndarray) -> np.ndarray:
     out = np.empty((ids.shape[0], 3), dtype=np.uint64)
@@ -51,31 +48,24 @@ def _rows(loop: Any, width: Callable[[int], int], what: str) -> Any:
     return rows
 
 
-def _one_disk(cell: int, k: int, max_cells: int) -> np.ndarray:
-    """The disk of one id, if the kernel's single-id entry takes it and it is within ``max_cells``."""
-    if k > _ONE_DISK_K or kg.disk_size_bound(k) > max_cells:
-        return np.empty(0, dtype=np.uint64)  # a miss: the general path checks and explains
-    return kg.disk_of(cell, k)
-
-
 def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
     la, lb = kh.levels(a), kh.levels(b)
     if (la != lb).any():
         i = int(np.flatnonzero(la != lb)[0])
         raise LevelMismatchError(
-            f"cells {name_of(a[i])!r} (level {la[i]}) and {name_of(b[i])!r} (level {lb[i]}) are at different levels"
+            f"cells {id_name(a[i])!r} (level {la[i]}) and {id_name(b[i])!r} (level {lb[i]}) are at different levels"
         )
     dist = np.empty(a.shape[0], dtype=np.int64)
-    kg.distances(a.shape[0], a, b, max_steps, dist)
+    kd.distances(a.shape[0], a, b, max_steps, dist)
     if (dist < 0).any():
         i = int(np.flatnonzero(dist < 0)[0])
-        raise DggsValueError(f"cells {name_of(a[i])!r} and {name_of(b[i])!r} are more than {max_steps} steps apart")
+        raise DggsValueError(f"cells {id_name(a[i])!r} and {id_name(b[i])!r} are more than {max_steps} steps apart")
     return dist
 
 
 _NEIGHBOURS = Op(many=_neighbours, out=ROWS)
 _ARE_NEIGHBOURS = Op(many=_are_neighbours, out=VALUE)
-_DISK = Op(many=_rows(kg.disk, kg.disk_size_bound, "grid_disk"), out=ROWS, one=_one_disk)
+_DISK = Op(many=_rows(kg.disk, kg.disk_size_bound, "grid_disk"), out=ROWS, one=kg.disk_of)
 _RING = Op(many=_rows(kg.ring, kg.ring_size_bound, "grid_ring"), out=ROWS)
 _DISTANCE = Op(many=_distances, out=VALUE)
 

@@ -14,7 +14,8 @@ import numpy as np
 from dggs.errors import LevelMismatchError
 
 from ._checks import MAX_CELLS, check_level, check_max_cells, check_size
-from ._convert import CELL, FLAT, VALUE, Op, apply, is_valid_any, name_of
+from ._convert import CELL, FLAT, VALUE, Op, apply, is_valid_any, id_name
+from ._kernel import compact as kc
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 from ._kernel.bits import FACE_SHIFT, MARKER, MAX_LEVEL
@@ -38,7 +39,7 @@ __all__ = [
 def _level_error(ids: np.ndarray, bad: int, message: str) -> LevelMismatchError:
     """The error naming cell ``ids[bad]`` and its level: ``message`` has ``{cell}`` and ``{level}``."""
     level = int(kh.levels(ids[bad : bad + 1])[0])
-    return LevelMismatchError(message.format(cell=name_of(ids[bad]), level=level))
+    return LevelMismatchError(message.format(cell=id_name(ids[bad]), level=level))
 
 
 def _levels(ids: np.ndarray) -> np.ndarray:
@@ -91,7 +92,7 @@ def _center_children(ids: np.ndarray, level: int) -> np.ndarray:
 
 
 def _uncompact(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
-    cover, total, bad = kh.uncompact_prepare(ids, level)
+    cover, total, bad = kc.uncompact_prepare(ids, level)
     if bad >= 0:
         raise _level_error(ids, bad, f"cell {{cell!r}} at level {{level}} is finer than level {level}")
     check_size(total, max_cells, "uncompact_cells")
@@ -105,7 +106,7 @@ _FACE = Op(many=_faces, out=VALUE)
 _PARENT = Op(many=_parents, out=CELL, one=kh.parent_of)
 _CHILDREN = Op(many=_children, out=FLAT)
 _CENTER_CHILD = Op(many=_center_children, out=CELL)
-_COMPACT = Op(many=kh.compact, out=FLAT)
+_COMPACT = Op(many=kc.compact, out=FLAT)
 _UNCOMPACT = Op(many=_uncompact, out=FLAT)
 
 

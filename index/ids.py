@@ -79,9 +79,9 @@ def int_to_str(ids: Any) -> Any:
     Parameters
     ----------
     ids : int, str, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
-        Integer ids (string ids are checked and returned unchanged).  The null
-        id 0 (the padding of :func:`dggs.grid_disk` rows) becomes ``""`` (a
-        null in pyarrow).
+        Integer ids (string ids are checked and returned unchanged).  In a
+        numpy array the null id 0 (the padding of :func:`dggs.grid_disk` rows)
+        becomes ``""``.
 
     Returns
     -------

@@ -18,7 +18,7 @@ import numpy as np
 from dggs.errors import CoordinateError, DggsValueError
 
 from ._checks import check_level, check_size
-from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, ids_array, name_of, pair_kind, values_out
+from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, ids_array, id_name, pair_kind, values_out
 from ._corners import fans
 from ._kernel import grid as kg
 from ._kernel import points as kp
@@ -185,7 +185,7 @@ def _around_corner(a: int, b: int) -> list[int]:
             if best is None or len(way) < len(best):
                 best = way
     if best is None:
-        raise RuntimeError(f"cells {name_of(a)!r} and {name_of(b)!r} share no corner")
+        raise RuntimeError(f"cells {id_name(a)!r} and {id_name(b)!r} share no corner")
     return best
 
 

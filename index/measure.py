@@ -9,8 +9,8 @@ import numpy as np
 from dggs.errors import DggsValueError
 from dggs.geometry.authalic import WGS84
 
-from ._checks import check_level, is_level_input
-from ._convert import VALUE, Op, apply
+from ._checks import check_level
+from ._convert import VALUE, Op, apply, levels_in, values_out
 from ._kernel import hierarchy as kh
 from ._kernel.bits import MAX_LEVEL
 
@@ -58,12 +58,11 @@ def cell_area(cell_or_level, unit: str = "m^2"):
     """
     if unit not in (*_UNITS, "rads^2"):
         raise DggsValueError(f"unit {unit!r} is not one of m^2, km^2, rads^2")
-    if is_level_input(cell_or_level):
-        scalar = np.ndim(cell_or_level) == 0
-        level = np.array([check_level(v) for v in np.atleast_1d(np.asarray(cell_or_level, dtype=object)).ravel()])
-        shape = np.shape(cell_or_level)
-        area = _areas_of_levels(level, unit)
-        return float(area[0]) if scalar else area.reshape(shape)
+    levels = levels_in(cell_or_level)
+    if levels is not None:
+        values, kind = levels
+        checked = np.array([check_level(v) for v in values.tolist()], dtype=np.int64)
+        return values_out(_areas_of_levels(checked, unit), kind)
     return apply(_AREA, cell_or_level, unit)
 
 

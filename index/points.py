@@ -7,7 +7,6 @@ str gives a str, an int an int, and any array or column the same kind back.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
@@ -16,7 +15,7 @@ from shapely.geometry import MultiPolygon, Polygon, mapping
 
 from dggs.errors import DggsValueError
 
-from ._checks import check_densify, check_level
+from ._checks import check_densify, check_level, property_rows
 from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
 from ._convert import CELL as _CELL
 from ._kernel import hierarchy as kh
@@ -201,28 +200,7 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     ids, kind = cells_in(cells)
     polys = geometries(ids, None if densify is None else check_densify(densify))
     n = ids.shape[0]
-    rows: Iterable[dict]
-    if properties is None:
-        rows = ({} for _ in range(n))
-    elif isinstance(properties, dict):
-        bad = [k for k, v in properties.items() if isinstance(v, (str, bytes)) or not hasattr(v, "__len__")]
-        if bad:
-            raise DggsValueError(f"property {bad[0]!r} must be a column (a sequence of {n} values), not {properties[bad[0]]!r}")
-        cols = {k: list(v) for k, v in properties.items()}
-        for k, col in cols.items():
-            if len(col) != n:
-                raise DggsValueError(f"property {k!r} has {len(col)} values for {n} cells")
-        rows = ({k: _plain(col[i]) for k, col in cols.items()} for i in range(n))
-    else:
-        if isinstance(properties, (str, bytes)) or not hasattr(properties, "__iter__"):
-            raise DggsValueError(f"properties must be a dict of columns or a list of dicts, not {properties!r}")
-        listed = list(properties)
-        if len(listed) != n:
-            raise DggsValueError(f"properties has {len(listed)} rows for {n} cells")
-        odd = next((r for r in listed if not hasattr(r, "keys")), None)
-        if odd is not None:
-            raise DggsValueError(f"properties rows must be dicts, not {odd!r}")
-        rows = ({k: _plain(v) for k, v in dict(r).items()} for r in listed)
+    rows = property_rows(properties, n)
     lv = kh.levels(ids)
     as_str = kind.form == "str"
     features = []
@@ -243,8 +221,3 @@ def _orient(poly):
     if isinstance(poly, Polygon):
         return shapely.geometry.polygon.orient(poly, 1.0)
     return MultiPolygon([shapely.geometry.polygon.orient(p, 1.0) for p in poly.geoms])
-
-
-def _plain(v):
-    """numpy scalars -> Python scalars, for JSON."""
-    return v.item() if isinstance(v, np.generic) else v

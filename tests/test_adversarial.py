@@ -246,8 +246,8 @@ def test_containers_of_ids(data, func):
         elif func == "edge_neighbors" and isinstance(obj, np.ndarray):
             assert res.shape == shape + (3,)
         elif func == "cell_to_boundary":  # the input's container, of (lat, lng) rows
-            plain = res.to_pylist() if hasattr(res, "to_pylist") else res.tolist() if hasattr(res, "index") else res
-            assert np.shape(plain) == shape + (3, 2)
+            plain = res.to_pylist() if hasattr(res, "to_pylist") else res.tolist() if isinstance(res, pd.Series) else res
+            assert np.shape(plain) == shape + (3, 2) or (plain == [] and shape == (0,))  # an empty list: []
         elif func == "str_to_int":
             assert dggs.int_to_str(res) is not None and len(res) == len(obj)
     elif valid_flat.all():
@@ -483,8 +483,8 @@ def test_pairs_of_lists_of_different_lengths():
         dggs.are_neighbor_cells(["C401", "C402"], ["C400", "C401", "C402"])
     with pytest.raises(dggs.DggsValueError, match=r"4 cells \(shape \(2, 2\)\) with 3 cells"):
         dggs.grid_distance(np.full((2, 2), "C401"), ["C400", "C401", "C402"])
-    assert dggs.grid_distance([], "A0").shape == (0,)
-    assert dggs.are_neighbor_cells(["C401"], ["C402", "C400"]).tolist() == [True, True]
+    assert dggs.grid_distance([], "A0") == []  # a list in, a list out
+    assert dggs.are_neighbor_cells(["C401"], ["C402", "C400"]) == [True, True]
 
 
 # --------------------------------------------------------------------------
@@ -499,16 +499,16 @@ def test_item16_regressions():
         dggs.get_level(b"\xff")
     with pytest.raises(dggs.InvalidCellError, match=r"b'\\xff'"):
         dggs.str_to_int([b"\xff"])
-    assert dggs.get_level(b"A01") == 2 and dggs.get_level([b"A01"]).tolist() == [2]
+    assert dggs.get_level(b"A01") == 2 and dggs.get_level([b"A01"]) == [2]
     with pytest.raises(dggs.InvalidCellError, match="b'A0x'"):
         dggs.get_level(np.array([b"A0x"]))
-    assert dggs.cell_to_boundary([]).shape == (0, 3, 2)
-    assert dggs.cell_to_latlng([])[0].shape == (0,)
+    assert dggs.cell_to_boundary([]) == [] and dggs.cell_to_boundary(np.array([], dtype=str)).shape == (0, 3, 2)
+    assert dggs.cell_to_latlng([]) == ([], []) and dggs.cell_to_latlng(np.array([], dtype=str))[0].shape == (0,)
     for bad in (["A0\x00"], np.array(["A0\x00"], dtype=object), pa.array(["A0\x00"]), pd.Series(["A0\x00"], dtype="string"),
                 np.array(["A\x000"]), np.array(["A0\x00"], dtype=np.dtypes.StringDType()), "A0\x00"):
         with pytest.raises(dggs.InvalidCellError, match=r"'A0?\\x000?'"):
             dggs.get_level(bad)
-    assert dggs.cell_area([[]]).shape == (1, 0)
+    assert dggs.cell_area([[]]) == [[]] and dggs.cell_area(np.zeros((1, 0), dtype=str)).shape == (1, 0)
     with pytest.raises(dggs.TooManyCellsError, match="k=1180591620717411303424"):
         dggs.grid_disk("C401", 1 << 70)
     with pytest.raises(dggs.LevelError, match="1180591620717411303424"):

@@ -106,7 +106,10 @@ def py(v):
     if isinstance(v, np.generic):
         return py(v.item())
     if isinstance(v, bytes):
-        return v.decode()
+        try:
+            return v.decode("ascii")
+        except UnicodeDecodeError:  # WKB (a geometry out of a pyarrow input): as the geometry's WKB hex
+            return shapely.from_wkb(v).wkb_hex
     if isinstance(v, shapely.Geometry):
         return v.wkb_hex
     return v

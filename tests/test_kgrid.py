@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from dggs.index._kernel import distance as KD
 from dggs.index._kernel import grid as K
 from dggs.index._kernel.grid_tables import chart_distance
 from hypothesis import given
@@ -331,11 +332,11 @@ def test_distance_equals_bfs_within_8():
     cells = sample_origins()[::2]
     a, b, d = map(np.array, zip(*pairs_within(8, cells, 4, seed=1)))
     a, b = a.astype(np.uint64), b.astype(np.uint64)
-    got = [K.distance(x, y, 100) for x, y in zip(a, b)]
+    got = [KD.distance(x, y, 100) for x, y in zip(a, b)]
     assert got == d.tolist()
-    assert [K.distance(y, x, 100) for x, y in zip(a, b)] == d.tolist()  # symmetric
+    assert [KD.distance(y, x, 100) for x, y in zip(a, b)] == d.tolist()  # symmetric
     out = np.zeros(len(a), dtype=np.int64)
-    K.distances.threaded(a, b, 100, out)
+    KD.distances.threaded(a, b, 100, out)
     assert out.tolist() == d.tolist()
 
 
@@ -346,8 +347,8 @@ def test_distance_equals_bfs_far(level):
     cells = random_cells(rng, 6, [level]) + vertex_cells((level,))[::23]
     charted = 0
     for a, b, d in pairs_within(30, cells, 3, seed=level):
-        assert K.distance(np.uint64(a), np.uint64(b), 1000) == d
-        assert K.distance(np.uint64(b), np.uint64(a), 1000) == d
+        assert KD.distance(np.uint64(a), np.uint64(b), 1000) == d
+        assert KD.distance(np.uint64(b), np.uint64(a), 1000) == d
         c = chart_distance(np.uint64(a), np.uint64(b), level)
         assert c in (-1, d)  # the planar count, when the chart proves it, is the distance
         charted += c >= 0
@@ -362,22 +363,22 @@ def test_distance_random_walk(cell, steps, data):
     b = a
     for _ in range(steps):
         b = int(nbrs([b])[0, data.draw(st.integers(0, 2))])
-    d = K.distance(np.uint64(a), np.uint64(b), 1000)
+    d = KD.distance(np.uint64(a), np.uint64(b), 1000)
     assert 0 <= d <= steps
     assert d == bfs_distance(a, b)
-    assert K.distance(np.uint64(b), np.uint64(a), 1000) == d
+    assert KD.distance(np.uint64(b), np.uint64(a), 1000) == d
 
 
 def test_distance_same_cell_and_max_steps():
     for c in ["A", "C401", "T5" + "2" * 27]:
-        assert K.distance(np.uint64(s2i(c)), np.uint64(s2i(c)), 0) == 0
+        assert KD.distance(np.uint64(s2i(c)), np.uint64(s2i(c)), 0) == 0
     a, b = s2i("C4" + "1" * 15), s2i("C4" + "1" * 14 + "0")
     d = bfs_distance(a, b)
-    assert d == 1 and K.distance(np.uint64(a), np.uint64(b), 0) == -1
+    assert d == 1 and KD.distance(np.uint64(a), np.uint64(b), 0) == -1
     far = [int(v) for v in bfs_rings(a, 12)[12]]
-    assert K.distance(np.uint64(a), np.uint64(far[0]), 11) == -1
-    assert K.distance(np.uint64(a), np.uint64(far[0]), 12) == 12
+    assert KD.distance(np.uint64(a), np.uint64(far[0]), 11) == -1
+    assert KD.distance(np.uint64(a), np.uint64(far[0]), 12) == 12
     v = s2i("A0" + "2" * 9)  # at an icosahedron vertex: the search path
     far = sorted(bfs_rings(v, 10)[10])
-    assert K.distance(np.uint64(v), np.uint64(far[0]), 9) == -1
-    assert K.distance(np.uint64(v), np.uint64(far[0]), 10) == 10
+    assert KD.distance(np.uint64(v), np.uint64(far[0]), 9) == -1
+    assert KD.distance(np.uint64(v), np.uint64(far[0]), 10) == 10

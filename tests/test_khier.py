@@ -12,6 +12,7 @@ from collections import defaultdict
 
 import numpy as np
 import pytest
+from dggs.index._kernel import compact as KC
 from dggs.index._kernel import hierarchy as K
 from hypothesis import given
 from hypothesis import strategies as st
@@ -346,8 +347,8 @@ def test_empty_inputs():
     assert K.parents(e, 3)[0].size == 0 and K.parents_up(e)[1] == -1
     assert K.count_children(e, 5) == (0, -1)
     assert K.children(e, 5, e) == -1
-    assert K.compact(e).size == 0
-    out, bad = K.uncompact(e, 5)
+    assert KC.compact(e).size == 0
+    out, bad = KC.uncompact(e, 5)
     assert out.size == 0 and bad == -1
 
 
@@ -356,7 +357,7 @@ def test_empty_inputs():
 
 @given(cell_soups())
 def test_compact_matches_set_oracle(cs):
-    out = K.compact(arr(cs))
+    out = KC.compact(arr(cs))
     assert out.dtype == np.uint64
     assert strs(out) == o_compact(cs)
     assert np.all(out[1:] > out[:-1])
@@ -364,26 +365,26 @@ def test_compact_matches_set_oracle(cs):
 
 @given(st.lists(cells(), max_size=30))
 def test_compact_random_cells(cs):
-    assert strs(K.compact(arr(cs))) == o_compact(cs)
+    assert strs(KC.compact(arr(cs))) == o_compact(cs)
 
 
 def test_compact_pinned():
-    assert strs(K.compact(arr(["C4010", "C4011", "C4012", "C402"]))) == ["C401", "C402"]
-    assert strs(K.compact(arr(["A0", "A1", "A2", "A3", "A4", "A5"]))) == ["A"]
-    assert strs(K.compact(arr(["A0", "A1", "A2", "A3", "A4"]))) == ["A0", "A1", "A2", "A3", "A4"]
+    assert strs(KC.compact(arr(["C4010", "C4011", "C4012", "C402"]))) == ["C401", "C402"]
+    assert strs(KC.compact(arr(["A0", "A1", "A2", "A3", "A4", "A5"]))) == ["A"]
+    assert strs(KC.compact(arr(["A0", "A1", "A2", "A3", "A4"]))) == ["A0", "A1", "A2", "A3", "A4"]
     # the first and last siblings present, a middle one only in part: no merge
-    assert strs(K.compact(arr(["C40", "C411", "C42"]))) == ["C40", "C411", "C42"]
+    assert strs(KC.compact(arr(["C40", "C411", "C42"]))) == ["C40", "C411", "C42"]
     partial = ["A0", "A1", "A2", "A3", "A41", "A5"]
-    assert strs(K.compact(arr(partial))) == partial
-    assert strs(K.compact(arr(["A0", "A1", "A2", "A3", "A40", "A41", "A42", "A5"]))) == ["A"]
+    assert strs(KC.compact(arr(partial))) == partial
+    assert strs(KC.compact(arr(["A0", "A1", "A2", "A3", "A40", "A41", "A42", "A5"]))) == ["A"]
     # a merged parent completes its own set, through the level-1 sextet into the base cell
-    assert strs(K.compact(arr(o_children("T", 4)))) == ["T"]
-    assert strs(K.compact(arr(["C40", "C410", "C411", "C412", "C42"]))) == ["C4"]
+    assert strs(KC.compact(arr(o_children("T", 4)))) == ["T"]
+    assert strs(KC.compact(arr(["C40", "C410", "C411", "C412", "C42"]))) == ["C4"]
     all_level1 = [f + d for f in FACES for d in "012345"]
-    assert strs(K.compact(arr(all_level1[::-1]))) == list(FACES)
+    assert strs(KC.compact(arr(all_level1[::-1]))) == list(FACES)
     deep = "T5" + "2" * 26
-    assert strs(K.compact(arr(o_children(deep, 28)[::-1] + [deep + "1"]))) == [deep]
-    assert strs(K.compact(arr(["C401", "C4", "C4", "C40122", "A"]))) == ["A", "C4"]
+    assert strs(KC.compact(arr(o_children(deep, 28)[::-1] + [deep + "1"]))) == [deep]
+    assert strs(KC.compact(arr(["C401", "C4", "C4", "C40122", "A"]))) == ["A", "C4"]
 
 
 def test_compact_large_shuffled():
@@ -396,9 +397,9 @@ def test_compact_large_shuffled():
     cs = cs + noise + cs[:100]
     ids = arr(cs)
     rng.shuffle(ids)
-    out = K.compact(ids)
+    out = KC.compact(ids)
     assert strs(out) == o_compact(cs)
-    cells_, total, bad = K.uncompact_prepare(ids, 28)
+    cells_, total, bad = KC.uncompact_prepare(ids, 28)
     kept = np.unique(ids)[_not_covered(np.unique(ids))]
     assert bad == -1 and np.array_equal(cells_, kept)
     assert total == sum(o_count(c, 28) for c in strs(kept))
@@ -420,37 +421,37 @@ def test_uncompact_matches_oracle(cs, extra):
     if sum(o_count(c, level) for c in set(cs)) > 20_000:
         return
     ids = arr(cs)
-    out, bad = K.uncompact(ids, level)
+    out, bad = KC.uncompact(ids, level)
     assert bad == -1
     assert strs(out) == o_uncompact(cs, level)
     assert np.all(out[1:] > out[:-1])
     # the two-step form gives the same, with the count known before allocating
-    cells_, total, bad = K.uncompact_prepare(ids, level)
+    cells_, total, bad = KC.uncompact_prepare(ids, level)
     assert bad == -1 and total == out.size
     buf = np.zeros(total, dtype=np.uint64)
     assert K.children(cells_, level, buf) == -1
     assert np.array_equal(buf, out)
     # round trip
-    assert np.array_equal(K.compact(out), K.compact(ids))
+    assert np.array_equal(KC.compact(out), KC.compact(ids))
 
 
 def test_uncompact_pinned():
-    assert strs(K.uncompact(arr(["C401", "C4020"]), 4)[0]) == ["C4010", "C4011", "C4012", "C4020"]
-    assert K.uncompact(arr(["T", "T3", "A", "T32"]), 1)[1] == 3  # "T32" is finer than level 1
-    out, bad = K.uncompact(arr(["T", "T3", "A"]), 1)
+    assert strs(KC.uncompact(arr(["C401", "C4020"]), 4)[0]) == ["C4010", "C4011", "C4012", "C4020"]
+    assert KC.uncompact(arr(["T", "T3", "A", "T32"]), 1)[1] == 3  # "T32" is finer than level 1
+    out, bad = KC.uncompact(arr(["T", "T3", "A"]), 1)
     assert bad == -1 and strs(out) == ["A" + d for d in "012345"] + ["T" + d for d in "012345"]
     deep = "T5" + "2" * 27
-    out, bad = K.uncompact(arr([deep, deep, deep[:-1]]), 28)
+    out, bad = KC.uncompact(arr([deep, deep, deep[:-1]]), 28)
     assert bad == -1 and strs(out) == o_children(deep[:-1], 28)
 
 
 def test_uncompact_error_is_input_position():
     """The error index refers to the unsorted input, first offender in input order."""
     ids = arr(["T", "C4012", "A", "B01", "C40"])
-    assert K.uncompact(ids, 2)[1] == 1
-    assert K.uncompact_prepare(ids, 2)[2] == 1
-    assert K.uncompact(ids, 3)[1] == 1
-    assert K.uncompact(ids, 4)[1] == -1
+    assert KC.uncompact(ids, 2)[1] == 1
+    assert KC.uncompact_prepare(ids, 2)[2] == 1
+    assert KC.uncompact(ids, 3)[1] == 1
+    assert KC.uncompact(ids, 4)[1] == -1
 
 
 def test_sorting_helper_matches_numpy():
@@ -466,14 +467,14 @@ def test_sorting_helper_matches_numpy():
     assert K.valid_mask(v).all()
     deep = v[lv == 28]
     v = np.concatenate([v, v[:1000]])
-    assert np.array_equal(K._radix_sort(v), np.sort(v))
-    assert np.array_equal(K._sorted(v), np.sort(v))
-    assert np.array_equal(K._radix_sort(deep), np.sort(deep))
+    assert np.array_equal(KC._radix_sort(v), np.sort(v))
+    assert np.array_equal(KC._sorted(v), np.sort(v))
+    assert np.array_equal(KC._radix_sort(deep), np.sort(deep))
     for span in range(1, 65):  # keys differing in `span` bits: every pass count and width
         for low in sorted({0, 64 - span, (64 - span) // 2}):
             keys = rng.integers(0, 2**63, 3000, dtype=np.uint64) << np.uint64(1)
             keys |= rng.integers(0, 2, 3000, dtype=np.uint64)
             keys = (keys >> np.uint64(64 - span)) << np.uint64(low)
-            assert np.array_equal(K._radix_sort(keys), np.sort(keys)), (span, low)
+            assert np.array_equal(KC._radix_sort(keys), np.sort(keys)), (span, low)
     same = np.full(5000, s2i("C401"), dtype=np.uint64)
-    assert np.array_equal(K._radix_sort(same), same)
+    assert np.array_equal(KC._radix_sort(same), same)

@@ -24,7 +24,7 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -121,7 +121,7 @@ def apply(op: Op, cells: Any, *args: Any, form: str | None = None, nulls: bool =
     form : {"str", "int"}, optional
         Give ids out in this form instead of the input's (the id converters).
     nulls : bool
-        Accept the null id 0 among integer ids (the padding of disk rows).
+        Accept the null id 0 in a numpy array of integer ids (the padding of disk rows).
 
     Returns
     -------
@@ -144,11 +144,20 @@ def apply(op: Op, cells: Any, *args: Any, form: str | None = None, nulls: bool =
 
 
 def pair_kind(ka: Kind, kb: Kind, shape: tuple[int, ...]) -> Kind:
-    """The kind of an answer about pairs: the first container's (a scalar only for two scalars)."""
-    kind = kb if ka.scalar else ka
-    if kind.scalar or kind.shape == shape:
-        return kind
-    return Kind("numpy", kind.form, shape)  # broadcasting made a new shape: a plain array
+    """The kind of an answer about pairs: a scalar for two scalars, else the first container of the result's shape.
+
+    Where broadcasting made a shape neither had, a list stays a list and
+    anything else becomes a numpy array.
+    """
+    if ka.scalar and kb.scalar:
+        return ka
+    for k in (ka, kb):
+        if not k.scalar and k.shape == shape:
+            return k
+    first = kb if ka.scalar else ka
+    if first.container in ("list", "tuple"):
+        return replace(first, shape=shape)
+    return Kind("numpy", first.form, shape)
 
 
 def pair(a: Any, b: Any) -> tuple[np.ndarray, np.ndarray, Kind]:

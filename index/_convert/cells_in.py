@@ -186,7 +186,8 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
     obj : str, int, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
         String ids or 64-bit integer ids (not a mix).
     nulls : bool
-        Accept the null id 0 among integer ids (it stays 0).
+        Accept the null id 0 in a numpy array of integer ids (it stays 0): the
+        padding of the rows :func:`dggs.grid_disk` gives.
 
     Returns
     -------
@@ -207,7 +208,7 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
         v, kind = (obj if strings.valid_int(obj) else 0), SCALAR_INT
     else:
         p = _parse_any(obj)
-        if nulls and p.bad >= 0 and p.kind.form == "int":
+        if nulls and p.bad >= 0 and p.kind.form == "int" and p.kind.container == "numpy":
             p.bad = int(codec.max_level(p.ids)[1])  # the first bad id that is not the null id
         return p.check()
     if not v:

@@ -87,6 +87,54 @@ _NOT_NUMBERS = (bool, np.bool_, str, bytes, np.str_, np.bytes_)
 _PLAIN_NUMBERS = {float, int, np.float64, np.float32, np.int64}
 
 
+_ID_START = 1 << 62  # every id is at least this: smaller integers are levels
+
+
+def _flat_values(obj: Any) -> tuple[np.ndarray, Kind] | None:
+    """The elements of a scalar or container as a flat numpy array, and its kind; None for anything else."""
+    found = _container(obj)
+    if found is None:
+        if isinstance(obj, (int, np.integer, bool, np.bool_)):
+            return np.array([obj], dtype=object), Kind("scalar", "int", (), True)
+        return None
+    c, extra = found
+    if c == "pandas":
+        return obj.to_numpy(), Kind("pandas", "int", (len(obj),), index=extra, name=getattr(obj, "name", None))
+    if c == "arrow":
+        pa = sys.modules["pyarrow"]
+        flat = obj.combine_chunks() if isinstance(obj, pa.ChunkedArray) else obj
+        return flat.to_numpy(zero_copy_only=False), Kind("arrow", "int", (len(obj),), chunked=bool(extra))
+    if c == "numpy":
+        return obj.reshape(-1), Kind("numpy", "int", obj.shape)
+    try:
+        arr = np.asarray(obj, dtype=object)
+    except ValueError:  # ragged
+        return None
+    return arr.reshape(-1), Kind("list", "int", arr.shape)
+
+
+def levels_in(obj: Any) -> tuple[np.ndarray, Kind] | None:
+    """Levels in any container (integers below 2**62, bools to be refused as levels), or None if they are ids.
+
+    Returns the flat elements (unchecked: the caller checks each level) and
+    the kind of container the answer goes out in.
+    """
+    flat = _flat_values(obj)
+    if flat is None or flat[0].size == 0:
+        return None
+    arr, kind = flat
+    if arr.dtype.kind == "b":
+        return arr, kind
+    if arr.dtype.kind in "iu":
+        return (arr, kind) if int(arr.max()) < _ID_START else None
+    if arr.dtype != object:
+        return None
+    items = arr.tolist()
+    if all(isinstance(v, (int, np.integer, bool, np.bool_)) for v in items) and max(int(v) for v in items) < _ID_START:
+        return arr, kind
+    return None
+
+
 def _as_numbers(value, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
     if (_container(value) or ("",))[0] == "arrow":

@@ -18,7 +18,7 @@ from dggs.errors import InvalidCellError
 from . import strings
 from .._kernel.bits import MAX_LEVEL
 
-__all__ = ["Kind", "as_form", "fail", "name_of"]
+__all__ = ["Kind", "as_form", "fail", "id_name"]
 
 _STR_REASON = f"expected a face letter A-T, a digit 0-5, then up to {MAX_LEVEL - 1} digits 0-2"
 _INT_REASON = "not a well-formed 64-bit id (the integer form of a string id, see dggs.str_to_int)"
@@ -101,6 +101,6 @@ def as_form(kind: Kind, form: str) -> Kind:
     return replace(kind, form=form, dtype=dt)
 
 
-def name_of(cell: Any) -> str:
+def id_name(cell: Any) -> str:
     """A cell id for an error message: its string form, or the number if it is no id."""
     return strings.format_int(int(cell)) or str(int(cell))

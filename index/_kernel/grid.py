@@ -33,15 +33,14 @@ from dggs.geometry._parallel import loops
 from . import grid_tables as _t
 from .bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL, level_of
 from .bits import is_valid as _bits_is_valid
-from .grid_tables import chart_distance, disk_size_bound, ring_size_bound
+from .grid_tables import disk_size_bound, ring_size_bound
 
 __all__ = [
     "are_neighbours",
     "disk",
     "disk_size_bound",
-    "distance",
-    "distances",
     "neighbours",
+    "next_ring",
     "ring",
     "ring_size_bound",
 ]
@@ -173,7 +172,7 @@ def _sort_small(a: np.ndarray, n: int) -> None:
 
 
 @njit(cache=True, nogil=True)
-def _next_ring(cur: np.ndarray, prev: np.ndarray, dest: np.ndarray, cand: np.ndarray) -> int:
+def next_ring(cur: np.ndarray, prev: np.ndarray, dest: np.ndarray, cand: np.ndarray) -> int:
     """Ring j + 1 from rings j and j - 1 (sorted): write it sorted into ``dest``, return its size.
 
     In a graph the neighbours of ring j lie in rings j - 1, j and j + 1, so the
@@ -311,7 +310,7 @@ def _ring_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
             a, b, nprev, ncur = 0, 1, 0, 1  # buffers of rings j - 1 and j
             for _ in range(k):
                 d = 3 - a - b
-                nn = _next_ring(bufs[b, :ncur], bufs[a, :nprev], bufs[d], cand)
+                nn = next_ring(bufs[b, :ncur], bufs[a, :nprev], bufs[d], cand)
                 if nn < 0 or nn > out.shape[1]:
                     ncur = -1
                     break
@@ -323,119 +322,22 @@ def _ring_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
         raise ValueError("a ring outgrew ring_size_bound(k)")
 
 
-# ---------------------------------------------------------------------------
-# Distances
-# ---------------------------------------------------------------------------
-@njit(cache=True, nogil=True)
-def _grow(buf: np.ndarray, need: int) -> np.ndarray:
-    if buf.shape[0] >= need:
-        return buf
-    new = np.empty(max(need, 2 * buf.shape[0]), dtype=np.uint64)
-    new[: buf.shape[0]] = buf
-    return new
-
-
-@njit(cache=True, nogil=True)
-def _intersects(x: np.ndarray, y: np.ndarray) -> bool:
-    i = 0
-    j = 0
-    while i < x.shape[0] and j < y.shape[0]:
-        if x[i] == y[j]:
-            return True
-        if x[i] < y[j]:
-            i += 1
-        else:
-            j += 1
-    return False
-
-
-@njit(cache=True, nogil=True)
-def _bfs_distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
-    """Bidirectional breadth-first search: rings from both ends, the smaller grows (O(d**2) cells).
-
-    Invariant: the distance exceeds ``ra + rb``.  Growing ring ``ra`` to ``ra + 1``,
-    a path of length ``ra + 1 + rb`` exists iff the new ring meets ring ``rb``.
-    """
-    if a == b:
-        return 0
-    bufs = [np.empty(64, dtype=np.uint64) for _ in range(6)]  # (prev, cur, next) per side
-    ns = np.zeros(6, dtype=np.int64)
-    radius = np.zeros(2, dtype=np.int64)
-    bufs[1][0], bufs[4][0] = a, b
-    ns[1] = ns[4] = 1
-    cand = np.empty(64, dtype=np.uint64)
-    while radius[0] + radius[1] < max_steps:
-        side = 0 if ns[1] <= ns[4] else 1
-        o = 3 * side
-        cand = _grow(cand, 3 * ns[o + 1])
-        bufs[o + 2] = _grow(bufs[o + 2], 3 * ns[o + 1])
-        n = _next_ring(bufs[o + 1][: ns[o + 1]], bufs[o][: ns[o]], bufs[o + 2], cand)
-        if n == 0:
-            return -1
-        bufs[o], bufs[o + 1], bufs[o + 2] = bufs[o + 1], bufs[o + 2], bufs[o]
-        ns[o], ns[o + 1] = ns[o + 1], n
-        radius[side] += 1
-        other = 3 - o
-        if _intersects(bufs[o + 1][:n], bufs[other + 1][: ns[other + 1]]):
-            return radius[0] + radius[1]
-    return -1
-
-
-@njit(cache=True, nogil=True)
-def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
-    """Edge steps on a shortest path between two valid cells of one level (the caller checks the levels).
-
-    Parameters
-    ----------
-    a, b : uint64
-        The cells.
-    max_steps : int
-        Give up beyond this distance.
-
-    Returns
-    -------
-    int
-        The distance, or -1 if it exceeds ``max_steps``.
-
-    Notes
-    -----
-    Exact.  Where a planar chart proves it (both cells on one face or two
-    adjacent faces, and the disk the count spans clear of the icosahedron
-    vertices: most pairs at fine levels) it is the number of separating mirror
-    lines, in O(level) time whatever the distance
-    (:func:`dggs.index._kernel.grid_tables.chart_distance`); otherwise a bidirectional
-    breadth-first search, O(d**2) cells.
-    """
-    if a == b:
-        return 0
-    level = level_of(a)
-    if level >= 1:
-        d = chart_distance(a, b, level)
-        if d < 0:
-            d = chart_distance(b, a, level)
-        if d >= 0:
-            return d if d <= max_steps else -1
-    return _bfs_distance(a, b, max_steps)
-
-
-def _distances_impl(a: np.ndarray, b: np.ndarray, max_steps: int, out: np.ndarray) -> None:
-    """``out[i] = distance(a[i], b[i], max_steps)`` (int64), pairs in parallel."""
-    for i in prange(a.shape[0]):
-        out[i] = distance(a[i], b[i], max_steps)
-
-
 # One body, two compilations (serial for small inputs: starting numba's threads
 # costs microseconds, more under load); called as loop(n, *args).
 disk = loops(_disk_impl)
 ring = loops(_ring_impl)
-distances = loops(_distances_impl)
 _disk_serial = disk.serial  # for disk_of: compiled code calls a dispatcher, not a Loops
 
 
 @njit(cache=True, nogil=True)
-def disk_of(cell: int, k: int) -> np.ndarray:
-    """The disk of one id (int64), sorted (the single-id entry); empty if it is no id."""
-    if not _bits_is_valid(np.uint64(cell)):
+def disk_of(cell: int, k: int, max_cells: int) -> np.ndarray:
+    """The disk of one id (int64), sorted (the single-id entry).
+
+    Empty (a miss, which the caller explains) if it is no id, if ``k`` is over
+    64 (the general path takes any k), or if the row the disk needs is over
+    ``max_cells`` (as the general path counts it).
+    """
+    if k > 64 or disk_size_bound(k) > max_cells or not _bits_is_valid(np.uint64(cell)):
         return np.empty(0, dtype=np.uint64)
     out = np.empty((1, disk_size_bound(k)), dtype=np.uint64)
     counts = np.empty(1, dtype=np.int64)
