@@ -12,7 +12,7 @@ import pytest
 
 import dggs
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 MODULES = [
     "dggs",
     "dggs.errors",

@@ -31,7 +31,7 @@ import dggs
 from dggs.cli import main
 from dggs.index.cellid import check_level
 
-from .strategies import cells, special_points
+from ..strategies import cells, special_points
 
 GOOD = "C401"
 GOOD_INT = dggs.str_to_int(GOOD)

@@ -19,7 +19,7 @@ from shapely.geometry import box
 import dggs
 from dggs.errors import TooManyCellsError
 
-from .strategies import cells, latlngs, special_points
+from ...strategies import cells, latlngs, special_points
 
 SPECIAL_CELLS = [dggs.latlng_to_cell(lat, lng, lv) for lat, lng in special_points()[:20] for lv in (0, 1, 9, 28)]
 
