@@ -31,11 +31,11 @@ import dggs
 from dggs.cli import main
 from dggs.index.cellid import check_level
 
-from ..strategies import cells, special_points
+from ..strategies import cells, examples, special_points
 
 GOOD = "C401"
 GOOD_INT = dggs.str_to_int(GOOD)
-EXAMPLES = max(150, settings.default.max_examples)  # per hypothesis test (HYPOTHESIS_PROFILE=thorough: 2000)
+EXAMPLES = examples(150)  # per hypothesis test (make test: 30; make test-all: 150; HYPOTHESIS_PROFILE=thorough: 3000)
 
 
 # --------------------------------------------------------------------------
