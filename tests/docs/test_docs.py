@@ -120,7 +120,11 @@ def test_python_blocks_run(path, docs_dir):
             exec(compile(m.group(2), f"{path.name} block {i}", "exec"), namespace)  # noqa: S102 - our own docs
 
 
-@pytest.mark.parametrize("code", _blocks("sh"))
+# README.md's CLI tour (38 s here) and docs/experiments.md's tables (23 s) run in make test-all.
+SLOW_SH = {"README.md-3", "experiments.md-0"}
+
+
+@pytest.mark.parametrize("code", [pytest.param(*p.values, id=p.id, marks=pytest.mark.slow) if p.id in SLOW_SH else p for p in _blocks("sh")])
 def test_sh_blocks_run(code, docs_dir, monkeypatch):
     """Each ``dggs ...`` line, in order, through click's CliRunner; other lines (make) are the Makefile's.
 

@@ -586,6 +586,7 @@ def test_cell_commands(a, b, c, command):
     _cli_ok(args)
 
 
+@pytest.mark.slow  # 9 s here: six interpreters (tests/server/test_errors.py has a one-process version)
 def test_cli_errors_in_a_real_process():
     for args in (["cell", "info", "C9"], ["cell", "from-latlng", "nan", "0", "--level", "3"], ["cell", "levels", "--max-level", "29"],
                  ["cell", "boundary", "C401", "--densify", "-1"]):
