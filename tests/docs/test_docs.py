@@ -59,7 +59,7 @@ def test_readme_shows_exactly_the_two_setup_commands_and_ci_runs_one():
     commands = [line.split("#")[0].strip() for line in setup.strip().splitlines()]
     assert commands == ["make demo", "make test"]
     ci = (ROOT / ".ci" / "run").read_text()
-    assert re.search(r"^make test$", ci, re.M)
+    assert re.search(r"^make test-all$", ci, re.M)
 
 
 def test_readme_example_cell_is_real():
