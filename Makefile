@@ -35,6 +35,9 @@ static-if-npm:
 demo: $(STAMP) static-if-npm
 	$(VENV)/bin/dggs demo
 
+# test: the quick suite (pyproject's addopts leave out the slow and browser tests; the default hypothesis
+# profile runs 20 examples a property). test-all (CI): every test but the browser ones, the ci profile's
+# 100 examples (HYPOTHESIS_PROFILE=thorough make test-all for 2000).
 test: $(STAMP) static-if-npm
 	$(PY) -m ruff check dggs index storage experiments tests examples
 	$(PY) -m mypy
@@ -43,7 +46,7 @@ test: $(STAMP) static-if-npm
 test-all: $(STAMP) static-if-npm
 	$(PY) -m ruff check dggs index storage experiments tests examples
 	$(PY) -m mypy
-	$(PY) -m pytest -q -m ''
+	HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-ci} $(PY) -m pytest -q -m 'not browser'
 
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1.

@@ -5,12 +5,19 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from hypothesis import settings
 from hypothesis import strategies as st
 
 import dggs
 from dggs.geometry.icosahedron import ISEA, xyz_to_latlng
 
 MAX_LEVEL = dggs.MAX_LEVEL
+
+
+def examples(n: int) -> int:
+    """A test's own hypothesis example count: ``n`` under the ci profile (max_examples 100), scaled with the
+    loaded profile, so ``make test`` (default, 20) runs a fifth of them and thorough (2000) twenty times as many."""
+    return max(5, n * settings.default.max_examples // 100)
 
 
 def latitudes():

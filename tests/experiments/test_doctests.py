@@ -1,4 +1,4 @@
-"""The docstring examples of every experiments module run (tests/test_docs.py covers the library's)."""
+"""The docstring examples of every experiments module run (tests/docs/test_docs.py covers the library's)."""
 
 from __future__ import annotations
 

@@ -16,7 +16,7 @@ from dggs.geometry import snyder
 from dggs.experiments import numpy_snyder
 from dggs.geometry.icosahedron import ISEA
 
-from ..test_snyder import angle_between, random_points
+from ..geometry.test_snyder import angle_between, random_points
 
 
 def face_centre(face: int) -> tuple[float, float]:

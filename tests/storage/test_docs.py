@@ -90,6 +90,7 @@ def _blocks(text: str) -> list[tuple[str, str]]:
     return blocks
 
 
+@pytest.mark.slow  # 14 s here: every docs/storage.md block
 def test_every_code_block_in_the_docs_runs_as_written(tmp_path):
     import os
     import re

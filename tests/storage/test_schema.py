@@ -111,6 +111,7 @@ def test_delete_source(store):
         store.delete_source("a")
 
 
+@pytest.mark.slow  # 6 s here: starts many processes
 def test_many_processes_create_one_store_at_once(tmp_path):
     import subprocess
     import sys

@@ -31,11 +31,11 @@ import dggs
 from dggs.cli import main
 from dggs.index.ids import check_level
 
-from .strategies import cells, special_points
+from ..strategies import cells, examples, special_points
 
 GOOD = "C401"
 GOOD_INT = dggs.str_to_int(GOOD)
-EXAMPLES = max(150, settings.default.max_examples)  # per hypothesis test (HYPOTHESIS_PROFILE=thorough: 2000)
+EXAMPLES = examples(150)  # per hypothesis test (make test: 30; make test-all: 150; HYPOTHESIS_PROFILE=thorough: 3000)
 
 
 # --------------------------------------------------------------------------
@@ -587,6 +587,7 @@ def test_cell_commands(a, b, c, command):
     _cli_ok(args)
 
 
+@pytest.mark.slow  # 9 s here: six interpreters (tests/server/test_errors.py has a one-process version)
 def test_cli_errors_in_a_real_process():
     for args in (["cell", "info", "C9"], ["cell", "from-latlng", "nan", "0", "--level", "3"], ["cell", "levels", "--max-level", "29"],
                  ["cell", "boundary", "C401", "--densify", "-1"]):

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 import dggs
 from dggs.errors import InvalidCellError, LevelError
 
-from .strategies import cells
+from ..strategies import cells
 
 
 @given(cells())

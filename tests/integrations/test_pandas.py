@@ -22,7 +22,7 @@ import dggs  # noqa: E402
 import dggs.pandas  # noqa: E402
 from dggs.pandas import ColumnError  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 FORMS = [False, True]  # as_int
 
 

@@ -12,7 +12,7 @@ import pytest
 
 import dggs
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 MODULES = [
     "dggs",
     "dggs.errors",
@@ -59,7 +59,7 @@ def test_readme_shows_exactly_the_two_setup_commands_and_ci_runs_one():
     commands = [line.split("#")[0].strip() for line in setup.strip().splitlines()]
     assert commands == ["make demo", "make test"]
     ci = (ROOT / ".ci" / "run").read_text()
-    assert re.search(r"^make test$", ci, re.M)
+    assert re.search(r"^make test-all$", ci, re.M)
 
 
 def test_readme_example_cell_is_real():
@@ -120,7 +120,11 @@ def test_python_blocks_run(path, docs_dir):
             exec(compile(m.group(2), f"{path.name} block {i}", "exec"), namespace)  # noqa: S102 - our own docs
 
 
-@pytest.mark.parametrize("code", _blocks("sh"))
+# README.md's CLI tour (38 s here) and docs/experiments.md's tables (23 s) run in make test-all.
+SLOW_SH = {"README.md-3", "experiments.md-0"}
+
+
+@pytest.mark.parametrize("code", [pytest.param(*p.values, id=p.id, marks=pytest.mark.slow) if p.id in SLOW_SH else p for p in _blocks("sh")])
 def test_sh_blocks_run(code, docs_dir, monkeypatch):
     """Each ``dggs ...`` line, in order, through click's CliRunner; other lines (make) are the Makefile's.
 

@@ -19,7 +19,7 @@ shapely = pytest.importorskip("shapely")
 
 from dggs.duckdb import FUNCTIONS, register  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 KINDS = ["BIGINT", "UBIGINT", "VARCHAR"]
 N = 5000  # more than two DuckDB batches (2,048 rows)
 

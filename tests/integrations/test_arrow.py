@@ -24,7 +24,7 @@ from dggs.arrow import (  # noqa: E402
     write_geoparquet,
 )
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 # every level-3 cell: the pole cells and the antimeridian cells included
 LEVEL3 = dggs.uncompact_cells(dggs.get_base_cells(), 3)

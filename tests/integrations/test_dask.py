@@ -39,6 +39,7 @@ def single_process(pdf, level, fine=9):
     return out
 
 
+@pytest.mark.slow  # 12 s here: starts a LocalCluster
 def test_local_cluster_equals_single_process(data, tmp_path):
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         with distributed.Client(cluster):

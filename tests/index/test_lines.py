@@ -19,7 +19,7 @@ from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, Level
 from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
 
 GEOD = pyproj.Geod(ellps="WGS84")
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_distance_is_wgs84_geodesic():

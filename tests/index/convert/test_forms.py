@@ -19,7 +19,7 @@ from shapely.geometry import box
 import dggs
 from dggs.errors import TooManyCellsError
 
-from .strategies import cells, latlngs, special_points
+from ...strategies import cells, examples, latlngs, special_points
 
 SPECIAL_CELLS = [dggs.latlng_to_cell(lat, lng, lv) for lat, lng in special_points()[:20] for lv in (0, 1, 9, 28)]
 
@@ -59,7 +59,7 @@ def test_every_single_id_function_agrees_across_forms(cell):
     assert dggs.are_neighbor_cells(s, n) and dggs.are_neighbor_cells(i, dggs.str_to_int(n))
 
 
-@settings(max_examples=30)
+@settings(max_examples=examples(30))
 @given(st.lists(latlngs(), min_size=1, max_size=40), st.integers(0, dggs.MAX_LEVEL))
 def test_points_agree_across_forms_and_keep_shape(points, level):
     lat = np.array([p[0] for p in points])
@@ -74,7 +74,7 @@ def test_points_agree_across_forms_and_keep_shape(points, level):
         assert grid.shape == (2, len(points) // 2) and np.array_equal(grid.ravel(), i)
 
 
-@settings(max_examples=30)
+@settings(max_examples=examples(30))
 @given(st.lists(cells(max_level=12), min_size=1, max_size=30))
 def test_array_functions_agree_across_forms(cell_list):
     s = np.array(cell_list)

@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelMismatchError
 
-from .gridref import mirror_neighbours
-from .strategies import cells
+from ..gridref import mirror_neighbours
+from ..strategies import cells
 
 
 def all_cells(level):

@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 import dggs
 from dggs.errors import LevelMismatchError
 
-from .gridref import decode, planar_corners
-from .strategies import cells
+from ..gridref import decode, planar_corners
+from ..strategies import cells
 
 
 def all_cells(level):

@@ -17,9 +17,9 @@ from dggs.geometry.authalic import WGS84, sphere
 from dggs.errors import CoordinateError, DggsValueError
 from dggs.geometry.icosahedron import DOWN_FACES, ISEA, POLE, latlng_to_xyz
 
-from .strategies import latlngs, special_points
+from ..strategies import latlngs, special_points
 
-FIXTURES = Path(__file__).parent / "reference" / "fixtures"
+FIXTURES = Path(__file__).parents[1] / "reference" / "fixtures"
 PROJ_VECTORS = json.loads((FIXTURES / "proj_isea_builtins.json").read_text())
 CONSTANTS = json.loads((FIXTURES / "snyder_constants.json").read_text())
 

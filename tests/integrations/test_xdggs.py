@@ -28,7 +28,7 @@ from xarray.indexes import PandasIndex  # noqa: E402
 import dggs  # noqa: E402
 from dggs import xdggs as dx  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 GRID = dx.GRID_NAME
 
 # Level-3 cells: "C401" (docs/grid.md writes its integer id out), its three edge neighbours, and the cells
