@@ -51,7 +51,7 @@ from hypothesis import strategies as st
 
 import dggs
 
-from .strategies import cells, latlngs, special_points
+from ..strategies import cells, latlngs, special_points
 
 MAX = dggs.MAX_LEVEL
 OMIT = "<omitted>"  # a keyword argument left at its default

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-GEOMETRY = Path(__file__).resolve().parent.parent / "dggs" / "geometry"
+GEOMETRY = Path(__file__).resolve().parents[2] / "dggs" / "geometry"
 ALLOWED_THIRD_PARTY = {"numpy", "numba", "llvmlite"}
 
 
