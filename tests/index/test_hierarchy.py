@@ -145,7 +145,7 @@ def test_shipped_jump_table_equals_the_computed_one():
 def test_jump_table_locate_equals_per_level_descent():
     """The 4-levels-at-once table reproduces the per-level comparisons exactly."""
     from dggs.geometry import snyder
-    from .reference.numpy_split26 import locate, locate_per_level
+    from ..reference.numpy_split26 import locate, locate_per_level
 
     rng = np.random.default_rng(21)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 200_000)))
@@ -157,7 +157,7 @@ def test_jump_table_locate_equals_per_level_descent():
 
 def test_locate_nests_for_points_exactly_on_corners_and_edges():
     """Digits of a level never depend on how deep the lookup goes, even on cell edges."""
-    from .reference.numpy_split26 import locate
+    from ..reference.numpy_split26 import locate
 
     corners = planar_corners(dggs.cell_to_children("C4", 6))
     pts = np.concatenate([corners.reshape(-1, 2), 0.5 * (corners + np.roll(corners, 1, axis=1)).reshape(-1, 2)])
@@ -190,7 +190,7 @@ def test_block_composed_corners_equal_midpoint_construction():
     """Corners composed 4 digits at a time equal the thesis's construction (D at a third, E midpoint)."""
     from dggs.geometry.split26 import cell_vertices
 
-    from .reference.numpy_split26 import cell_vertices_per_level
+    from ..reference.numpy_split26 import cell_vertices_per_level
 
     rng = np.random.default_rng(33)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 5000)))

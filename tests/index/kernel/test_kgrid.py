@@ -27,7 +27,7 @@ from hypothesis import strategies as st
 from dggs.geometry import snyder, split26
 from dggs.geometry.icosahedron import ISEA
 
-from .reference.numpy_split26 import locate
+from ...reference.numpy_split26 import locate
 from .test_khier import FACES, MAX_LEVEL, i2s, s2i  # the id layout written out by hand, once
 FIXTURE = Path(__file__).parents[2] / "reference" / "fixtures" / "neighbours_v1.json"
 
