@@ -18,6 +18,7 @@ from __future__ import annotations
 import itertools
 import json
 import sqlite3
+import sys
 import time
 import warnings
 from collections.abc import Callable, Iterator, Mapping
@@ -329,9 +330,11 @@ def _write_batch(
 
 def _max_variables(conn: sqlite3.Connection) -> int:
     """Return how many ``?`` parameters one statement may hold."""
+    if sys.version_info < (3, 11):  # no Connection.getlimit: SQLite's historical default
+        return 999
     try:
         return int(conn.getlimit(sqlite3.SQLITE_LIMIT_VARIABLE_NUMBER))
-    except (AttributeError, sqlite3.Error):  # Python < 3.11
+    except sqlite3.Error:
         return 999
 
 
