@@ -11,8 +11,8 @@ API that is not there yet is skipped with a note (see ``_common.note``).
 from __future__ import annotations
 
 import math
-from typing import Any
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 

@@ -27,9 +27,9 @@ import time
 from pathlib import Path
 
 import numpy as np
-from dggs.storage import CellStore
 
 import dggs
+from dggs.storage import CellStore
 
 
 def make_csv(path: Path, rows: int, seed: int = 0) -> None:

@@ -31,7 +31,7 @@ import numpy as np
 from dggs.errors import DggsValueError
 from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA, Orientation, xyz_to_latlng
-from dggs.geometry.snyder import G, G_ARC
+from dggs.geometry.snyder import G_ARC, G
 
 __all__ = ["METHODS", "polynomial", "newton", "az_poly", "inverse_xyz", "inverse"]
 

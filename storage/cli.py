@@ -120,9 +120,10 @@ def bin_(
     Example:
       dggs bin cities.csv --db cities.db --level 7 --value population
     """
+    from tqdm import tqdm
+
     from dggs.storage import CellStore, RejectedRowsWarning
     from dggs.storage.readers import count_csv_rows, sniff_kind
-    from tqdm import tqdm
 
     kind = sniff_kind(input_path)
     declared = _value_types(values)

@@ -29,8 +29,8 @@ from dggs.errors import DggsValueError, StorageError
 
 from .connection import Connection
 from .convert import Prepared, jsonable, make_transformer
-from .producer import Producer
 from .errors import BadRowError, RejectedRowsWarning
+from .producer import Producer
 from .readers import RawBatch
 from .schema import add_columns, column_types, now, quote, sql_type
 from .sources import open_source

@@ -15,7 +15,6 @@ from typing import Any
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
 
-
 from .connection import Connection
 from .schema import quote
 

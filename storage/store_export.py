@@ -13,7 +13,6 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
-
 from dggs._formats import export_format
 
 from . import queries

@@ -25,8 +25,17 @@ import dggs
 from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
-from .params import Context, base_url, check_collection, check_dggrs, check_level, negotiate, parse_bbox
-from .params import parse_depths, parse_zone
+from .params import (
+    Context,
+    base_url,
+    check_collection,
+    check_dggrs,
+    check_level,
+    negotiate,
+    parse_bbox,
+    parse_depths,
+    parse_zone,
+)
 from .reader import cells_meeting_bbox
 
 __all__ = ["register", "STATS", "sub_zone_count"]
