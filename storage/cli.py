@@ -47,9 +47,11 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     text = [[_format_value(row.get(c)) for c in cols] for row in rows]
     widths = [max(len(c), *(len(r[i]) for r in text)) for i, c in enumerate(cols)]
     numeric = [all(isinstance(row.get(c), (int, float)) or row.get(c) is None for row in rows) for c in cols]
-    lines = ["  ".join(c.ljust(w) if not n else c.rjust(w) for c, w, n in zip(cols, widths, numeric)).rstrip()]
+    lines = ["  ".join(c.ljust(w) if not n else c.rjust(w)
+                       for c, w, n in zip(cols, widths, numeric, strict=True)).rstrip()]
     for r in text:
-        lines.append("  ".join(v.rjust(w) if n else v.ljust(w) for v, w, n in zip(r, widths, numeric)).rstrip())
+        lines.append("  ".join(v.rjust(w) if n else v.ljust(w)
+                              for v, w, n in zip(r, widths, numeric, strict=True)).rstrip())
     return "\n".join(lines)
 
 

@@ -198,7 +198,7 @@ class Connection:
         cursor = self.conn.execute(sql, params)
         names = [d[0] for d in cursor.description]
         for row in cursor:
-            yield dict(zip(names, row))
+            yield dict(zip(names, row, strict=True))
 
     def _setup(self) -> None:
         conn = self.conn

@@ -142,7 +142,7 @@ def get(store: Connection, cells: Any) -> list[dict[str, Any]]:
     stored = store.level
     if stored is None or not found:
         return []
-    for cell, level in zip(found, levels):
+    for cell, level in zip(found, levels, strict=True):
         if level != stored:
             raise LevelMismatchError(
                 f"cell {cell!r} is at level {level}, not the stored level {stored}; "
@@ -281,7 +281,7 @@ def aggregate(
     where = ""
     if cell is not None:
         found = normalise_cells(cell)
-        for c, cell_level in zip(found, check_cells(store, found)):
+        for c, cell_level in zip(found, check_cells(store, found), strict=True):
             if cell_level > level:
                 raise LevelMismatchError(
                     f"cell {c!r} is at level {cell_level}, finer than the roll-up level {level}"

@@ -93,7 +93,7 @@ def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, st
     counts = data.counts[index].tolist()
     props = [
         {"zone_id": z, "level": level, "area_km2": area, "count": n, "value": clean(data.values[i])}
-        for z, n, i in zip(ids, counts, index.tolist())
+        for z, n, i in zip(ids, counts, index.tolist(), strict=True)
     ]
     return Response(feature_collection(ids, texts, props, {"numberReturned": len(ids)}), media_type=GEOJSON)
 

@@ -310,7 +310,7 @@ class StoreReader:
             with self._lock:
                 if len(self._geometry) + len(missing) > GEOMETRY_ENTRIES:
                     self._geometry.clear()
-                for cell, poly, text in zip(missing, polys, texts):
+                for cell, poly, text in zip(missing, polys, texts, strict=True):
                     self._geometry[cell] = (poly, str(text))
         pairs = [self._geometry.get(c) or self._compute_one(c) for c in ids.tolist()]
         return np.array([p[0] for p in pairs], dtype=object), [p[1] for p in pairs]

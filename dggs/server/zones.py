@@ -261,7 +261,8 @@ def zones_list(
         raise TooManyZones(f"{len(zones)} zones of zone-level {level} hold data, more than this server's limit "
                            f"of {cap}; use a coarser zone-level, a smaller bbox, compact-zones or limit")
     levels = np.char.str_len(np.array(zones, dtype=str)) - 1 if zones else np.array([], dtype=int)
-    area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in zip(*np.unique(levels, return_counts=True))))
+    per_level = zip(*np.unique(levels, return_counts=True), strict=True)
+    area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in per_level))
     links = _links(request, collection)
     templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}/zones/{{zoneId}}/data",
                   "rel": REL + "dggrs-zone-data", "type": "application/json"}]
