@@ -249,6 +249,14 @@ class Split26Index(DGGSIndex):
         *,
         options: Mapping[str, Any],
     ) -> Split26Index:
+        """Build the index from the cell-id variable of ``variables`` (xarray's index protocol).
+
+        Raises
+        ------
+        ValueError
+            If there is not exactly one 1-D cell-id variable, the grid attributes are not those of this
+            grid, or an id is not a cell id of their level (plain ValueError, as xdggs's own grids raise).
+        """
         name, var, dim = _cell_id_variable(variables)
         attrs = dict(var.attrs) | dict(options)
         data = var.data
@@ -261,6 +269,7 @@ class Split26Index(DGGSIndex):
 
     @property
     def grid_info(self) -> Split26Info:
+        """The grid parameters (level, id format) of this index."""
         return self._grid
 
     def _replace(self, new_index: Any) -> Split26Index:

@@ -111,8 +111,9 @@ def bin_(
     layer: str | None,
     progress: bool | None,
 ) -> None:
-    """Bin the points of INPUT (CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf
-    or GeoParquet) into cells and store them in DB.
+    """Bin the points of INPUT into cells and store them in DB.
+
+    INPUT is CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf or GeoParquet.
 
     Batches commit atomically; running the same command again resumes an
     interrupted ingest (or does nothing if it finished), never duplicating

@@ -119,6 +119,15 @@ def _where(cells: list[str]) -> tuple[str, dict[str, Any]]:
 
 
 def count(store: Connection, cells: Any = None) -> int:
+    """Count the rows under any of ``cells``, or all rows when ``cells`` is None.
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     if cells is None:
         row = store.conn.execute(
             "SELECT (SELECT count(*) FROM points) + (SELECT count(*) FROM points_pending)"
@@ -137,6 +146,15 @@ def count(store: Connection, cells: Any = None) -> int:
 
 
 def get(store: Connection, cells: Any) -> list[dict[str, Any]]:
+    """Return the rows stored in exactly ``cells`` (cells at the stored level).
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is not at the stored level (coarser cells: :func:`descendants`).
+    """
     found = normalise_cells(cells)
     levels = check_cells(store, found)
     stored = store.level
@@ -157,6 +175,15 @@ def get(store: Connection, cells: Any) -> list[dict[str, Any]]:
 
 
 def descendants(store: Connection, cells: Any) -> list[dict[str, Any]]:
+    """Return the rows under any of ``cells``, each once, ordered by cell.
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     found = normalise_cells(cells)
     check_cells(store, found)
     if not found:
@@ -255,6 +282,18 @@ def aggregate(
     descending: bool,
     limit: int | None,
 ) -> list[dict[str, Any]]:
+    """Roll the rows up to the cells of ``level`` (the work of :meth:`dggs.storage.CellStore.aggregate`).
+
+    Raises
+    ------
+    LevelError
+        If ``level`` is outside ``0..MAX_LEVEL``.
+    LevelMismatchError
+        If ``level`` is finer than the stored level, or ``cell`` is finer than ``level``.
+    DggsValueError
+        If a stat is unknown, needs a column that is missing or holds text, ``order_by`` is not one of
+        the stats, or ``limit`` is not a whole number >= 0.
+    """
     stored = check_query_level(store, level)
     stats = tuple(stats)
     unknown = [s for s in stats if s not in STATS]

@@ -24,6 +24,7 @@ __all__ = ["Chunk", "is_utf8", "rebatch"]
 
 
 def is_utf8(encoding: str) -> bool:
+    """Whether ``encoding`` names UTF-8 (with or without a byte-order mark)."""
     return encoding.lower().replace("_", "-") in ("utf-8", "utf8", "utf-8-sig")
 
 

@@ -189,6 +189,7 @@ def delete_source(store: Connection, source: int | str) -> int:
 
 
 def list_sources(store: Connection) -> list[dict[str, Any]]:
+    """The ingested sources, one dict each, in the order they were first ingested."""
     return list(
         store.query(
             "SELECT id, kind, name, size, sha256, crs, rows_done, rows_inserted, rows_rejected, "
@@ -198,6 +199,7 @@ def list_sources(store: Connection) -> list[dict[str, Any]]:
 
 
 def list_rejects(store: Connection, limit: int | None = None) -> list[dict[str, Any]]:
+    """The rejected rows of every source, at most ``limit``, with their value and record decoded from JSON."""
     sql = (
         'SELECT s.name AS source, r.row, r.line, r."column", r.value, r.reason, r.record '
         "FROM rejects r JOIN sources s ON s.id = r.source_id ORDER BY r.source_id, r.row"

@@ -24,8 +24,11 @@ Values = Sequence[str] | Mapping[str, Any]
 
 
 class IngestMethods:
-    """``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
-    ``ingest_points``, ``ingest_dataframe`` and ``merge``."""
+    """The ingest methods of :class:`CellStore`.
+
+    ``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
+    ``ingest_points``, ``ingest_dataframe`` and ``merge``.
+    """
 
     _store: Connection
     merge_rows: int
@@ -74,7 +77,7 @@ class IngestMethods:
         encoding: str = "utf-8",
         progress: Progress | None = None,
     ) -> IngestResult:
-        """Bin the rows of a CSV file (with a header row), streaming it in batches.
+        r"""Bin the rows of a CSV file (with a header row), streaming it in batches.
 
         Each batch of ``batch_size`` rows is committed whole or not at all.
         The file is identified by its content (SHA-256): ingesting it again
@@ -130,7 +133,7 @@ class IngestMethods:
         >>> import os, tempfile
         >>> path = os.path.join(tempfile.mkdtemp(), "pts.csv")
         >>> with open(path, "w") as fh:
-        ...     _ = fh.write("lat,lng,pop\\n51.5,-0.12,9000000\\n40.7,-74.0,8000000\\n")
+        ...     _ = fh.write("lat,lng,pop\n51.5,-0.12,9000000\n40.7,-74.0,8000000\n")
         >>> with CellStore() as store:
         ...     store.ingest_csv(path, values=["pop"], level=5).rows_inserted
         2

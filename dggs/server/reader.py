@@ -163,7 +163,7 @@ class StoreReader:
     # -- connections --------------------------------------------------------
 
     def store(self) -> CellStore:
-        """This thread's read-only store (opened on first use)."""
+        """Return this thread's read-only store (opened on first use)."""
         store = getattr(self._local, "store", None)
         if store is None:
             store = CellStore(self.path, create=False, readonly=True)
