@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -71,7 +72,8 @@ def add_cells(ddf: dd.DataFrame, level: int, lat: str = "lat", lng: str = "lng",
         if col not in ddf.columns:
             raise DggsValueError(f"column {col!r} is not in the dataframe (columns: {list(ddf.columns)})")
     meta = ddf._meta.assign(**{column: pd.Series([], dtype=_STRING)})
-    return ddf.map_partitions(cells_partition, level, lat, lng, column, meta=meta)
+    out: dd.DataFrame = ddf.map_partitions(cells_partition, level, lat, lng, column, meta=meta)
+    return out
 
 
 def aggregate(
@@ -106,10 +108,11 @@ def aggregate(
     parent = ddf[cell].str.slice(0, level + 1)
     if column is None:
         grouped = ddf.assign(_one=1).assign(_parent=parent).groupby("_parent")["_one"].count()
-        return grouped.to_frame("count")
+        counts: dd.DataFrame = grouped.to_frame("count")
+        return counts
     if column not in ddf.columns:
         raise DggsValueError(f"column {column!r} is not in the dataframe (columns: {list(ddf.columns)})")
-    out = ddf.assign(_parent=parent).groupby("_parent")[column].agg(list(stats))
+    out: dd.DataFrame = ddf.assign(_parent=parent).groupby("_parent")[column].agg(list(stats))
     out.index = out.index.rename("cell")
     return out
 
@@ -137,7 +140,8 @@ def _write_faces(pdf: pd.DataFrame, path: str, cell: str, part: int, densify: in
 
 
 def to_parquet(
-    ddf: dd.DataFrame, path: str, cell: str = "cell", *, geometry: bool = True, densify: int | None = 16, **kwargs
+    ddf: dd.DataFrame, path: str, cell: str = "cell", *, geometry: bool = True, densify: int | None = 16,
+    **kwargs: Any,
 ) -> None:
     """Write Parquet partitioned by base cell (``face=A`` ... ``face=T`` folders).
 
@@ -174,7 +178,8 @@ def to_parquet(
     dask.compute(*(write(part, path, cell, i, densify, kwargs) for i, part in enumerate(parts)))
 
 
-def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs) -> dd.DataFrame:
+def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs: Any) -> dd.DataFrame:
     """Read what :func:`to_parquet` wrote, optionally only some base cells (faces)."""
     filters = [("face", "in", list(faces))] if faces else None
-    return dd.read_parquet(path, filters=filters, **kwargs)
+    ddf: dd.DataFrame = dd.read_parquet(path, filters=filters, **kwargs)
+    return ddf

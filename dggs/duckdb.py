@@ -106,7 +106,8 @@ def _ids(name: str, a: Any, valid: np.ndarray) -> np.ndarray:
         except InvalidCellError as exc:
             raise InvalidCellError(f"{name}: {exc}") from None
         raise InvalidCellError(f"{name}: {int(bad)} is not a valid cell id")  # pragma: no cover
-    return ids
+    checked: np.ndarray = ids
+    return checked
 
 
 def _numbers(a: Any, valid: np.ndarray, dtype: Any) -> np.ndarray:

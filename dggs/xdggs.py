@@ -180,7 +180,8 @@ class Split26Info(DGGSInfo):
             raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {level!r}")
         ids = _as_ids(cell_ids)
         if level == self.level:
-            return ids.copy()
+            same: np.ndarray = ids.copy()
+            return same
         if level < self.level:
             return np.asarray(dggs.cell_to_parent(ids, level))
         per_cell = 3 ** (level - self.level) * (2 if self.level == 0 else 1)

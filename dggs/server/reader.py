@@ -286,7 +286,8 @@ class StoreReader:
     def rollup(self, zone: str, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """``store.aggregate(level, column, stats, cell=zone)`` in one snapshot (not cached)."""
         with self.snapshot() as (store, _marker):
-            return store.aggregate(level, column, tuple(stats), cell=zone)
+            rows: list[dict[str, Any]] = store.aggregate(level, column, tuple(stats), cell=zone)
+            return rows
 
     # -- geometry -----------------------------------------------------------
 
