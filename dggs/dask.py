@@ -51,7 +51,13 @@ _STRING = "string"  # pandas' string dtype: what Dask and Parquet carry natively
 
 
 def cells_partition(df: pd.DataFrame, level: int, lat: str, lng: str, column: str) -> pd.DataFrame:
-    """Add a ``column`` of cell ids to one pandas partition (vectorized)."""
+    """Add a ``column`` of cell ids to one pandas partition (vectorized).
+
+    Raises
+    ------
+    CoordinateError
+        If a coordinate is NaN, infinite or out of range (names the index).
+    """
     out = df.copy()
     ids = latlng_to_cell(df[lat].to_numpy(np.float64), df[lng].to_numpy(np.float64), level) if len(df) else []
     out[column] = pd.Series(ids, index=df.index, dtype=_STRING)
@@ -98,6 +104,13 @@ def aggregate(
     Returns
     -------
     dask DataFrame indexed by cell id at ``level``, one column per stat.
+
+    Raises
+    ------
+    DggsValueError
+        If a stat is unknown, or the ``cell`` or ``column`` column is not in the frame.
+    LevelError
+        If ``level`` is outside ``0..MAX_LEVEL``.
     """
     level = check_level(level)
     bad = [s for s in stats if s not in _STATS]
@@ -159,6 +172,12 @@ def to_parquet(
 
     ``geometry=False`` writes plain Parquet through Dask (``kwargs`` go to
     ``dask.dataframe.to_parquet``).
+
+    Raises
+    ------
+    DggsValueError
+        If the ``cell`` column is missing, or (with ``geometry``) a column is named like one the
+        GeoParquet output adds (``cell_id``, ``bbox``, ``geometry``, ``face``).
     """
     if cell not in ddf.columns and ddf.index.name == cell:
         ddf = ddf.reset_index()

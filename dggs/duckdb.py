@@ -287,6 +287,11 @@ def register(con: Any) -> Any:
     and ``docs/duckdb.md``.  Calling it again on the same connection
     replaces the functions.
 
+    Raises
+    ------
+    RuntimeError
+        If the installed DuckDB is older than 1.4 (it lacks the function API used).
+
     Examples
     --------
     >>> import duckdb

@@ -387,8 +387,10 @@ class DggsAccessor:
         Raises
         ------
         DggsValueError
-            A geometry that is not a (Multi)Polygon (names the row), an
-            unknown ``mode``, or a frame without geometry.
+            A geometry that is not a (Multi)Polygon (names the row) or an
+            unknown ``mode``.
+        ColumnError
+            A frame without an active geometry column (a :class:`DggsValueError`).
         TooManyCellsError
             A feature would have more than ``max_cells`` cells.
 

@@ -116,7 +116,13 @@ class Split26Info(DGGSInfo):
 
     @classmethod
     def from_dict(cls, mapping: Mapping[str, Any]) -> Split26Info:
-        """Build the grid information from attributes (``grid_name`` is ignored, unknown keys raise)."""
+        """Build the grid information from attributes (``grid_name`` is ignored, unknown keys raise).
+
+        Raises
+        ------
+        ValueError
+            If a key is unknown, the level is missing or out of range, or the ellipsoid is not WGS84.
+        """
         translations = {
             "level": ("level", _parse_level),
             "resolution": ("level", _parse_level),
@@ -156,6 +162,11 @@ class Split26Info(DGGSInfo):
         ``backend="shapely"`` gives an object array of shapely geometries (``dggs.cell_to_polygon``, whose
         default densification keeps polygon areas within 1e-6); ``backend="geoarrow"`` gives a geoarrow
         (multi)polygon array for lonboard, with :data:`GEOARROW_DENSIFY` points per edge by default.
+
+        Raises
+        ------
+        ValueError
+            If ``backend`` is not one of the supported backends.
         """
         if backend not in ("shapely", "geoarrow"):
             raise ValueError(f"invalid backend: {backend!r}")
@@ -174,6 +185,11 @@ class Split26Info(DGGSInfo):
         """Parents (``level`` < own level, shape (n,)) or children (shape (n, children per cell)) of the ids.
 
         Children past ``dggs.cell_to_children``'s limit (50 million cells) raise ``dggs.TooManyCellsError``.
+
+        Raises
+        ------
+        ValueError
+            If ``level`` is outside ``0..MAX_LEVEL``.
         """
         level = _parse_level(level)
         if not 0 <= level <= dggs.MAX_LEVEL:

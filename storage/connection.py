@@ -323,7 +323,13 @@ class Connection:
         return int(self.conn.execute("SELECT count(*) FROM points_pending").fetchone()[0])
 
     def merge_pending(self) -> None:
-        """Move pending rows into ``points`` (inside the caller's transaction)."""
+        """Move pending rows into ``points`` (inside the caller's transaction).
+
+        Raises
+        ------
+        StorageError
+            If a pending row would be stored twice (its key is already in ``points``).
+        """
         from .schema import BASE_COLUMNS, quote
 
         cols = ", ".join(quote(c) for c in (*BASE_COLUMNS, *self.columns))
@@ -339,7 +345,13 @@ class Connection:
         self.conn.execute("DELETE FROM points_pending")
 
     def check(self) -> None:
-        """Run ``PRAGMA integrity_check``; raise StorageError unless it says ok."""
+        """Run ``PRAGMA integrity_check``; raise StorageError unless it says ok.
+
+        Raises
+        ------
+        StorageError
+            If the integrity check finds a problem or the file cannot be read.
+        """
         try:
             problems = [row[0] for row in self.conn.execute("PRAGMA integrity_check(20)")]
         except sqlite3.Error as exc:

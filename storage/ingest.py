@@ -176,6 +176,13 @@ def run_ingest(
     mapping of value column types, filled in as they become known.  With
     ``threaded``, batches are read in a background thread (not for user
     iterables, which may be tied to their thread, like sqlite3 cursors).
+
+    Raises
+    ------
+    BadRowError
+        On the first bad row with ``on_error="fail"`` (earlier batches stay committed).
+    StorageError
+        If another process ingests the same source at the same time.
     """
     declared = {name_: sql_type(t) for name_, t in declared.items()}
     store.check_level_for_ingest(level)

@@ -35,7 +35,14 @@ def dtype_type(column: Any) -> str | None:
 
 
 def value_spec(values: Values) -> tuple[list[str], dict[str, Any]]:
-    """Split ``values`` into names (validated, distinct ignoring case) and declared types."""
+    """Split ``values`` into names (validated, distinct ignoring case) and declared types.
+
+    Raises
+    ------
+    DggsValueError
+        If a name or type is not valid, or two names are the same column to SQLite
+        (names ignore case).
+    """
     if values is None:
         return [], {}
     if isinstance(values, str):

@@ -59,7 +59,13 @@ def normalise_cells(cells: Any) -> list[str]:
 
 
 def one_cell(cell: Any) -> str:
-    """A single cell id as a string (str or int id)."""
+    """A single cell id as a string (str or int id).
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cell`` is not one valid cell id.
+    """
     if isinstance(cell, str):
         if not dggs.is_valid_cell(cell):
             raise InvalidCellError(f"{cell!r} is not a valid cell id")
@@ -71,7 +77,13 @@ def one_cell(cell: Any) -> str:
 
 
 def check_cells(store: Connection, cells: list[str]) -> list[int]:
-    """Levels of ``cells``; none may be finer than the stored level."""
+    """Levels of ``cells``; none may be finer than the stored level.
+
+    Raises
+    ------
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     stored = store.level
     levels = []
     for cell in cells:
@@ -93,7 +105,15 @@ def disjoint(cells: list[str]) -> list[str]:
 
 
 def check_query_level(store: Connection, level: Any) -> int | None:
-    """Validate a roll-up level; return the stored level (None if empty)."""
+    """Validate a roll-up level; return the stored level (None if empty).
+
+    Raises
+    ------
+    LevelError
+        If ``level`` is not an int in ``0..MAX_LEVEL``.
+    LevelMismatchError
+        If ``level`` is finer than the stored level.
+    """
     if isinstance(level, bool) or not isinstance(level, int) or not 0 <= level <= dggs.MAX_LEVEL:
         raise LevelError(f"level {level!r} is out of range 0..{dggs.MAX_LEVEL}")
     stored = store.level

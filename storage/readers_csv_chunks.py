@@ -89,7 +89,13 @@ def rebatch(
     delimiter: str,
     encoding: str,
 ) -> Iterator[RawBatch]:
-    """Cut record chunks into RawBatches of ``batch_size`` records after ``skip``."""
+    """Cut record chunks into RawBatches of ``batch_size`` records after ``skip``.
+
+    Raises
+    ------
+    BadRowError
+        If a quoted field is not closed (before the next record, or before the end of the file).
+    """
     import pyarrow as pa
 
     pending: list[Chunk] = []

@@ -206,6 +206,11 @@ def check_column_name(name: object) -> str:
 def sql_type(spec: object) -> str:
     """Normalise a column type given as SQL text or a Python type.
 
+    Raises
+    ------
+    DggsValueError
+        If ``spec`` is not INTEGER, REAL, TEXT (any case) or int, float, str.
+
     Examples
     --------
     >>> sql_type(int), sql_type("real"), sql_type(str)
@@ -369,7 +374,13 @@ def column_types(conn: sqlite3.Connection) -> dict[str, str]:
 
 
 def add_columns(conn: sqlite3.Connection, columns: Mapping[str, str]) -> None:
-    """Add value columns to both point tables (inside the caller's transaction)."""
+    """Add value columns to both point tables (inside the caller's transaction).
+
+    Raises
+    ------
+    DggsValueError
+        If a name differs only in case from a stored column (SQLite names ignore case).
+    """
     have = {name.lower(): name for name in column_types(conn)}
     for name, kind in columns.items():
         check_column_name(name)

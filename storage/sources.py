@@ -116,6 +116,12 @@ def open_source(
 
     A source that has committed no row yet takes the new settings (a
     corrected command is not refused because a wrong one failed).
+
+    Raises
+    ------
+    StorageError
+        If the store is read-only, or the source was ingested before with other settings
+        (and ``replace`` is not set).
     """
     if store.readonly:
         raise StorageError(f"{store.path} is open read-only")
@@ -170,7 +176,13 @@ def open_source(
 
 
 def delete_source(store: Connection, source: int | str) -> int:
-    """Delete a source (by id or name) with all its rows and rejects; return rows deleted."""
+    """Delete a source (by id or name) with all its rows and rejects; return rows deleted.
+
+    Raises
+    ------
+    StorageError
+        If there is no such source in the store.
+    """
     conn = store.conn
     row = conn.execute(
         "SELECT id FROM sources WHERE id = ? OR name = ? ORDER BY id DESC LIMIT 1",

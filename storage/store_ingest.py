@@ -43,6 +43,13 @@ class IngestMethods:
         otherwise to
         :meth:`ingest_dataframe` or :meth:`ingest_records`.
 
+        Raises
+        ------
+        StorageError
+            If a path's extension names no format read here (or the file is missing).
+        DggsValueError, BadRowError, LevelMismatchError
+            As the method dispatched to raises them.
+
         Examples
         --------
         >>> with CellStore() as store:
@@ -165,6 +172,17 @@ class IngestMethods:
         property seen in the first batch.  Other parameters as
         :meth:`ingest_csv`; progress counts features.
 
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or the store holds another level.
+        DggsValueError
+            If the file is not GeoJSON or a value column is named badly.
+        StorageError
+            If the file is missing.
+
         Examples
         --------
         >>> import json, os, tempfile
@@ -207,6 +225,17 @@ class IngestMethods:
         attribute field.  Other parameters as :meth:`ingest_csv`; progress
         and row numbers count features.
 
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or the store holds another level.
+        DggsValueError
+            If the layer cannot be read, its CRS is unknown, or a value column is not one of its fields.
+        StorageError
+            If the file is missing or pyogrio is not installed.
+
         Examples
         --------
         >>> import os, tempfile
@@ -242,6 +271,15 @@ class IngestMethods:
         ``source`` name to make it resumable: calling again with the same
         name and the same records skips those already committed.  Other
         parameters as :meth:`ingest_csv`.
+
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or the store holds another level.
+        DggsValueError
+            If ``records`` is not an iterable of dicts or a value column is named badly.
 
         Examples
         --------
@@ -289,6 +327,15 @@ class IngestMethods:
         crs, batch_size, on_error, replace, progress
             As in :meth:`ingest_csv` (default batch 100,000 rows).
 
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or the store holds another level.
+        DggsValueError
+            If an array is not flat or its length differs from ``lat``'s.
+
         Examples
         --------
         >>> import numpy as np
@@ -322,6 +369,15 @@ class IngestMethods:
 
         Keyword arguments are those of :meth:`ingest_points`.
 
+        Raises
+        ------
+        BadRowError
+            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or the store holds another level.
+        DggsValueError
+            If the ``lat`` or ``lng`` column is missing or a value column is named badly.
+
         Examples
         --------
         >>> import pandas as pd  # doctest: +SKIP
@@ -340,6 +396,11 @@ class IngestMethods:
 
         Ingest does this by itself; call it after an interrupted ingest you
         will not resume, to make queries as fast as they can be.
+
+        Raises
+        ------
+        StorageError
+            If the store is read-only, or a pending row would be stored twice.
         """
         with self._store.transaction():
             self._store.merge_pending()

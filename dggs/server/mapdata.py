@@ -67,7 +67,16 @@ def layers(ctx: Context) -> dict[str, Any]:
 
 
 def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, stat: str) -> Response:
-    """The non-empty cells at ``level`` meeting ``bbox`` as GeoJSON (``/map/cells``)."""
+    """The non-empty cells at ``level`` meeting ``bbox`` as GeoJSON (``/map/cells``).
+
+    Raises
+    ------
+    BadRequest
+        If ``stat`` is unknown, ``column`` is not a numeric column, a stat other than count
+        lacks a column, or ``level`` or ``bbox`` is not valid.
+    TooManyZones
+        If more than the server's ``max_features`` cells hold data in ``bbox``.
+    """
     summary = ctx.reader.summary()
     check_level("level", level, summary.level)
     bbox = parse_bbox(bbox_raw) if bbox_raw is not None else (-180.0, -90.0, 180.0, 90.0)

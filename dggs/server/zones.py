@@ -231,7 +231,15 @@ def zones_list(
     limit: int | None,
     f: str | None,
 ) -> Response:
-    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to."""
+    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to.
+
+    Raises
+    ------
+    BadRequest
+        If ``bbox-crs`` is not CRS84, ``limit`` is below 1, or another parameter is not valid.
+    TooManyZones
+        If more zones hold data than the server's ``max_zones`` limit allows.
+    """
     fmt = negotiate(request, f)
     bbox = parse_bbox(bbox_raw)
     if bbox is not None and bbox_crs is not None and bbox_crs not in _CRS84_NAMES:
