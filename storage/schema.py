@@ -220,9 +220,7 @@ def sql_type(spec: object) -> str:
         return _PY_TYPES[spec]
     if isinstance(spec, str) and spec.upper() in SQL_TYPES:
         return SQL_TYPES[spec.upper()]
-    raise DggsValueError(
-        f"column type {spec!r} is not one of INTEGER, REAL, TEXT (or int, float, str)"
-    )
+    raise DggsValueError(f"column type {spec!r} is not one of INTEGER, REAL, TEXT (or int, float, str)")
 
 
 def create_schema(conn: sqlite3.Connection, dggs_version: str) -> None:

@@ -174,10 +174,8 @@ class IngestMethods:
 
         Raises
         ------
-        BadRowError
-            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or the store holds another level.
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
         DggsValueError
             If the file is not GeoJSON or a value column is named badly.
         StorageError
@@ -227,10 +225,8 @@ class IngestMethods:
 
         Raises
         ------
-        BadRowError
-            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or the store holds another level.
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
         DggsValueError
             If the layer cannot be read, its CRS is unknown, or a value column is not one of its fields.
         StorageError
@@ -274,10 +270,8 @@ class IngestMethods:
 
         Raises
         ------
-        BadRowError
-            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or the store holds another level.
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
         DggsValueError
             If ``records`` is not an iterable of dicts or a value column is named badly.
 
@@ -329,10 +323,8 @@ class IngestMethods:
 
         Raises
         ------
-        BadRowError
-            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or the store holds another level.
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
         DggsValueError
             If an array is not flat or its length differs from ``lat``'s.
 
@@ -371,10 +363,8 @@ class IngestMethods:
 
         Raises
         ------
-        BadRowError
-            On a bad row with ``on_error="fail"`` (earlier batches stay committed).
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or the store holds another level.
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
         DggsValueError
             If the ``lat`` or ``lng`` column is missing or a value column is named badly.
 
