@@ -11,8 +11,8 @@ API that is not there yet is skipped with a note (see ``_common.note``).
 from __future__ import annotations
 
 import math
-from typing import Any
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -112,7 +112,7 @@ def table_point_to_cell(k: Kernel, mods: dict[str, Any], n: int, loop_n: int, re
     lat, lng = points(n)
     theta, phi = np.radians(90.0 - lat), np.radians(lng)  # healpy's angles, made outside the timing
     lat_l, lng_l = lat[:loop_n].tolist(), lng[:loop_n].tolist()
-    pts = list(zip(lng_l, lat_l))  # A5 takes (lng, lat)
+    pts = list(zip(lng_l, lat_l, strict=True))  # A5 takes (lng, lat)
     cases: dict[tuple[str, str], tuple] = {}
     ref: dict[tuple[str, str], str] = {}
     prim = k.label[k.primary]
@@ -134,9 +134,9 @@ def table_point_to_cell(k: Kernel, mods: dict[str, Any], n: int, loop_n: int, re
             from h3.api import basic_int as h3i
 
             cases[(op, f"h3-py string API loop, res {r}")] = (
-                lambda r=r: [h3.latlng_to_cell(a, b, r) for a, b in zip(lat_l, lng_l)], loop_n)
+                lambda r=r: [h3.latlng_to_cell(a, b, r) for a, b in zip(lat_l, lng_l, strict=True)], loop_n)
             cases[(op, f"h3-py int API loop, res {r}")] = (
-                lambda r=r: [h3i.latlng_to_cell(a, b, r) for a, b in zip(lat_l, lng_l)], loop_n)
+                lambda r=r: [h3i.latlng_to_cell(a, b, r) for a, b in zip(lat_l, lng_l, strict=True)], loop_n)
         if a5 is not None:
             ar = a5_res(a5, area)
             cases[(op, f"A5 (pya5) loop, res {ar} ({a5.cell_area(ar) / 1e6:.3g} km²)")] = (
@@ -297,7 +297,7 @@ def table_single(k: Kernel, mods: dict[str, Any], n: int, repeat: int, budget: f
     """One call at a time in a Python loop over ``n`` different points / cells: ns per call."""
     d = k.d
     lat, lng = points(n, seed=7)
-    pts = list(zip(lat.tolist(), lng.tolist()))
+    pts = list(zip(lat.tolist(), lng.tolist(), strict=True))
     cases: dict[tuple[str, str], tuple[Callable[[], Any], Any]] = {}
     ref: dict[tuple[str, str], str] = {}
     h3 = mods.get("h3")

@@ -38,8 +38,19 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
 
-from _common import (NOTES, code_state, loadavg, machine, note, points, run_json, run_once,  # noqa: E402
-                     thread_env, thread_info, try_import)
+from _common import (  # noqa: E402
+    NOTES,
+    code_state,
+    loadavg,
+    machine,
+    note,
+    points,
+    run_json,
+    run_once,
+    thread_env,
+    thread_info,
+    try_import,
+)
 
 HERE = Path(__file__).resolve()
 FULL = dict(points=1_000_000, loop_points=200_000, cells=100_000, compact_cells=1_000_000, box_deg=20.0,

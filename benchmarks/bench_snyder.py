@@ -36,8 +36,8 @@ import os
 import statistics
 import threading
 import time
-from concurrent.futures import ThreadPoolExecutor
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -97,7 +97,7 @@ def chunked(fn: Callable[..., object], arrays: Sequence[np.ndarray], threads: in
     if threads <= 1 or pool is None:
         return lambda: [fn(*arrays)]
     bounds = np.linspace(0, len(arrays[0]), threads + 1).astype(int)
-    parts = [[a[lo:hi] for a in arrays] for lo, hi in zip(bounds[:-1], bounds[1:])]
+    parts = [[a[lo:hi] for a in arrays] for lo, hi in zip(bounds[:-1], bounds[1:], strict=True)]
     return lambda: list(pool.map(lambda p: fn(*p), parts))
 
 

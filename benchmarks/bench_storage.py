@@ -27,9 +27,9 @@ import time
 from pathlib import Path
 
 import numpy as np
-from dggs.storage import CellStore
 
 import dggs
+from dggs.storage import CellStore
 
 
 def make_csv(path: Path, rows: int, seed: int = 0) -> None:
@@ -51,6 +51,7 @@ def make_csv(path: Path, rows: int, seed: int = 0) -> None:
                     np.round(lng, 6).tolist(),
                     count.tolist(),
                     np.round(value, 3).tolist(),
+                    strict=True,
                 )
             )
 
@@ -148,7 +149,7 @@ def main() -> None:
         with CellStore(db_path, readonly=True) as store:
             some = store.get(store.descendants("A")[0]["cell"])[0]["cell"] if store.count("A") else None
             for level in (0, 3, 6):
-                t = timed(lambda: store.aggregate(level, "value"), repeat=3)
+                t = timed(lambda level=level: store.aggregate(level, "value"), repeat=3)
                 n = len(store.aggregate(level, "value", ("count",)))
                 results.append((f"aggregate to level {level} (count/sum/mean/min/max)", f"{n:,} cells", f"{t * 1000:.0f} ms"))
             t = timed(lambda: store.aggregate(3, "value", cell="A0"), repeat=5)
@@ -156,9 +157,9 @@ def main() -> None:
             for level in (2, 5, 8):
                 cell = some[: level + 1] if some else "A" + "0" * level
                 n = store.count(cell)
-                t = timed(lambda: store.count(cell), repeat=20)
+                t = timed(lambda cell=cell: store.count(cell), repeat=20)
                 results.append((f"count(cell) prefix range, level {level}", f"{n:,} rows", f"{t * 1000:.2f} ms"))
-                t = timed(lambda: store.descendants(cell), repeat=5)
+                t = timed(lambda cell=cell: store.descendants(cell), repeat=5)
                 results.append((f"descendants(cell), level {level}", f"{n:,} rows", f"{t * 1000:.2f} ms"))
             if some:
                 t = timed(lambda: store.get(some), repeat=20)

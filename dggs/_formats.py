@@ -23,6 +23,12 @@ EXTENSIONS = {".geojson": "geojson", ".json": "geojson", ".parquet": "geoparquet
 def export_format(path: Any, format: str | None = None) -> str:
     """The format named (checked), or the one the extension of ``path`` implies.
 
+    Raises
+    ------
+    DggsValueError
+        If ``format`` is not one of the export formats, or it is None and the extension of
+        ``path`` implies none.
+
     Examples
     --------
     >>> export_format("cells.parquet"), export_format("cells.out", "gpkg")

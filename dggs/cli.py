@@ -5,6 +5,8 @@ Every :class:`dggs.DggsError` becomes a clear message and exit code 1.
 
 from __future__ import annotations
 
+from typing import Any
+
 import click
 
 from dggs.errors import DggsError
@@ -13,7 +15,7 @@ from dggs.errors import DggsError
 class _DggsGroup(click.Group):
     """A click group that turns library errors into clean CLI errors."""
 
-    def invoke(self, ctx: click.Context):  # noqa: D102
+    def invoke(self, ctx: click.Context) -> Any:  # noqa: D102
         try:
             return super().invoke(ctx)
         except DggsError as exc:

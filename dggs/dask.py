@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -51,7 +52,13 @@ _STRING = "string"  # pandas' string dtype: what Dask and Parquet carry natively
 
 
 def cells_partition(df: pd.DataFrame, level: int, lat: str, lng: str, column: str) -> pd.DataFrame:
-    """Add a ``column`` of cell ids to one pandas partition (vectorized)."""
+    """Add a ``column`` of cell ids to one pandas partition (vectorized).
+
+    Raises
+    ------
+    CoordinateError
+        If a coordinate is NaN, infinite or out of range (names the index).
+    """
     out = df.copy()
     ids = latlng_to_cell(df[lat].to_numpy(np.float64), df[lng].to_numpy(np.float64), level) if len(df) else []
     out[column] = pd.Series(ids, index=df.index, dtype=_STRING)
@@ -72,7 +79,8 @@ def add_cells(ddf: dd.DataFrame, level: int, lat: str = "lat", lng: str = "lng",
         if col not in ddf.columns:
             raise DggsValueError(f"column {col!r} is not in the dataframe (columns: {list(ddf.columns)})")
     meta = ddf._meta.assign(**{column: pd.Series([], dtype=_STRING)})
-    return ddf.map_partitions(cells_partition, level, lat, lng, column, meta=meta)
+    out: dd.DataFrame = ddf.map_partitions(cells_partition, level, lat, lng, column, meta=meta)
+    return out
 
 
 def aggregate(
@@ -97,6 +105,13 @@ def aggregate(
     Returns
     -------
     dask DataFrame indexed by cell id at ``level``, one column per stat.
+
+    Raises
+    ------
+    DggsValueError
+        If a stat is unknown, or the ``cell`` or ``column`` column is not in the frame.
+    LevelError
+        If ``level`` is outside ``0..MAX_LEVEL``.
     """
     level = check_level(level)
     bad = [s for s in stats if s not in _STATS]
@@ -107,10 +122,11 @@ def aggregate(
     parent = ddf[cell].str.slice(0, level + 1)
     if column is None:
         grouped = ddf.assign(_one=1).assign(_parent=parent).groupby("_parent")["_one"].count()
-        return grouped.to_frame("count")
+        counts: dd.DataFrame = grouped.to_frame("count")
+        return counts
     if column not in ddf.columns:
         raise DggsValueError(f"column {column!r} is not in the dataframe (columns: {list(ddf.columns)})")
-    out = ddf.assign(_parent=parent).groupby("_parent")[column].agg(list(stats))
+    out: dd.DataFrame = ddf.assign(_parent=parent).groupby("_parent")[column].agg(list(stats))
     out.index = out.index.rename("cell")
     return out
 
@@ -138,7 +154,8 @@ def _write_faces(pdf: pd.DataFrame, path: str, cell: str, part: int, densify: in
 
 
 def to_parquet(
-    ddf: dd.DataFrame, path: str, cell: str = "cell", *, geometry: bool = True, densify: int | None = 16, **kwargs
+    ddf: dd.DataFrame, path: str, cell: str = "cell", *, geometry: bool = True, densify: int | None = 16,
+    **kwargs: Any,
 ) -> None:
     """Write Parquet partitioned by base cell (``face=A`` ... ``face=T`` folders).
 
@@ -156,6 +173,12 @@ def to_parquet(
 
     ``geometry=False`` writes plain Parquet through Dask (``kwargs`` go to
     ``dask.dataframe.to_parquet``).
+
+    Raises
+    ------
+    DggsValueError
+        If the ``cell`` column is missing, or (with ``geometry``) a column is named like one the
+        GeoParquet output adds (``cell_id``, ``bbox``, ``geometry``, ``face``).
     """
     if cell not in ddf.columns and ddf.index.name == cell:
         ddf = ddf.reset_index()
@@ -175,7 +198,8 @@ def to_parquet(
     dask.compute(*(write(part, path, cell, i, densify, kwargs) for i, part in enumerate(parts)))
 
 
-def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs) -> dd.DataFrame:
+def read_parquet(path: str, faces: Sequence[str] | None = None, **kwargs: Any) -> dd.DataFrame:
     """Read what :func:`to_parquet` wrote, optionally only some base cells (faces)."""
     filters = [("face", "in", list(faces))] if faces else None
-    return dd.read_parquet(path, filters=filters, **kwargs)
+    ddf: dd.DataFrame = dd.read_parquet(path, filters=filters, **kwargs)
+    return ddf

@@ -106,7 +106,8 @@ def _ids(name: str, a: Any, valid: np.ndarray) -> np.ndarray:
         except InvalidCellError as exc:
             raise InvalidCellError(f"{name}: {exc}") from None
         raise InvalidCellError(f"{name}: {int(bad)} is not a valid cell id")  # pragma: no cover
-    return ids
+    checked: np.ndarray = ids
+    return checked
 
 
 def _numbers(a: Any, valid: np.ndarray, dtype: Any) -> np.ndarray:
@@ -285,6 +286,11 @@ def register(con: Any) -> Any:
     ``<name>_i64``, ``<name>_u64``, ``<name>_str``); see :data:`FUNCTIONS`
     and ``docs/duckdb.md``.  Calling it again on the same connection
     replaces the functions.
+
+    Raises
+    ------
+    RuntimeError
+        If the installed DuckDB is older than 1.4 (it lacks the function API used).
 
     Examples
     --------

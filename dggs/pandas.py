@@ -85,13 +85,15 @@ def _coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
     """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row."""
     col = frame[name]
     if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
-        return col.to_numpy(dtype=np.float64, na_value=np.nan)
+        numbers: np.ndarray = col.to_numpy(dtype=np.float64, na_value=np.nan)  # pandas is untyped here
+        return numbers
     values = pd.to_numeric(col, errors="coerce")
     bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
     if bad.any():
         i = int(np.flatnonzero(bad.to_numpy())[0])
         raise CoordinateError(f"{name} {col.iloc[i]!r} in row {_label(frame, i)} is not a number")
-    return values.to_numpy(dtype=np.float64, na_value=np.nan)
+    coerced: np.ndarray = values.to_numpy(dtype=np.float64, na_value=np.nan)
+    return coerced
 
 
 def _label(frame_or_index: Any, i: int) -> str:
@@ -385,8 +387,10 @@ class DggsAccessor:
         Raises
         ------
         DggsValueError
-            A geometry that is not a (Multi)Polygon (names the row), an
-            unknown ``mode``, or a frame without geometry.
+            A geometry that is not a (Multi)Polygon (names the row) or an
+            unknown ``mode``.
+        ColumnError
+            A frame without an active geometry column (a :class:`DggsValueError`).
         TooManyCellsError
             A feature would have more than ``max_cells`` cells.
 

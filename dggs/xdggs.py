@@ -116,7 +116,13 @@ class Split26Info(DGGSInfo):
 
     @classmethod
     def from_dict(cls, mapping: Mapping[str, Any]) -> Split26Info:
-        """Build the grid information from attributes (``grid_name`` is ignored, unknown keys raise)."""
+        """Build the grid information from attributes (``grid_name`` is ignored, unknown keys raise).
+
+        Raises
+        ------
+        ValueError
+            If a key is unknown, the level is missing or out of range, or the ellipsoid is not WGS84.
+        """
         translations = {
             "level": ("level", _parse_level),
             "resolution": ("level", _parse_level),
@@ -156,6 +162,11 @@ class Split26Info(DGGSInfo):
         ``backend="shapely"`` gives an object array of shapely geometries (``dggs.cell_to_polygon``, whose
         default densification keeps polygon areas within 1e-6); ``backend="geoarrow"`` gives a geoarrow
         (multi)polygon array for lonboard, with :data:`GEOARROW_DENSIFY` points per edge by default.
+
+        Raises
+        ------
+        ValueError
+            If ``backend`` is not one of the supported backends.
         """
         if backend not in ("shapely", "geoarrow"):
             raise ValueError(f"invalid backend: {backend!r}")
@@ -174,13 +185,19 @@ class Split26Info(DGGSInfo):
         """Parents (``level`` < own level, shape (n,)) or children (shape (n, children per cell)) of the ids.
 
         Children past ``dggs.cell_to_children``'s limit (50 million cells) raise ``dggs.TooManyCellsError``.
+
+        Raises
+        ------
+        ValueError
+            If ``level`` is outside ``0..MAX_LEVEL``.
         """
         level = _parse_level(level)
         if not 0 <= level <= dggs.MAX_LEVEL:
             raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {level!r}")
         ids = _as_ids(cell_ids)
         if level == self.level:
-            return ids.copy()
+            same: np.ndarray = ids.copy()
+            return same
         if level < self.level:
             return np.asarray(dggs.cell_to_parent(ids, level))
         per_cell = 3 ** (level - self.level) * (2 if self.level == 0 else 1)
@@ -249,6 +266,14 @@ class Split26Index(DGGSIndex):
         *,
         options: Mapping[str, Any],
     ) -> Split26Index:
+        """Build the index from the cell-id variable of ``variables`` (xarray's index protocol).
+
+        Raises
+        ------
+        ValueError
+            If there is not exactly one 1-D cell-id variable, the grid attributes are not those of this
+            grid, or an id is not a cell id of their level (plain ValueError, as xdggs's own grids raise).
+        """
         name, var, dim = _cell_id_variable(variables)
         attrs = dict(var.attrs) | dict(options)
         data = var.data
@@ -261,6 +286,7 @@ class Split26Index(DGGSIndex):
 
     @property
     def grid_info(self) -> Split26Info:
+        """The grid parameters (level, id format) of this index."""
         return self._grid
 
     def _replace(self, new_index: Any) -> Split26Index:

@@ -28,7 +28,7 @@ with CellStore("australia.db") as store:
     level = 6
     cells = dggs.polygon_to_cells(australia, level)
     inside = store.within(australia, level)
-    exact = sum(australia.contains(Point(x, y)) for x, y in zip(lng, lat))
+    exact = sum(australia.contains(Point(x, y)) for x, y in zip(lng, lat, strict=True))
     print(f"{len(cells):,} level-{level} cells ({dggs.cell_area(level, unit='km^2'):,.0f} km^2 each) cover the outline")
     print(f"{len(inside):,} points in those cells; {exact:,} strictly inside the polygon")
     print(f"covered area {len(cells) * dggs.cell_area(level, unit='km^2'):,.0f} km^2 "

@@ -67,7 +67,14 @@ from dggs.experiments.chapter4_constants import (
     TOL,
 )
 from dggs.experiments.chapter4_errors import error_rows
-from dggs.experiments.chapter4_fits import SectorFit, exact_az, fit_sector, fit_table, implied_sample_size, sector_samples
+from dggs.experiments.chapter4_fits import (
+    SectorFit,
+    exact_az,
+    fit_sector,
+    fit_table,
+    implied_sample_size,
+    sector_samples,
+)
 from dggs.experiments.chapter4_mesh import face_mesh, inverse_with_az, spherical_triangle_areas
 from dggs.experiments.chapter4_report import _format
 from dggs.experiments.chapter4_speed import degree7_check, iteration_rows, timing_rows

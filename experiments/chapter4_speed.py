@@ -87,13 +87,15 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
     for q in qualities:
         face, x, y = _all_faces(q)
         ap, area = _sector_azimuths(x, y)
-        whole = {m: (lambda name=name: thesis_inverse.inverse_xyz(face, x, y, method=name, degree=3, tol=tol))
+        # this quality's arrays are bound as defaults (B023), as the method name is
+        whole = {m: (lambda name=name, face=face, x=x, y=y:
+                     thesis_inverse.inverse_xyz(face, x, y, method=name, degree=3, tol=tol))
                  for m, name in methods.items()}
         step = {
-            "O": lambda: thesis_inverse.newton(area, ap, tol, 20),
-            "I": lambda: thesis_inverse.newton(area, thesis_inverse.az_poly(ap, 3), tol, 20),
-            "E": lambda: thesis_inverse.az_poly(ap, 3),
-            "C": lambda: numpy_snyder.az_closed(area),
+            "O": lambda area=area, ap=ap: thesis_inverse.newton(area, ap, tol, 20),
+            "I": lambda area=area, ap=ap: thesis_inverse.newton(area, thesis_inverse.az_poly(ap, 3), tol, 20),
+            "E": lambda ap=ap: thesis_inverse.az_poly(ap, 3),
+            "C": lambda area=area: numpy_snyder.az_closed(area),
         }
         t_whole: dict[str, list[float]] = {m: [] for m in methods}
         t_step: dict[str, list[float]] = {m: [] for m in methods}

@@ -224,7 +224,7 @@ def write_figures(
         fig_a, fig_d = (f" (cf. Figure {f})" for f in numbers) if numbers else ("", "")
         ncol = max(len(meshes), 1)
         fig, axes = plt.subplots(1, ncol, figsize=(2.6 * ncol + 0.8, 3.0), squeeze=False)
-        for ax, (mesh, m) in zip(axes[0], meshes):
+        for ax, (mesh, m) in zip(axes[0], meshes, strict=False):  # no meshes: one empty panel
             coll = plot_area_highlighting(ax, mesh, m.face_errors_pct)
             ax.set_title(f"level {m.level}: max {m.max_face_error_pct:.2f} %", fontsize=8)
             cb = fig.colorbar(coll, ax=ax, orientation="horizontal", fraction=0.05, pad=0.02)

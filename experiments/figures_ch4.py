@@ -220,7 +220,7 @@ def write_chapter4(outdir: str | Path, quick: bool = False) -> list[Path]:
     qualities = (10, 30, 60) if quick else (10, 30, 60, 100)
     fig, axes = plt.subplots(1, len(qualities), figsize=(3.0 * len(qualities), 3.1))
     cmap = ListedColormap(ITER_COLOURS)
-    for ax, q in zip(axes, qualities):
+    for ax, q in zip(axes, qualities, strict=True):
         p, tri = face_mesh(q)
         its = np.minimum(iteration_counts(q), 5)
         if q <= 30:
@@ -238,7 +238,7 @@ def write_chapter4(outdir: str | Path, quick: bool = False) -> list[Path]:
     # Figure 4.4 / Table 4.3: inverse error over a face
     p, err = inverse_errors_m(40 if quick else 100)
     fig, axes = plt.subplots(1, 3, figsize=(13.0, 3.8), constrained_layout=True)
-    for ax, label in zip(axes[:2], ("poly 3", "poly 7")):
+    for ax, label in zip(axes[:2], ("poly 3", "poly 7"), strict=True):
         sc = ax.scatter(p[:, 0], p[:, 1], c=err[label], s=2 if not quick else 6, lw=0, cmap="viridis")
         fig.colorbar(sc, ax=ax, fraction=0.046, label="m")
         ax.set_title(f"{label} alone ('E'): mean {err[label].mean():.1f} m, max {err[label].max():.0f} m",
@@ -270,7 +270,7 @@ def write_chapter4(outdir: str | Path, quick: bool = False) -> list[Path]:
     axes[0].axis("off")
     planar, sphere = disc_areas(360 if quick else 720)
     axes[0].set_title(f"picture on face 0 (plane)\n3 discs, planar area {planar:.5f}", fontsize=8)
-    for ax, view in zip(axes[1:], ((25.0, 10.0), (-25.0, 190.0))):
+    for ax, view in zip(axes[1:], ((25.0, 10.0), (-25.0, 190.0)), strict=True):
         _draw_picture_globe(ax, 16 if quick else 48, view)
     axes[1].set_title("inverse Snyder (Newton) onto the sphere\n"
                       f"disc areas on the sphere {', '.join(f'{a:.5f}' for a in sphere)}", fontsize=8)

@@ -163,7 +163,7 @@ def _fig_5_3(plt):
     tri = tri / np.linalg.norm(tri, axis=1, keepdims=True)
     levels = circle_subdivide(tri, 3)
     fig, axes = _row(plt, 4)
-    for k, (ax, p) in enumerate(zip(axes, levels)):
+    for k, (ax, p) in enumerate(zip(axes, levels, strict=True)):
         r = float(np.linalg.norm(p, axis=1).mean())
         _circle(ax, (0, 0), r, color="0.6", lw=0.8)
         _circle(ax, (0, 0), 1.0, color="0.85", lw=0.6, ls=":")
@@ -186,7 +186,7 @@ def _fig_5_4(plt):
              (proj, f"3. onto C: L' = {polygon_length(proj):.4f}"),
              (scaled, f"5. R' = L R / L' = {length / polygon_length(proj):.4f}\nL = {polygon_length(scaled):.4f}")]
     fig, axes = _row(plt, 4)
-    for ax, (q, title) in zip(axes, steps):
+    for ax, (q, title) in zip(axes, steps, strict=True):
         _circle(ax, (0, 0), 1.0, color="0.7", lw=0.7)
         _poly(ax, p, color="0.75", lw=0.6)
         _poly(ax, q)
@@ -237,7 +237,7 @@ def _fig_5_13(plt):
     _arcs(axes[3], fine)
     titles = ["(a) edge e, circles $C_0$, $C_1$", f"(b) averaged circle: $R_N$={d['R_N']:.2f}, $m_N$",
               "(c) e replaced by two edges", "(d) circles recomputed (level 1)"]
-    for ax, t in zip(axes, titles):
+    for ax, t in zip(axes, titles, strict=True):
         _frame(ax, p, 0.3, t)
     fig.suptitle("Figure 5.13: arbitrary curve construction (§5.1.4)", fontsize=8)
     return fig
@@ -246,7 +246,7 @@ def _fig_5_13(plt):
 def _levels_figure(plt, p, levels, title, length="none", arcs=True, marks_reflex=False, pad=0.3):
     out = radial_subdivide(p, max(levels), length=length)
     fig, axes = _row(plt, len(levels), 3.0, 3.0)
-    for ax, k in zip(axes, levels):
+    for ax, k in zip(axes, levels, strict=True):
         q = out[k]
         if arcs:
             _arcs(ax, q, max_radius=20 * float(np.ptp(p)))
@@ -265,7 +265,7 @@ def _fig_5_15(plt):
     plain = radial_subdivide(p, 3, length="none")
     kept = radial_subdivide(p, 3, length="thesis")
     fig, axes = _row(plt, 2, 3.6, 3.6)
-    for ax, zoom in zip(axes, (None, (200.0, -20.0))):
+    for ax, zoom in zip(axes, (None, (200.0, -20.0)), strict=True):
         _poly(ax, p, color="0.7", lw=0.6)
         _poly(ax, plain[3], color="tab:blue", lw=0.8, label=f"no scaling, L = {polygon_length(plain[3]):.3f}")
         _poly(ax, kept[3], color="k", lw=0.8, label=f"scaled L_B/L_A (§5.1.6), L = {polygon_length(kept[3]):.3f}")
@@ -288,11 +288,11 @@ def _fig_5_19_5_20(plt):
     fig, axes = _row(plt, 4, 3.0, 3.0)
     _circle(axes[0], c[0], r[0], color=_PINK, lw=0.7)
     axes[0].plot(*c[0], "o", color=_GREEN, ms=3)
-    for ax, k in zip(axes, (0, 1, 3, 5)):
+    for ax, k in zip(axes, (0, 1, 3, 5), strict=True):
         _poly(ax, out[k])
         ax.plot(*out[k].T, ".", color="k", ms=2)
     _frame(axes[0], np.vstack([p, c[:1] - r[0], c[:1] + r[0]]), 0.05, "Figure 5.19: obtuse triangle,\norigin outside")
-    for ax, k in zip(axes[1:], (1, 3, 5)):
+    for ax, k in zip(axes[1:], (1, 3, 5), strict=True):
         arcs = three_point_arcs(out[k])
         outside = arcs.centre[:, 1] < 0.0  # origins below the long edge: outside the curve
         ax.plot(*arcs.centre[outside & (arcs.radius < 30)].T, ".", color=_GREEN, ms=3)
@@ -310,9 +310,9 @@ def _fig_5_21(plt):
     p = CURVES["pentagon"]
     rows = [("thesis", "one-shot scaling (§5.1.6)"), ("none", "no scaling")]
     fig, axes = plt.subplots(2, 4, figsize=(11.0, 5.6))
-    for row, (mode, label) in zip(axes, rows):
+    for row, (mode, label) in zip(axes, rows, strict=True):
         d = co_linearity_breakdown(8, length=mode)
-        for ax, k in zip(row, (0, 6, 7, 8)):
+        for ax, k in zip(row, (0, 6, 7, 8), strict=True):
             q = d["levels"][k]
             _poly(ax, q, lw=0.6)
             _frame(ax, p, 0.3, f"{label}, level {k}\nreflex {d['reflex'][k]}, L/L0 = {d['length_ratio'][k]:.4g}")

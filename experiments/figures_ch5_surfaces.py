@@ -96,7 +96,7 @@ def _mesh(ax, v, f, face="#9ecae1", edge="0.3", alpha=0.9, lw=0.3, mark_reflex=F
 
 def _box(ax, lo, hi, title):
     c, h = 0.5 * (lo + hi), 0.5 * float(np.max(hi - lo))
-    for s, m in zip("xyz", c):
+    for s, m in zip("xyz", c, strict=True):
         getattr(ax, f"set_{s}lim")(m - h, m + h)
     ax.set_box_aspect((1, 1, 1))
     ax.set_axis_off()
@@ -142,7 +142,7 @@ def _fig_5_8_5_10(plt):
     fig = plt.figure(figsize=(13.0, 3.6))
     titles = ["Figure 5.8: initial setup", "Figure 5.9: refine surface", "Figure 5.10: reposition on sphere",
               "Figure 5.10: scale to R' = sqrt(SA R² / SA')"]
-    for k, ((label, mesh, r, sa), title) in enumerate(zip(steps, titles)):
+    for k, ((label, mesh, r, sa), title) in enumerate(zip(steps, titles, strict=True)):
         ax = fig.add_subplot(1, 4, k + 1, projection="3d")
         _sphere(ax, (0, 0, 0), 1.0, n=11, alpha=0.25)
         if k == 3:
@@ -160,7 +160,7 @@ def _fig_5_22(plt, levels: int = 3):
     rows, cols = (levels + 2) // 2 + ((levels + 2) % 2 > 0), 4
     letters = iter("abcdefghijkl")
     k = 0
-    for level, ((v, f, c, r), st) in enumerate(zip(meshes, stats)):
+    for level, ((v, f, c, r), st) in enumerate(zip(meshes, stats, strict=True)):
         for with_spheres in (False, True):
             k += 1
             ax = fig.add_subplot(rows, cols, k, projection="3d")

@@ -115,7 +115,7 @@ def write_figure_6_18(outdir: str | Path, s: float = 0.25, u: float = 0.6) -> li
             (f"(c) adjusted ({s}, {u}) per edge", split_1_9_fractions(s, u, "edge"))]
     vmax = max(float(np.abs(r["area_error_pct"]).max()) for _, r in runs)
     fig, axes = plt.subplots(1, 3, figsize=(11.0, 4.0))
-    for ax, (title, r) in zip(axes, runs):
+    for ax, (title, r) in zip(axes, runs, strict=True):
         xy, depth = _view(r["triangles"], centre)
         front = depth.min(axis=1) > 0.55
         crack = "b" in title[:3]

@@ -32,7 +32,7 @@ from dggs.errors import DggsValueError
 from dggs.experiments import numpy_snyder
 from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA, Orientation, xyz_to_latlng
-from dggs.geometry.snyder import G, G_ARC
+from dggs.geometry.snyder import G_ARC, G
 
 __all__ = ["METHODS", "polynomial", "newton", "az_poly", "inverse_xyz", "inverse"]
 

@@ -99,7 +99,7 @@ def catmull_clark(mesh: Mesh, rule: Literal["projected", "standard"] = "projecte
     f0 = len(v)
     e0 = f0 + n_faces
     quads, start = [], 0
-    for block, ce in zip(mesh.faces, corner_edge):  # one iteration per face *size*
+    for block, ce in zip(mesh.faces, corner_edge, strict=True):  # one iteration per face *size*
         fi = f0 + start + np.arange(len(block))
         nxt = e0 + ce  # edge leaving corner i
         prv = e0 + np.roll(ce, 1, axis=1)  # edge arriving at corner i
@@ -117,7 +117,7 @@ def _catmull_clark_points(mesh: Mesh, edges: np.ndarray, corner_edge: tuple[np.n
     q_sum = np.zeros_like(v)  # sum of the face points around each vertex
     q_n = np.zeros(len(v))
     start = 0
-    for block, ce in zip(mesh.faces, corner_edge):
+    for block, ce in zip(mesh.faces, corner_edge, strict=True):
         fp = face_pts[start : start + len(block)]
         for k in range(block.shape[1]):
             np.add.at(edge_faces, ce[:, k], fp)

@@ -124,7 +124,7 @@ def format_all_tables(
     thesis_results = thesis_results or {}
     out = []
     counts: dict[str, dict[str, int]] = {"thesis's rules": {}, "dggs": {}}
-    for table, attr, fmt in COLUMNS:
+    for table, _attr, fmt in COLUMNS:
         caption = TABLES_6[table][0]
         width = max(len(v) for v in [*results.values(), *thesis_results.values()]) - 1
         lines = [

@@ -47,9 +47,11 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     text = [[_format_value(row.get(c)) for c in cols] for row in rows]
     widths = [max(len(c), *(len(r[i]) for r in text)) for i, c in enumerate(cols)]
     numeric = [all(isinstance(row.get(c), (int, float)) or row.get(c) is None for row in rows) for c in cols]
-    lines = ["  ".join(c.ljust(w) if not n else c.rjust(w) for c, w, n in zip(cols, widths, numeric)).rstrip()]
+    lines = ["  ".join(c.ljust(w) if not n else c.rjust(w)
+                       for c, w, n in zip(cols, widths, numeric, strict=True)).rstrip()]
     for r in text:
-        lines.append("  ".join(v.rjust(w) if n else v.ljust(w) for v, w, n in zip(r, widths, numeric)).rstrip())
+        lines.append("  ".join(v.rjust(w) if n else v.ljust(w)
+                              for v, w, n in zip(r, widths, numeric, strict=True)).rstrip())
     return "\n".join(lines)
 
 
@@ -109,8 +111,9 @@ def bin_(
     layer: str | None,
     progress: bool | None,
 ) -> None:
-    """Bin the points of INPUT (CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf
-    or GeoParquet) into cells and store them in DB.
+    """Bin the points of INPUT into cells and store them in DB.
+
+    INPUT is CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf or GeoParquet.
 
     Batches commit atomically; running the same command again resumes an
     interrupted ingest (or does nothing if it finished), never duplicating
@@ -120,9 +123,10 @@ def bin_(
     Example:
       dggs bin cities.csv --db cities.db --level 7 --value population
     """
+    from tqdm import tqdm
+
     from dggs.storage import CellStore, RejectedRowsWarning
     from dggs.storage.readers import count_csv_rows, sniff_kind
-    from tqdm import tqdm
 
     kind = sniff_kind(input_path)
     declared = _value_types(values)

@@ -198,7 +198,7 @@ class Connection:
         cursor = self.conn.execute(sql, params)
         names = [d[0] for d in cursor.description]
         for row in cursor:
-            yield dict(zip(names, row))
+            yield dict(zip(names, row, strict=True))
 
     def _setup(self) -> None:
         conn = self.conn
@@ -222,6 +222,7 @@ class Connection:
         check_meta(conn, self.path)
 
     def close(self) -> None:
+        """Close the SQLite connection."""
         self.conn.close()
 
     @contextlib.contextmanager
@@ -259,10 +260,18 @@ class Connection:
 
     @property
     def meta(self) -> dict[str, str]:
+        """The ``meta`` table as a dict (schema version, level, CRS, ...)."""
         return dict(self.conn.execute("SELECT key, value FROM meta"))
 
     @property
     def level(self) -> int | None:
+        """The stored level, or None before the first ingest.
+
+        Raises
+        ------
+        StorageError
+            If the stored level is not a level (a damaged ``meta`` table).
+        """
         row = self.conn.execute("SELECT value FROM meta WHERE key = 'level'").fetchone()
         if row is None:
             return None
@@ -272,15 +281,27 @@ class Connection:
 
     @property
     def columns(self) -> dict[str, str]:
+        """The value columns and their SQL types."""
         return column_types(self.conn)
 
     def touch(self) -> None:
+        """Record now as the time of the last change."""
         self.conn.execute("UPDATE meta SET value = ? WHERE key = 'updated'", (now(),))
 
     def set_level(self, level: int) -> None:
+        """Record ``level`` as the stored level, unless one is already set."""
         self.conn.execute("INSERT OR IGNORE INTO meta (key, value) VALUES ('level', ?)", (str(level),))
 
     def check_level_for_ingest(self, level: int) -> None:
+        """Check that rows may be ingested at ``level``.
+
+        Raises
+        ------
+        LevelError
+            If ``level`` is not an int in ``0..MAX_LEVEL``.
+        LevelMismatchError
+            If the store already holds cells at another level.
+        """
         if isinstance(level, bool) or not isinstance(level, int) or not 0 <= level <= dggs.MAX_LEVEL:
             raise LevelError(f"level {level!r} is out of range 0..{dggs.MAX_LEVEL}")
         stored = self.level
@@ -291,16 +312,24 @@ class Connection:
             )
 
     def resolve_level(self, level: int | None) -> int:
+        """``level``, else the stored level, else the default level."""
         if level is not None:
             return level
         stored = self.level
         return DEFAULT_LEVEL if stored is None else stored
 
     def pending_count(self) -> int:
+        """How many ingested rows wait in ``points_pending`` to be merged."""
         return int(self.conn.execute("SELECT count(*) FROM points_pending").fetchone()[0])
 
     def merge_pending(self) -> None:
-        """Move pending rows into ``points`` (inside the caller's transaction)."""
+        """Move pending rows into ``points`` (inside the caller's transaction).
+
+        Raises
+        ------
+        StorageError
+            If a pending row would be stored twice (its key is already in ``points``).
+        """
         from .schema import BASE_COLUMNS, quote
 
         cols = ", ".join(quote(c) for c in (*BASE_COLUMNS, *self.columns))
@@ -316,7 +345,13 @@ class Connection:
         self.conn.execute("DELETE FROM points_pending")
 
     def check(self) -> None:
-        """Run ``PRAGMA integrity_check``; raise StorageError unless it says ok."""
+        """Run ``PRAGMA integrity_check``; raise StorageError unless it says ok.
+
+        Raises
+        ------
+        StorageError
+            If the integrity check finds a problem or the file cannot be read.
+        """
         try:
             problems = [row[0] for row in self.conn.execute("PRAGMA integrity_check(20)")]
         except sqlite3.Error as exc:

@@ -340,7 +340,7 @@ def prepare(
         ]
         if with_parts:
             parts.insert(4, [batch.parts[i] for i in idx])  # type: ignore[index]
-    rows = list(zip(*parts))
+    rows = list(zip(*parts, strict=True))
     rejects = []
     for i in sorted(bad):
         column, value, reason = bad[i]

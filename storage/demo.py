@@ -28,6 +28,11 @@ __all__ = ["run_demo", "level_for_area", "load_cities"]
 def level_for_area(area_km2: float) -> int:
     """Return the level whose cell area is closest to ``area_km2`` (on a log scale).
 
+    Raises
+    ------
+    DggsValueError
+        If ``area_km2`` is not a positive number.
+
     Examples
     --------
     >>> level = level_for_area(10_000)

@@ -18,6 +18,7 @@ from __future__ import annotations
 import itertools
 import json
 import sqlite3
+import sys
 import time
 import warnings
 from collections.abc import Callable, Iterator, Mapping
@@ -28,8 +29,8 @@ from dggs.errors import DggsValueError, StorageError
 
 from .connection import Connection
 from .convert import Prepared, jsonable, make_transformer
-from .producer import Producer
 from .errors import BadRowError, RejectedRowsWarning
+from .producer import Producer
 from .readers import RawBatch
 from .schema import add_columns, column_types, now, quote, sql_type
 from .sources import open_source
@@ -175,6 +176,13 @@ def run_ingest(
     mapping of value column types, filled in as they become known.  With
     ``threaded``, batches are read in a background thread (not for user
     iterables, which may be tied to their thread, like sqlite3 cursors).
+
+    Raises
+    ------
+    BadRowError
+        On the first bad row with ``on_error="fail"`` (earlier batches stay committed).
+    StorageError
+        If another process ingests the same source at the same time.
     """
     declared = {name_: sql_type(t) for name_, t in declared.items()}
     store.check_level_for_ingest(level)
@@ -329,9 +337,11 @@ def _write_batch(
 
 def _max_variables(conn: sqlite3.Connection) -> int:
     """Return how many ``?`` parameters one statement may hold."""
+    if sys.version_info < (3, 11):  # no Connection.getlimit: SQLite's historical default
+        return 999
     try:
         return int(conn.getlimit(sqlite3.SQLITE_LIMIT_VARIABLE_NUMBER))
-    except (AttributeError, sqlite3.Error):  # Python < 3.11
+    except sqlite3.Error:
         return 999
 
 

@@ -35,7 +35,14 @@ def dtype_type(column: Any) -> str | None:
 
 
 def value_spec(values: Values) -> tuple[list[str], dict[str, Any]]:
-    """Split ``values`` into names (validated, distinct ignoring case) and declared types."""
+    """Split ``values`` into names (validated, distinct ignoring case) and declared types.
+
+    Raises
+    ------
+    DggsValueError
+        If a name or type is not valid, or two names are the same column to SQLite
+        (names ignore case).
+    """
     if values is None:
         return [], {}
     if isinstance(values, str):
@@ -78,6 +85,15 @@ def ingest_csv(
     encoding: str = "utf-8",
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest the CSV file ``path`` into ``store`` (the work of :meth:`dggs.storage.CellStore.ingest_csv`).
+
+    Raises
+    ------
+    DggsValueError
+        If ``encoding`` is unknown or ``delimiter`` is not one plain character, or a column is missing.
+    StorageError
+        If ``path`` does not exist.
+    """
     file = _source_file(path)
     try:
         codecs.lookup(encoding)
@@ -117,6 +133,15 @@ def ingest_geojson(
     *,
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest the GeoJSON file ``path`` (the work of :meth:`dggs.storage.CellStore.ingest_geojson`).
+
+    Raises
+    ------
+    DggsValueError
+        If ``options.crs`` is set (GeoJSON is WGS84 by definition) or the file is not GeoJSON.
+    StorageError
+        If ``path`` does not exist.
+    """
     file = _source_file(path)
     if options.crs is not None:
         raise DggsValueError("GeoJSON is WGS84 lng/lat by definition (RFC 7946): crs cannot be set")
@@ -167,6 +192,15 @@ def ingest_vector(
     *,
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest the features of a vector file's ``layer`` (the work of :meth:`dggs.storage.CellStore.ingest`).
+
+    Raises
+    ------
+    DggsValueError
+        If the layer cannot be read or a value column is not one of its fields.
+    StorageError
+        If ``path`` does not exist.
+    """
     file = _source_file(path)
     level = store.resolve_level(level)
     fields, file_crs = readers_vector.layer_fields(file, layer)
@@ -209,6 +243,13 @@ def ingest_records(
     *,
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest an iterable of dicts into ``store`` (the work of :meth:`dggs.storage.CellStore.ingest_records`).
+
+    Raises
+    ------
+    DggsValueError
+        If ``records`` is a string, bytes or a single mapping instead of an iterable of dicts.
+    """
     if isinstance(records, (str, bytes, Mapping)):
         raise DggsValueError(f"records must be an iterable of dicts, not {type(records).__name__}")
     level = store.resolve_level(level)
@@ -240,6 +281,13 @@ def ingest_points(
     *,
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest coordinate and value arrays (the work of :meth:`dggs.storage.CellStore.ingest_points`).
+
+    Raises
+    ------
+    DggsValueError
+        If the arrays are not one-dimensional or differ in length.
+    """
     level = store.resolve_level(level)
     values = dict(values or {})
     value_spec(list(values))
@@ -277,6 +325,13 @@ def ingest_dataframe(
     *,
     merge_rows: int,
 ) -> IngestResult:
+    """Ingest the rows of a DataFrame (the work of :meth:`dggs.storage.CellStore.ingest_dataframe`).
+
+    Raises
+    ------
+    DggsValueError
+        If the ``lat`` or ``lng`` column is missing.
+    """
     missing = [c for c in (lat, lng) if c not in df.columns]
     if missing:
         raise DggsValueError(

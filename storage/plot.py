@@ -98,7 +98,7 @@ def plot_cells(
         levels = {len(c) - 1 for c in cells}
         densify = 8 if min(levels) < 4 else 2
         geoms = dggs.cell_to_polygon(np.asarray(cells), densify=densify)
-        for geometry, value in zip(np.atleast_1d(geoms), vals):
+        for geometry, value in zip(np.atleast_1d(geoms), vals, strict=True):
             for ring in _rings(geometry):
                 x, y = to_map.transform(ring[:, 0], ring[:, 1])
                 polys.append(np.column_stack([x, y]))

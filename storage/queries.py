@@ -15,7 +15,6 @@ from typing import Any
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
 
-
 from .connection import Connection
 from .schema import quote
 
@@ -60,7 +59,13 @@ def normalise_cells(cells: Any) -> list[str]:
 
 
 def one_cell(cell: Any) -> str:
-    """A single cell id as a string (str or int id)."""
+    """A single cell id as a string (str or int id).
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cell`` is not one valid cell id.
+    """
     if isinstance(cell, str):
         if not dggs.is_valid_cell(cell):
             raise InvalidCellError(f"{cell!r} is not a valid cell id")
@@ -72,7 +77,13 @@ def one_cell(cell: Any) -> str:
 
 
 def check_cells(store: Connection, cells: list[str]) -> list[int]:
-    """Levels of ``cells``; none may be finer than the stored level."""
+    """Levels of ``cells``; none may be finer than the stored level.
+
+    Raises
+    ------
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     stored = store.level
     levels = []
     for cell in cells:
@@ -94,7 +105,15 @@ def disjoint(cells: list[str]) -> list[str]:
 
 
 def check_query_level(store: Connection, level: Any) -> int | None:
-    """Validate a roll-up level; return the stored level (None if empty)."""
+    """Validate a roll-up level; return the stored level (None if empty).
+
+    Raises
+    ------
+    LevelError
+        If ``level`` is not an int in ``0..MAX_LEVEL``.
+    LevelMismatchError
+        If ``level`` is finer than the stored level.
+    """
     if isinstance(level, bool) or not isinstance(level, int) or not 0 <= level <= dggs.MAX_LEVEL:
         raise LevelError(f"level {level!r} is out of range 0..{dggs.MAX_LEVEL}")
     stored = store.level
@@ -120,6 +139,15 @@ def _where(cells: list[str]) -> tuple[str, dict[str, Any]]:
 
 
 def count(store: Connection, cells: Any = None) -> int:
+    """Count the rows under any of ``cells``, or all rows when ``cells`` is None.
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     if cells is None:
         row = store.conn.execute(
             "SELECT (SELECT count(*) FROM points) + (SELECT count(*) FROM points_pending)"
@@ -138,12 +166,21 @@ def count(store: Connection, cells: Any = None) -> int:
 
 
 def get(store: Connection, cells: Any) -> list[dict[str, Any]]:
+    """Return the rows stored in exactly ``cells`` (cells at the stored level).
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is not at the stored level (coarser cells: :func:`descendants`).
+    """
     found = normalise_cells(cells)
     levels = check_cells(store, found)
     stored = store.level
     if stored is None or not found:
         return []
-    for cell, level in zip(found, levels):
+    for cell, level in zip(found, levels, strict=True):
         if level != stored:
             raise LevelMismatchError(
                 f"cell {cell!r} is at level {level}, not the stored level {stored}; "
@@ -158,6 +195,15 @@ def get(store: Connection, cells: Any) -> list[dict[str, Any]]:
 
 
 def descendants(store: Connection, cells: Any) -> list[dict[str, Any]]:
+    """Return the rows under any of ``cells``, each once, ordered by cell.
+
+    Raises
+    ------
+    InvalidCellError
+        If ``cells`` holds something that is not a cell id.
+    LevelMismatchError
+        If a cell is finer than the stored level.
+    """
     found = normalise_cells(cells)
     check_cells(store, found)
     if not found:
@@ -256,6 +302,18 @@ def aggregate(
     descending: bool,
     limit: int | None,
 ) -> list[dict[str, Any]]:
+    """Roll the rows up to the cells of ``level`` (the work of :meth:`dggs.storage.CellStore.aggregate`).
+
+    Raises
+    ------
+    LevelError
+        If ``level`` is outside ``0..MAX_LEVEL``.
+    LevelMismatchError
+        If ``level`` is finer than the stored level, or ``cell`` is finer than ``level``.
+    DggsValueError
+        If a stat is unknown, needs a column that is missing or holds text, ``order_by`` is not one of
+        the stats, or ``limit`` is not a whole number >= 0.
+    """
     stored = check_query_level(store, level)
     stats = tuple(stats)
     unknown = [s for s in stats if s not in STATS]
@@ -282,7 +340,7 @@ def aggregate(
     where = ""
     if cell is not None:
         found = normalise_cells(cell)
-        for c, cell_level in zip(found, check_cells(store, found)):
+        for c, cell_level in zip(found, check_cells(store, found), strict=True):
             if cell_level > level:
                 raise LevelMismatchError(
                     f"cell {c!r} is at level {cell_level}, finer than the roll-up level {level}"

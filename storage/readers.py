@@ -79,7 +79,13 @@ def _skip(iterator: Iterator[Any], n: int) -> None:
 
 
 def check_columns(path: str | Path, header: Sequence[str], wanted: Sequence[str]) -> None:
-    """Raise DggsValueError naming the columns of ``wanted`` missing from ``header``."""
+    """Raise DggsValueError naming the columns of ``wanted`` missing from ``header``.
+
+    Raises
+    ------
+    DggsValueError
+        If a column of ``wanted`` is not in ``header``.
+    """
     missing = [name for name in wanted if name not in header]
     if missing:
         raise DggsValueError(

@@ -93,6 +93,11 @@ def csv_header(path: str | Path, delimiter: str = ",", encoding: str = "utf-8") 
     Parses a prefix of the file with :func:`pyarrow.csv.read_csv`, which
     finishes its work before returning (a streaming reader dropped after one
     block could leave a read-ahead task behind).
+
+    Raises
+    ------
+    DggsValueError
+        If the file is empty, is not text in ``encoding``, or pyarrow cannot parse it.
     """
     import pyarrow as pa
     import pyarrow.csv as pacsv

@@ -24,6 +24,7 @@ __all__ = ["Chunk", "is_utf8", "rebatch"]
 
 
 def is_utf8(encoding: str) -> bool:
+    """Whether ``encoding`` names UTF-8 (with or without a byte-order mark)."""
     return encoding.lower().replace("_", "-") in ("utf-8", "utf8", "utf-8-sig")
 
 
@@ -88,7 +89,13 @@ def rebatch(
     delimiter: str,
     encoding: str,
 ) -> Iterator[RawBatch]:
-    """Cut record chunks into RawBatches of ``batch_size`` records after ``skip``."""
+    """Cut record chunks into RawBatches of ``batch_size`` records after ``skip``.
+
+    Raises
+    ------
+    BadRowError
+        If a quoted field is not closed (before the next record, or before the end of the file).
+    """
     import pyarrow as pa
 
     pending: list[Chunk] = []
@@ -147,13 +154,15 @@ def _concat(chunks: list[Chunk]) -> Chunk:
     lengths = [len(c) for c in chunks]
     bad = None
     if any(c.bad is not None for c in chunks):
-        bad = [r for c, n in zip(chunks, lengths) for r in (c.bad if c.bad is not None else [None] * n)]
+        bad = [r for c, n in zip(chunks, lengths, strict=True) for r in (c.bad if c.bad is not None else [None] * n)]
     blank = None
     if any(c.blank is not None for c in chunks):
-        blank = np.concatenate([c.blank if c.blank is not None else np.zeros(n, bool) for c, n in zip(chunks, lengths)])
+        blank = np.concatenate([c.blank if c.blank is not None else np.zeros(n, bool)
+                                for c, n in zip(chunks, lengths, strict=True)])
     fields = None
     if any(c.fields is not None for c in chunks):
-        fields = [f for c, n in zip(chunks, lengths) for f in (c.fields if c.fields is not None else [None] * n)]
+        fields = [f for c, n in zip(chunks, lengths, strict=True)
+                  for f in (c.fields if c.fields is not None else [None] * n)]
     return Chunk(columns, bad, blank, np.concatenate([c.newlines for c in chunks]), fields)
 
 
@@ -204,7 +213,7 @@ def _raw_batch(
     if simple and all(types.get(v) in ("INTEGER", "REAL") for v in value_names):
         kinds = ["REAL", "REAL", *(types[v] for v in value_names)]
         arrays = []
-        for col, kind in zip(picked, kinds):
+        for col, kind in zip(picked, kinds, strict=True):
             arr = _numeric(col, kind)
             if arr is None:
                 break
@@ -221,7 +230,7 @@ def _raw_batch(
         p = positions[i]
         own = fields[p] if fields is not None else None
         if own is not None:
-            return dict(zip(header, own))
+            return dict(zip(header, own, strict=False))  # a bad row may have more or fewer fields than the header
         return {name: all_columns[j][p].as_py() for j, name in enumerate(header)}
 
     bad: dict[int, tuple[str | None, Any, str]] = {}
@@ -233,10 +242,10 @@ def _raw_batch(
     if numeric is not None:
         return RawBatch(
             consumed=n, rows=rows, lines=lines, lat=numeric[0], lng=numeric[1],
-            values=dict(zip(value_names, numeric[2:])), text=False, record=record,
+            values=dict(zip(value_names, numeric[2:], strict=True)), text=False, record=record,
         )
     texts = [c.to_pylist() for c in picked]
     return RawBatch(
         consumed=n, rows=rows, lines=lines, lat=texts[0], lng=texts[1],
-        values=dict(zip(value_names, texts[2:])), text=True, record=record, bad=bad,
+        values=dict(zip(value_names, texts[2:], strict=True)), text=True, record=record, bad=bad,
     )

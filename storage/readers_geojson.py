@@ -77,7 +77,12 @@ def geojson_batches(
         parts: list[int] = []
         bad: dict[int, tuple[str | None, Any, str]] = {}
 
-        def add(row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0) -> None:
+        # this chunk's lists are bound as defaults: a closure would see whichever lists the loop made last
+        def add(
+            row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0, *,
+            rows: list[int] = rows, parts: list[int] = parts, lat: list[Any] = lat, lng: list[Any] = lng,
+            cells: list[str] = cells, props: list[dict] = props,
+        ) -> None:
             rows.append(row)
             parts.append(part)
             lat.append(y)
@@ -108,7 +113,8 @@ def geojson_batches(
                     if len(found):
                         clat, clng = dggs.cell_to_latlng(np.asarray(found))
                         triples = zip(
-                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist()
+                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist(),
+                            strict=True,
                         )
                         for part, (cell, y, x) in enumerate(triples):
                             add(row, y, x, cell, prop, part)

@@ -26,7 +26,13 @@ VECTOR_SUFFIXES = (".gpkg", ".shp", ".fgb", ".parquet", ".geoparquet")
 
 
 def pyogrio_module() -> Any:
-    """Import pyogrio, or say how to install it."""
+    """Import pyogrio, or say how to install it.
+
+    Raises
+    ------
+    StorageError
+        If pyogrio is not installed (the message says how to install it).
+    """
     try:
         import pyogrio
     except ImportError:

@@ -206,6 +206,11 @@ def check_column_name(name: object) -> str:
 def sql_type(spec: object) -> str:
     """Normalise a column type given as SQL text or a Python type.
 
+    Raises
+    ------
+    DggsValueError
+        If ``spec`` is not INTEGER, REAL, TEXT (any case) or int, float, str.
+
     Examples
     --------
     >>> sql_type(int), sql_type("real"), sql_type(str)
@@ -215,9 +220,7 @@ def sql_type(spec: object) -> str:
         return _PY_TYPES[spec]
     if isinstance(spec, str) and spec.upper() in SQL_TYPES:
         return SQL_TYPES[spec.upper()]
-    raise DggsValueError(
-        f"column type {spec!r} is not one of INTEGER, REAL, TEXT (or int, float, str)"
-    )
+    raise DggsValueError(f"column type {spec!r} is not one of INTEGER, REAL, TEXT (or int, float, str)")
 
 
 def create_schema(conn: sqlite3.Connection, dggs_version: str) -> None:
@@ -369,7 +372,13 @@ def column_types(conn: sqlite3.Connection) -> dict[str, str]:
 
 
 def add_columns(conn: sqlite3.Connection, columns: Mapping[str, str]) -> None:
-    """Add value columns to both point tables (inside the caller's transaction)."""
+    """Add value columns to both point tables (inside the caller's transaction).
+
+    Raises
+    ------
+    DggsValueError
+        If a name differs only in case from a stored column (SQLite names ignore case).
+    """
     have = {name.lower(): name for name in column_types(conn)}
     for name, kind in columns.items():
         check_column_name(name)

@@ -116,6 +116,12 @@ def open_source(
 
     A source that has committed no row yet takes the new settings (a
     corrected command is not refused because a wrong one failed).
+
+    Raises
+    ------
+    StorageError
+        If the store is read-only, or the source was ingested before with other settings
+        (and ``replace`` is not set).
     """
     if store.readonly:
         raise StorageError(f"{store.path} is open read-only")
@@ -170,7 +176,13 @@ def open_source(
 
 
 def delete_source(store: Connection, source: int | str) -> int:
-    """Delete a source (by id or name) with all its rows and rejects; return rows deleted."""
+    """Delete a source (by id or name) with all its rows and rejects; return rows deleted.
+
+    Raises
+    ------
+    StorageError
+        If there is no such source in the store.
+    """
     conn = store.conn
     row = conn.execute(
         "SELECT id FROM sources WHERE id = ? OR name = ? ORDER BY id DESC LIMIT 1",
@@ -189,6 +201,7 @@ def delete_source(store: Connection, source: int | str) -> int:
 
 
 def list_sources(store: Connection) -> list[dict[str, Any]]:
+    """The ingested sources, one dict each, in the order they were first ingested."""
     return list(
         store.query(
             "SELECT id, kind, name, size, sha256, crs, rows_done, rows_inserted, rows_rejected, "
@@ -198,6 +211,7 @@ def list_sources(store: Connection) -> list[dict[str, Any]]:
 
 
 def list_rejects(store: Connection, limit: int | None = None) -> list[dict[str, Any]]:
+    """The rejected rows of every source, at most ``limit``, with their value and record decoded from JSON."""
     sql = (
         'SELECT s.name AS source, r.row, r.line, r."column", r.value, r.reason, r.record '
         "FROM rejects r JOIN sources s ON s.id = r.source_id ORDER BY r.source_id, r.row"

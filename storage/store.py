@@ -217,6 +217,11 @@ class CellStore(IngestMethods, ExportMethods):
 
         A range scan on the cell index (``cell >= c AND cell < c || '~'``).
 
+        Raises
+        ------
+        InvalidCellError, LevelMismatchError
+            For a bad cell or one finer than the stored level.
+
         Examples
         --------
         >>> with CellStore() as store:
@@ -292,6 +297,13 @@ class CellStore(IngestMethods, ExportMethods):
         :func:`dggs.polygon_to_cells`; a finer ``level`` follows its outline
         more closely.
 
+        Raises
+        ------
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or finer than the stored level.
+        DggsValueError
+            If ``polygon`` is not a shapely (Multi)Polygon.
+
         Examples
         --------
         >>> from shapely.geometry import box
@@ -307,6 +319,15 @@ class CellStore(IngestMethods, ExportMethods):
     @guarded
     def disk(self, cell: Any, k: int) -> list[dict[str, Any]]:
         """Return rows in the cells within ``k`` steps of ``cell`` (:func:`dggs.grid_disk`).
+
+        Raises
+        ------
+        InvalidCellError
+            If ``cell`` is not one valid cell id.
+        LevelMismatchError
+            If ``cell`` is finer than the stored level.
+        DggsValueError
+            If ``k`` is not a whole number >= 0.
 
         Examples
         --------

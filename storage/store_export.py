@@ -13,7 +13,6 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
-
 from dggs._formats import export_format
 
 from . import queries
@@ -41,6 +40,13 @@ class ExportMethods:
 
         One Polygon feature per non-empty cell, with properties ``cell`` and
         the stats (default count, sum, mean, min, max of ``column``).
+
+        Raises
+        ------
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or finer than the stored level.
+        DggsValueError
+            If a stat is unknown or needs a numeric ``column``.
 
         Examples
         --------
@@ -74,6 +80,13 @@ class ExportMethods:
         ``bbox`` (struct xmin, ymin, xmax, ymax) and ``geometry`` (WKB
         polygons in lng/lat, OGC:CRS84), with GeoParquet 1.1 ``geo`` metadata
         (:func:`dggs.arrow.cells_to_table`).
+
+        Raises
+        ------
+        LevelError, LevelMismatchError
+            If ``level`` is out of range or finer than the stored level.
+        DggsValueError
+            If a stat is unknown or needs a numeric ``column``.
 
         Examples
         --------

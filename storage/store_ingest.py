@@ -24,8 +24,11 @@ Values = Sequence[str] | Mapping[str, Any]
 
 
 class IngestMethods:
-    """``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
-    ``ingest_points``, ``ingest_dataframe`` and ``merge``."""
+    """The ingest methods of :class:`CellStore`.
+
+    ``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
+    ``ingest_points``, ``ingest_dataframe`` and ``merge``.
+    """
 
     _store: Connection
     merge_rows: int
@@ -39,6 +42,13 @@ class IngestMethods:
         or :meth:`ingest_vector` (``.gpkg``, ``.shp``, ``.fgb``, ``.parquet``),
         otherwise to
         :meth:`ingest_dataframe` or :meth:`ingest_records`.
+
+        Raises
+        ------
+        StorageError
+            If a path's extension names no format read here (or the file is missing).
+        DggsValueError, BadRowError, LevelMismatchError
+            As the method dispatched to raises them.
 
         Examples
         --------
@@ -74,7 +84,7 @@ class IngestMethods:
         encoding: str = "utf-8",
         progress: Progress | None = None,
     ) -> IngestResult:
-        """Bin the rows of a CSV file (with a header row), streaming it in batches.
+        r"""Bin the rows of a CSV file (with a header row), streaming it in batches.
 
         Each batch of ``batch_size`` rows is committed whole or not at all.
         The file is identified by its content (SHA-256): ingesting it again
@@ -130,7 +140,7 @@ class IngestMethods:
         >>> import os, tempfile
         >>> path = os.path.join(tempfile.mkdtemp(), "pts.csv")
         >>> with open(path, "w") as fh:
-        ...     _ = fh.write("lat,lng,pop\\n51.5,-0.12,9000000\\n40.7,-74.0,8000000\\n")
+        ...     _ = fh.write("lat,lng,pop\n51.5,-0.12,9000000\n40.7,-74.0,8000000\n")
         >>> with CellStore() as store:
         ...     store.ingest_csv(path, values=["pop"], level=5).rows_inserted
         2
@@ -161,6 +171,15 @@ class IngestMethods:
         every cell gets the whole value).  ``values=None`` keeps every
         property seen in the first batch.  Other parameters as
         :meth:`ingest_csv`; progress counts features.
+
+        Raises
+        ------
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        DggsValueError
+            If the file is not GeoJSON or a value column is named badly.
+        StorageError
+            If the file is missing.
 
         Examples
         --------
@@ -204,6 +223,15 @@ class IngestMethods:
         attribute field.  Other parameters as :meth:`ingest_csv`; progress
         and row numbers count features.
 
+        Raises
+        ------
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        DggsValueError
+            If the layer cannot be read, its CRS is unknown, or a value column is not one of its fields.
+        StorageError
+            If the file is missing or pyogrio is not installed.
+
         Examples
         --------
         >>> import os, tempfile
@@ -239,6 +267,13 @@ class IngestMethods:
         ``source`` name to make it resumable: calling again with the same
         name and the same records skips those already committed.  Other
         parameters as :meth:`ingest_csv`.
+
+        Raises
+        ------
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        DggsValueError
+            If ``records`` is not an iterable of dicts or a value column is named badly.
 
         Examples
         --------
@@ -286,6 +321,13 @@ class IngestMethods:
         crs, batch_size, on_error, replace, progress
             As in :meth:`ingest_csv` (default batch 100,000 rows).
 
+        Raises
+        ------
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        DggsValueError
+            If an array is not flat or its length differs from ``lat``'s.
+
         Examples
         --------
         >>> import numpy as np
@@ -319,6 +361,13 @@ class IngestMethods:
 
         Keyword arguments are those of :meth:`ingest_points`.
 
+        Raises
+        ------
+        BadRowError, LevelError, LevelMismatchError
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        DggsValueError
+            If the ``lat`` or ``lng`` column is missing or a value column is named badly.
+
         Examples
         --------
         >>> import pandas as pd  # doctest: +SKIP
@@ -337,6 +386,11 @@ class IngestMethods:
 
         Ingest does this by itself; call it after an interrupted ingest you
         will not resume, to make queries as fast as they can be.
+
+        Raises
+        ------
+        StorageError
+            If the store is read-only, or a pending row would be stored twice.
         """
         with self._store.transaction():
             self._store.merge_pending()

@@ -41,7 +41,7 @@ def feature_collection(
     dumps = json.dumps
     features = ",".join(
         f'{{"type":"Feature","id":{dumps(i)},"geometry":{g},"properties":{dumps(p, allow_nan=False)}}}'
-        for i, g, p in zip(ids, geometries, properties)
+        for i, g, p in zip(ids, geometries, properties, strict=True)
     )
     tail = "".join(f",{dumps(k)}:{dumps(v, allow_nan=False)}" for k, v in extra.items())
     return f'{{"type":"FeatureCollection","features":[{features}]{tail}}}'

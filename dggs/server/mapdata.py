@@ -67,7 +67,16 @@ def layers(ctx: Context) -> dict[str, Any]:
 
 
 def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, stat: str) -> Response:
-    """The non-empty cells at ``level`` meeting ``bbox`` as GeoJSON (``/map/cells``)."""
+    """The non-empty cells at ``level`` meeting ``bbox`` as GeoJSON (``/map/cells``).
+
+    Raises
+    ------
+    BadRequest
+        If ``stat`` is unknown, ``column`` is not a numeric column, a stat other than count
+        lacks a column, or ``level`` or ``bbox`` is not valid.
+    TooManyZones
+        If more than the server's ``max_features`` cells hold data in ``bbox``.
+    """
     summary = ctx.reader.summary()
     check_level("level", level, summary.level)
     bbox = parse_bbox(bbox_raw) if bbox_raw is not None else (-180.0, -90.0, 180.0, 90.0)
@@ -93,7 +102,7 @@ def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, st
     counts = data.counts[index].tolist()
     props = [
         {"zone_id": z, "level": level, "area_km2": area, "count": n, "value": clean(data.values[i])}
-        for z, n, i in zip(ids, counts, index.tolist())
+        for z, n, i in zip(ids, counts, index.tolist(), strict=True)
     ]
     return Response(feature_collection(ids, texts, props, {"numberReturned": len(ids)}), media_type=GEOJSON)
 

@@ -111,7 +111,13 @@ def parse_depths(raw: str | None, default: int = 0) -> list[int]:
 
 
 def check_level(name: str, level: int, stored: int | None) -> int:
-    """A level in 0..MAX_LEVEL and no finer than the stored level (/per/core/beyond-max-refinement)."""
+    """A level in 0..MAX_LEVEL and no finer than the stored level (/per/core/beyond-max-refinement).
+
+    Raises
+    ------
+    BadRequest
+        If ``level`` is outside ``0..MAX_LEVEL`` or finer than the stored level.
+    """
     if not 0 <= level <= dggs.MAX_LEVEL:
         raise BadRequest(f"{name} {level} is out of range 0..{dggs.MAX_LEVEL}")
     if stored is not None and level > stored:
@@ -161,13 +167,25 @@ def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "
 
 
 def check_collection(ctx: Context, collection: str | None) -> None:
-    """404 unless ``collection`` is None (root paths) or the served collection."""
+    """404 unless ``collection`` is None (root paths) or the served collection.
+
+    Raises
+    ------
+    NotFound
+        If ``collection`` is not the collection this server serves.
+    """
     if collection is not None and collection != ctx.reader.collection_id:
         raise NotFound(f"no collection {collection!r}; this server has {ctx.reader.collection_id!r}")
 
 
 def check_dggrs(dggrs_id: str) -> None:
-    """404 unless ``dggrs_id`` is the DGGRS served."""
+    """404 unless ``dggrs_id`` is the DGGRS served.
+
+    Raises
+    ------
+    NotFound
+        If ``dggrs_id`` is not the DGGRS this server offers.
+    """
     from .dggrs import DGGRS_ID
 
     if dggrs_id != DGGRS_ID:

@@ -163,7 +163,7 @@ class StoreReader:
     # -- connections --------------------------------------------------------
 
     def store(self) -> CellStore:
-        """This thread's read-only store (opened on first use)."""
+        """Return this thread's read-only store (opened on first use)."""
         store = getattr(self._local, "store", None)
         if store is None:
             store = CellStore(self.path, create=False, readonly=True)
@@ -286,7 +286,8 @@ class StoreReader:
     def rollup(self, zone: str, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """``store.aggregate(level, column, stats, cell=zone)`` in one snapshot (not cached)."""
         with self.snapshot() as (store, _marker):
-            return store.aggregate(level, column, tuple(stats), cell=zone)
+            rows: list[dict[str, Any]] = store.aggregate(level, column, tuple(stats), cell=zone)
+            return rows
 
     # -- geometry -----------------------------------------------------------
 
@@ -310,7 +311,7 @@ class StoreReader:
             with self._lock:
                 if len(self._geometry) + len(missing) > GEOMETRY_ENTRIES:
                     self._geometry.clear()
-                for cell, poly, text in zip(missing, polys, texts):
+                for cell, poly, text in zip(missing, polys, texts, strict=True):
                     self._geometry[cell] = (poly, str(text))
         pairs = [self._geometry.get(c) or self._compute_one(c) for c in ids.tolist()]
         return np.array([p[0] for p in pairs], dtype=object), [p[1] for p in pairs]

@@ -25,8 +25,17 @@ import dggs
 from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
-from .params import Context, base_url, check_collection, check_dggrs, check_level, negotiate, parse_bbox
-from .params import parse_depths, parse_zone
+from .params import (
+    Context,
+    base_url,
+    check_collection,
+    check_dggrs,
+    check_level,
+    negotiate,
+    parse_bbox,
+    parse_depths,
+    parse_zone,
+)
 from .reader import cells_meeting_bbox
 
 __all__ = ["register", "STATS", "sub_zone_count"]
@@ -222,7 +231,15 @@ def zones_list(
     limit: int | None,
     f: str | None,
 ) -> Response:
-    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to."""
+    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to.
+
+    Raises
+    ------
+    BadRequest
+        If ``bbox-crs`` is not CRS84, ``limit`` is below 1, or another parameter is not valid.
+    TooManyZones
+        If more zones hold data than the server's ``max_zones`` limit allows.
+    """
     fmt = negotiate(request, f)
     bbox = parse_bbox(bbox_raw)
     if bbox is not None and bbox_crs is not None and bbox_crs not in _CRS84_NAMES:
@@ -252,7 +269,8 @@ def zones_list(
         raise TooManyZones(f"{len(zones)} zones of zone-level {level} hold data, more than this server's limit "
                            f"of {cap}; use a coarser zone-level, a smaller bbox, compact-zones or limit")
     levels = np.char.str_len(np.array(zones, dtype=str)) - 1 if zones else np.array([], dtype=int)
-    area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in zip(*np.unique(levels, return_counts=True))))
+    per_level = zip(*np.unique(levels, return_counts=True), strict=True)
+    area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in per_level))
     links = _links(request, collection)
     templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}/zones/{{zoneId}}/data",
                   "rel": REL + "dggrs-zone-data", "type": "application/json"}]

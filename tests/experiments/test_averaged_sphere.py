@@ -33,7 +33,7 @@ def test_one_rings_are_closed_cycles():
     rings = one_rings(len(v), f)
     assert [len(r) for r in rings] == [4] * 6
     for i, ring in enumerate(rings):
-        for a, b in zip(ring, ring[1:] + ring[:1]):
+        for a, b in zip(ring, ring[1:] + ring[:1], strict=True):
             assert any({i, a, b} == set(t) for t in f.tolist())
 
 

@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from dggs.experiments import numpy_snyder
 from dggs.experiments import chapter4 as c4
 from dggs.experiments import inverse as thesis_inverse
+from dggs.experiments import numpy_snyder
 
 # thesis Table 4.1: degree -> (sum of squares of residuals, variance of residuals)
 THESIS_4_1 = {1: (1.19, 2.02e-4), 2: (9.27e-1, 1.66e-4), 3: (2.30e-4, 3.92e-8), 4: (2.06e-4, 3.51e-8),

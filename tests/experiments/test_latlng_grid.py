@@ -36,7 +36,7 @@ def test_every_cell_has_the_same_area_by_the_exact_formula(n, m):
     lat = equal_area_parallels(n)
     assert np.sin(lat) == pytest.approx(-1 + 2 * np.arange(n + 1) / n, abs=1e-15)
     expected = 4 * math.pi / (n * m)
-    for a, b in zip(lat[:-1], lat[1:]):  # independent of the code's zone formula
+    for a, b in zip(lat[:-1], lat[1:], strict=True):  # independent of the code's zone formula
         assert _quadrature_area(float(a), float(b), 2 * math.pi / m) == pytest.approx(expected, rel=1e-12)
     assert cell_areas(n, m) == pytest.approx(np.full(n * m, expected), rel=1e-12)
     assert np.abs(spherical_cell_errors(n, m)).max() < 1e-9

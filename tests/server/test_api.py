@@ -215,7 +215,7 @@ def test_zone_data_equals_the_store_aggregates(client, reference, zone, depth):
     assert set(doc["values"]) == {"count"} | {f"{c}_{s}" for c in ("pop", "temp") for s in stats}
     for i, d in enumerate(depths):
         subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
-        for prop, entries in doc["values"].items():
+        for entries in doc["values"].values():
             entry = entries[i]
             assert entry["depth"] == d and entry["shape"] == {"count": len(subs), "subZones": len(subs)}
             assert len(entry["data"]) == len(subs)
@@ -234,7 +234,8 @@ def test_zone_data_equals_a_brute_force_sum_over_the_raw_points(client, points):
     level = dggs.get_level(zone) + depth
     sums: dict[str, int] = defaultdict(int)
     counts: dict[str, int] = defaultdict(int)
-    for cell, pop in zip(dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist(), points.pop.tolist()):
+    parents = dggs.cell_to_parent(stored_cells(points, LEVEL), level).tolist()
+    for cell, pop in zip(parents, points.pop.tolist(), strict=True):
         sums[cell] += pop
         counts[cell] += 1
     doc = client.get(f"{ROOT}/zones/{zone}/data?zone-depth={depth}").json()
@@ -484,9 +485,11 @@ def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
                 with urllib.request.urlopen(url + "/conformance", timeout=5) as res:
                     conformance = json.load(res)
                 break
-            except OSError:
+            except OSError as exc:
                 if proc.poll() is not None or time.monotonic() > deadline:
-                    raise AssertionError(f"dggs serve did not answer: {proc.stderr.read() if proc.stderr else ''}")
+                    raise AssertionError(
+                        f"dggs serve did not answer: {proc.stderr.read() if proc.stderr else ''}"
+                    ) from exc
                 time.sleep(0.2)
         validate(conformance, "conformance")
         with urllib.request.urlopen(f"{url}/dggs/{DGGRS}/zones/C4/data?zone-depth=1", timeout=10) as res:

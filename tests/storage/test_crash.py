@@ -62,7 +62,7 @@ def big_csv(tmp_path_factory):
     return write_csv(
         path,
         ["lat", "lng", "k", "x"],
-        [[f"{a:.6f}", f"{b:.6f}", i, f"{i * 0.5:.1f}"] for i, (a, b) in enumerate(zip(lat, lng))],
+        [[f"{a:.6f}", f"{b:.6f}", i, f"{i * 0.5:.1f}"] for i, (a, b) in enumerate(zip(lat, lng, strict=True))],
     )
 
 
@@ -100,7 +100,7 @@ def test_sigkill_during_ingest_then_resume_exactly_once(tmp_path, big_csv, mode)
     db = tmp_path / "crash.db"
     rng = np.random.default_rng(5)
     kills = 0
-    for attempt in range(4):
+    for _attempt in range(4):
         proc = _start_writer(tmp_path, db, big_csv, mode=mode)
         wait_for = int(rng.integers(2, 12))
         seen = 0

@@ -10,7 +10,6 @@ from pathlib import Path
 import pytest
 
 import dggs
-
 from dggs.storage import CellStore
 from dggs.storage.cli import register
 

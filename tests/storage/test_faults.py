@@ -173,7 +173,7 @@ def test_full_disk_during_ingest_then_resume_exactly_once(tmp_path, tmpfs):
     where, remount = tmpfs
     lat, lng, k = _points(40_000, seed=3)
     csv_path = write_csv(tmp_path / "big.csv", ["lat", "lng", "k"],
-                         [[f"{a:.5f}", f"{b:.5f}", i] for a, b, i in zip(lat, lng, k)])
+                         [[f"{a:.5f}", f"{b:.5f}", i] for a, b, i in zip(lat, lng, k, strict=True)])
     db = where / "full.db"
     with CellStore(db) as store, pytest.raises(StorageError, match="disk is full"):
         store.ingest_csv(csv_path, values=["k"], level=10, batch_size=2_000)

@@ -62,7 +62,7 @@ def test_fast_numeric_path_equals_csv_module(store, tmp_path, rng):
     n = 2_500
     lat, lng = clustered_points(rng, n)
     rows = [[f"{a:.6f}", f"{b:.6f}", str(int(c)), f"{d:.3f}"] for a, b, c, d in
-            zip(lat, lng, rng.integers(0, 100, n), rng.normal(0, 1, n))]
+            zip(lat, lng, rng.integers(0, 100, n), rng.normal(0, 1, n), strict=True)]
     rows[1_234][3] = "oops"  # a bad value deep in a numpy-parsed batch
     rows[2_001][0] = ""  # a missing latitude
     path = write_csv(tmp_path / "n.csv", ["lat", "lng", "n", "x"], rows)
@@ -174,7 +174,8 @@ def test_records_resume_exactly_once(store):
 
 def test_csv_resume_after_interrupt_and_rerun_is_noop(db_path, tmp_path, rng):
     lat, lng = clustered_points(rng, 1_000)
-    path = write_csv(tmp_path / "p.csv", ["lat", "lng", "k"], [[a, b, i] for i, (a, b) in enumerate(zip(lat, lng))])
+    rows = [[a, b, i] for i, (a, b) in enumerate(zip(lat, lng, strict=True))]
+    path = write_csv(tmp_path / "p.csv", ["lat", "lng", "k"], rows)
     seen = []
 
     def interrupt(n):

@@ -189,7 +189,7 @@ def test_to_geojson_has_one_feature_per_cell_with_its_properties(tmp_path):
         rows = store.aggregate(2, "v")
         fc = store.to_geojson(2, "v", tmp_path / "c.geojson")
     assert len(fc["features"]) == len(rows) == 2
-    for feature, row in zip(fc["features"], rows):
+    for feature, row in zip(fc["features"], rows, strict=True):
         assert feature["properties"]["sum"] == row["sum"]
     assert json.loads((tmp_path / "c.geojson").read_text()) == json.loads(json.dumps(fc))
 

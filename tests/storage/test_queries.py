@@ -60,7 +60,7 @@ def test_queries_match_brute_force(case, data):
         if merge_rows == 1 and n:  # leave a tail pending, as an interrupted ingest would
             extra_lat, extra_lng = np.array([10.0, -20.0]), np.array([20.0, 170.0])
             store.conn.execute("BEGIN")
-            for i, (a, b) in enumerate(zip(extra_lat, extra_lng), start=n + 1):
+            for i, (a, b) in enumerate(zip(extra_lat, extra_lng, strict=True), start=n + 1):
                 cell = dggs.latlng_to_cell(a, b, level)
                 store.conn.execute(
                     "INSERT INTO points_pending (cell, lat, lng, source_id, row, v, w) VALUES (?, ?, ?, 1, ?, 7, 1.5)",
@@ -259,6 +259,6 @@ def test_range_plan_equals_the_group_by_plan(tmp_path, monkeypatch, pending):
                     monkeypatch.setattr(queries, "RANGE_CELLS", -1)
                     grouped = store.aggregate(level, column, stats, cell=cell)
                     assert [r["cell"] for r in ranged] == [r["cell"] for r in grouped]
-                    for a, b in zip(ranged, grouped):
+                    for a, b in zip(ranged, grouped, strict=True):
                         for s in stats:
                             assert a[s] == pytest.approx(b[s], rel=1e-12) if isinstance(b[s], float) else a[s] == b[s]

@@ -8,8 +8,8 @@ import pytest
 from click.testing import CliRunner
 
 import dggs
-from dggs.storage import BadRowError, CellStore, RejectedRowsWarning
 from dggs.cli import main
+from dggs.storage import BadRowError, CellStore, RejectedRowsWarning
 from dggs.storage.readers_csv import csv_batches
 
 from .helpers import write_csv
