@@ -197,7 +197,6 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
-    from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
     from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
     from dggs.index.hierarchy import (
         cell_to_center_child,
@@ -211,6 +210,7 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
         is_valid_cell,
         uncompact_cells,
     )
+    from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
     from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
     from dggs.index.measure import cell_area, level_table
     from dggs.index.points import (

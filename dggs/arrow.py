@@ -40,7 +40,6 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-import shapely
 
 from dggs._formats import EXPORT_FORMATS, export_format
 from dggs.errors import DggsValueError

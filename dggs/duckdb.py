@@ -33,8 +33,8 @@ import numpy as np
 import shapely
 
 from dggs.errors import DggsValueError, InvalidCellError
-from dggs.index.ids import int_to_str, str_to_int
 from dggs.index.hierarchy import cell_to_parent, get_level, is_valid_cell
+from dggs.index.ids import int_to_str, str_to_int
 from dggs.index.measure import cell_area
 from dggs.index.points import cell_to_latlng, cell_to_polygon, latlng_to_cell
 

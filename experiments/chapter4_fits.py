@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 
+from dggs.experiments import numpy_snyder
 from dggs.experiments.chapter4_constants import _HALF, _SECTOR, _SECTOR_AREA, THESIS_TABLE_4_1
 from dggs.geometry import snyder
-from dggs.experiments import numpy_snyder
 
 __all__ = ["implied_sample_size", "exact_az", "sector_samples", "SectorFit", "fit_sector", "fit_table"]
 

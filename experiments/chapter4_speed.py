@@ -11,11 +11,11 @@ from typing import Any
 import numpy as np
 
 from dggs.experiments import inverse as thesis_inverse
+from dggs.experiments import numpy_snyder
 from dggs.experiments.chapter4_constants import _SECTOR, QUALITIES, TOL, TOLERANCES
 from dggs.experiments.chapter4_errors import error_rows
 from dggs.experiments.chapter4_fits import fit_sector
 from dggs.experiments.chapter4_mesh import face_mesh
-from dggs.experiments import numpy_snyder
 from dggs.geometry.icosahedron import NUM_FACES
 
 __all__ = ["iteration_rows", "timing_rows", "degree7_check"]

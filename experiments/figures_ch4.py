@@ -36,10 +36,10 @@ from pathlib import Path
 import numpy as np
 
 from dggs.experiments import inverse as thesis_inverse
+from dggs.experiments import numpy_snyder
 from dggs.experiments.chapter4_constants import EARTH_RADIUS_M
 from dggs.experiments.chapter4_fits import exact_az, fit_sector
 from dggs.experiments.chapter4_mesh import face_mesh, spherical_triangle_areas
-from dggs.experiments import numpy_snyder
 from dggs.geometry.icosahedron import ISEA, NUM_FACES
 from dggs.geometry.split26 import FACE_VERTICES
 

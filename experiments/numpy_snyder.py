@@ -34,16 +34,16 @@ from dggs.geometry.constants import (
     COS_G,
     COS_SMALL_G,
     COT_THETA,
+    R_PRIME,
     ROT_COS,
     ROT_SIN,
     RT2,
     SECTOR,
     SIN_G,
+    TAN_G,
     TINY,
     UNTINY,
     G,
-    R_PRIME,
-    TAN_G,
 )
 from dggs.geometry.icosahedron import ISEA, Orientation, face_dots
 

@@ -161,5 +161,5 @@ def property_rows(properties: Any, n: int) -> Iterator[dict[str, Any]]:
 
 
 def _plain(v: Any) -> Any:
-    """numpy scalars -> Python scalars, for JSON."""
+    """Numpy scalars -> Python scalars, for JSON."""
     return v.item() if isinstance(v, np.generic) else v

@@ -7,14 +7,12 @@ integer range.  The compiled kernels are in :mod:`dggs.index._kernel.hierarchy`.
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from dggs.errors import LevelMismatchError
 
 from ._checks import MAX_CELLS, check_level, check_max_cells, check_size
-from ._convert import CELL, FLAT, VALUE, Op, apply, is_valid_any, id_name
+from ._convert import CELL, FLAT, VALUE, Op, apply, id_name, is_valid_any
 from ._kernel import compact as kc
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp

@@ -18,7 +18,7 @@ import numpy as np
 from dggs.errors import CoordinateError, DggsValueError
 
 from ._checks import check_level, check_size
-from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, ids_array, id_name, pair_kind, values_out
+from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, id_name, ids_array, pair_kind, values_out
 from ._corners import fans
 from ._kernel import grid as kg
 from ._kernel import points as kp
@@ -30,7 +30,7 @@ __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells"
 
 @lru_cache(maxsize=1)
 def _geod():
-    """pyproj's WGS84 geodesic solver, made on first use (``import dggs`` stays free of pyproj)."""
+    """Pyproj's WGS84 geodesic solver, made on first use (``import dggs`` stays free of pyproj)."""
     import pyproj
 
     return pyproj.Geod(ellps="WGS84")
@@ -177,7 +177,7 @@ def _around_corner(a: int, b: int) -> list[int]:
     """The cells strictly between ``a`` and ``b`` on the shorter way around a corner they share."""
     around, sizes = fans(np.full(3, a, dtype=np.uint64), np.arange(3))
     best: list[int] | None = None
-    for fan, size in zip(around, sizes):
+    for fan, size in zip(around, sizes, strict=True):
         ring = [int(c) for c in fan[:size]]
         if b in ring:
             p = ring.index(b)

@@ -13,11 +13,9 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon, mapping
 
-from dggs.errors import DggsValueError
-
 from ._checks import check_densify, check_level, property_rows
-from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
 from ._convert import CELL as _CELL
+from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 from ._shapes import boundaries, default_densify, geometries
@@ -204,7 +202,7 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     lv = kh.levels(ids)
     as_str = kind.form == "str"
     features = []
-    for cid, level, poly, props in zip(ids.tolist(), lv.tolist(), polys, rows):
+    for cid, level, poly, props in zip(ids.tolist(), lv.tolist(), polys, rows, strict=True):
         key = format_int(cid) if as_str else cid
         features.append(
             {

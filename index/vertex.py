@@ -23,8 +23,6 @@ whatever the form of the cell ids.
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from dggs.errors import DggsValueError
@@ -46,7 +44,7 @@ __all__ = [
 
 def _vertex_names(ids: np.ndarray) -> np.ndarray:
     owner, index = vertex_keys(ids)
-    names = [format_vertex(int(o), int(i)) for o, i in zip(owner.reshape(-1), index.reshape(-1))]
+    names = [format_vertex(int(o), int(i)) for o, i in zip(owner.reshape(-1), index.reshape(-1), strict=True)]
     return np.array(names, dtype=str).reshape(ids.shape[0], 3)
 
 

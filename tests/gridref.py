@@ -48,7 +48,7 @@ def planar_corners(cells) -> np.ndarray:
 
 def encode(face: np.ndarray, digits: np.ndarray) -> np.ndarray:
     """String ids of faces (N,) and digit rows (N, level)."""
-    return np.array([FACES[f] + "".join(str(int(d)) for d in row) for f, row in zip(face, digits)])
+    return np.array([FACES[f] + "".join(str(int(d)) for d in row) for f, row in zip(face, digits, strict=True)])
 
 
 def mirror_neighbours(cells) -> np.ndarray:

@@ -32,14 +32,14 @@ from .constants import (
     COS_SMALL_G,
     COT_THETA,
     D_PRIME_NUM,
+    ROT_COS,
+    ROT_SIN,
     RT2,
     SIN_G,
     SQRT3,
     TAN_G2,
     TINY,
     UNTINY,
-    ROT_COS,
-    ROT_SIN,
     G,
 )
 from .icosahedron import ISEA, NUM_FACES, TIE_STEP

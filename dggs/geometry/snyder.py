@@ -43,11 +43,11 @@ from dggs.geometry.constants import (
     FACE_CIRCUMRADIUS,
     FACE_EDGE,
     FACE_INRADIUS,
-    G,
     G_ARC,
     R_PRIME,
     TAN_G,
     THETA,
+    G,
 )
 from dggs.geometry.icosahedron import ISEA, NUM_FACES, Orientation
 

@@ -19,8 +19,8 @@ import numpy as np
 
 from .._kernel import codec
 from . import strings
-from .values import values_out
 from .kind import OBJECT, SCALAR_INT, SCALAR_STR, U64, Kind, fail, value_id
+from .values import values_out
 
 __all__ = ["cells_in", "is_valid_any"]
 

@@ -54,7 +54,7 @@ def _pylist(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
     keep = rows != 0
     vals = _py_values(rows[keep], kind.form)
     ends = np.cumsum(keep.sum(axis=1)).tolist()
-    lists = [vals[a:b] for a, b in zip([0, *ends[:-1]], ends)]
+    lists = [vals[a:b] for a, b in zip([0, *ends[:-1]], ends, strict=True)]
     outer = kind.shape + trailing[:-1]
     return _nest(lists, outer) if outer else lists[0]
 

@@ -15,8 +15,8 @@ import numpy as np
 
 from dggs.errors import InvalidCellError
 
-from . import strings
 from .._kernel.bits import MAX_LEVEL
+from . import strings
 
 __all__ = ["Kind", "as_form", "fail", "id_name"]
 

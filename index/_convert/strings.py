@@ -9,8 +9,6 @@ table driven: a few hundred nanoseconds a call, no numpy.
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from .._kernel.bits import FACE_SHIFT, L1_SHIFT, MAX_LEVEL

@@ -112,7 +112,7 @@ def parse_arrow(data, offsets, validity, offset: int, n: int):
 
 @njit(cache=True, nogil=True)
 def parse_joined(data, n: int):
-    """Parse ``n`` ids joined by NUL codes (``"\\x00".join(strings)``, as codes of any integer dtype).
+    r"""Parse ``n`` ids joined by NUL codes (``"\x00".join(strings)``, as codes of any integer dtype).
 
     Returns ``(ids, first_bad, pieces)``; ``pieces != n`` means an element held a NUL itself
     (the ids are then meaningless).

@@ -1,6 +1,8 @@
-"""Tables for the compiled grid graph (:mod:`dggs.index._kernel.grid`), built once at import from the geometry,
-the largest disks and rings (:func:`disk_size_bound`, :func:`ring_size_bound`), and the
-planar charts that give exact distances (:func:`chart_distance`).
+"""Tables for the compiled grid graph (:mod:`dggs.index._kernel.grid`), built once at import from the geometry.
+
+Also the largest disks and rings (:func:`disk_size_bound`,
+:func:`ring_size_bound`) and the planar charts that give exact distances
+(:func:`chart_distance`).
 
 Everything here is derived from :mod:`dggs.geometry.split26` and the ISEA
 icosahedron (:data:`dggs.geometry.icosahedron.ISEA`), never typed in:
@@ -46,8 +48,8 @@ import numpy as np
 from numba import njit
 
 from dggs.geometry import split26
-from dggs.geometry.icosahedron import ISEA
 from dggs.geometry.constants import FACE_EDGE, FACE_INRADIUS
+from dggs.geometry.icosahedron import ISEA
 
 from .bits import MAX_LEVEL
 
@@ -86,7 +88,7 @@ def _child_tables() -> tuple[np.ndarray, np.ndarray]:
                 if s == c:
                     continue
                 hit = [int(np.argmin(np.linalg.norm(kids[s] - p, axis=1))) for p in ends]
-                if all(np.allclose(kids[s, h], p, atol=1e-12) for h, p in zip(hit, ends)):
+                if all(np.allclose(kids[s, h], p, atol=1e-12) for h, p in zip(hit, ends, strict=True)):
                     label = 3 - sum(hit)  # the corner the shared edge misses names its label
                     assert label == e, "a sibling's shared edge keeps its label"
                     step[c, e] = s

@@ -17,9 +17,8 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from dggs.geometry._parallel import loops
-
 from dggs.geometry import kernel as gk
+from dggs.geometry._parallel import loops
 
 from . import bits
 

@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
+from dggs.experiments import numpy_snyder
 from dggs.experiments.chapter4_mesh import face_mesh
 from dggs.experiments.figures_ch4 import azimuth_curve, disc_areas, inverse_errors_m, iteration_counts
 from dggs.geometry import snyder
-from dggs.experiments import numpy_snyder
 
 
 def test_newton_converges_to_the_closed_form_inverse():

@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from dggs.errors import CoordinateError, DggsValueError
 from dggs.experiments import inverse as thesis_inverse
-from dggs.geometry import snyder
 from dggs.experiments import numpy_snyder
+from dggs.geometry import snyder
 from dggs.geometry.icosahedron import ISEA
 
 from ..geometry.test_snyder import angle_between, random_points

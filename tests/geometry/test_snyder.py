@@ -11,10 +11,10 @@ import pyproj
 import pytest
 from hypothesis import example, given
 
-from dggs.geometry import snyder
-from dggs.experiments import numpy_snyder
-from dggs.geometry.authalic import WGS84, sphere
 from dggs.errors import CoordinateError, DggsValueError
+from dggs.experiments import numpy_snyder
+from dggs.geometry import snyder
+from dggs.geometry.authalic import WGS84, sphere
 from dggs.geometry.icosahedron import DOWN_FACES, ISEA, POLE, latlng_to_xyz
 
 from ..strategies import latlngs, special_points

@@ -64,7 +64,7 @@ def test_polygon_default_densify_is_within_1e6():
         lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 12)))
         lng = rng.uniform(-170, 170, 12)
         cells = dggs.latlng_to_cell(lat, lng, level)
-        for c, poly in zip(cells, dggs.cell_to_polygon(cells)):
+        for c, poly in zip(cells, dggs.cell_to_polygon(cells), strict=True):
             if poly.geom_type != "Polygon":
                 continue
             xs, ys = poly.exterior.coords.xy

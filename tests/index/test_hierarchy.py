@@ -145,6 +145,7 @@ def test_shipped_jump_table_equals_the_computed_one():
 def test_jump_table_locate_equals_per_level_descent():
     """The 4-levels-at-once table reproduces the per-level comparisons exactly."""
     from dggs.geometry import snyder
+
     from ..reference.numpy_split26 import locate, locate_per_level
 
     rng = np.random.default_rng(21)
@@ -200,7 +201,7 @@ def test_block_composed_corners_equal_midpoint_construction():
     fast = cell_vertices(l1, digits, level)
     ref = cell_vertices_per_level(l1, digits, level)
     size = np.linalg.norm(ref[0] - ref[2], axis=1)
-    for a, b in zip(fast, ref):
+    for a, b in zip(fast, ref, strict=True):
         assert (np.abs(a - b).max(axis=1) / size).max() < 1e-8
     # the kernel builds corners level by level in floats: the same triangles
     tri = planar_corners(mixed)

@@ -169,7 +169,7 @@ def _same_kind(out, kind: str, given, shape: str) -> str | None:
 
 def _cases():
     for fname in ID_FUNCS:
-        for kname, (_, kind) in ID_KINDS.items():
+        for kname in ID_KINDS:
             marks = []
             if kname == "numpy-StringDType" and not HAS_STRINGDTYPE:
                 marks = [pytest.mark.skip(reason="numpy < 2 has no StringDType")]

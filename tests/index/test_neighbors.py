@@ -98,7 +98,7 @@ def test_disk_sizes_in_a_face_interior():
     c = dggs.latlng_to_cell(45.0, -100.0, 12)
     sizes = [len(dggs.grid_disk(c, k)) for k in range(5)]
     assert sizes[:3] == [1, 4, 9]
-    assert all(b > a for a, b in zip(sizes, sizes[1:]))
+    assert all(b > a for a, b in zip(sizes, sizes[1:], strict=True))
 
 
 def test_bad_input():
@@ -128,7 +128,7 @@ def test_digit_neighbours_equal_geometric_mirror_neighbours():
 def test_array_disks_equal_single_disks(cell_list, k):
     out = dggs.grid_disk(np.array(cell_list), k)
     assert out.shape[0] == len(cell_list)
-    for row, c in zip(out, cell_list):
+    for row, c in zip(out, cell_list, strict=True):
         assert [x for x in row.tolist() if x] == dggs.grid_disk(c, k)
 
 

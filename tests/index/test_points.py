@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 import shapely
@@ -160,7 +159,7 @@ def test_cell_corners_are_located_in_a_cell_touching_them(cell):
     level = dggs.get_level(cell)
     corners = np.array(dggs.cell_to_boundary(cell))
     got = dggs.latlng_to_cell(corners[:, 0], corners[:, 1], level)
-    for (lat, lng), other in zip(corners, got):
+    for (lat, lng), other in zip(corners, got, strict=True):
         ring = np.array(dggs.cell_to_boundary(str(other), densify=64))
         # the corner is (to rounding) one of the found cell's corners or on its edge
         pts = to_xyz(ring[[0, 65], 0], ring[[0, 65], 1])

@@ -66,7 +66,7 @@ def test_level0_polygons_tile_the_sphere(densify):
         polar = np.isin(base, ["A", "E", "Q", "R"])
         assert inside[polar].sum(axis=0).max() == 1
         own = dggs.latlng_to_cell(lat, lng, 0)
-        assert all(polys[list(base).index(c)].contains(shapely.Point(x, y)) for c, x, y in zip(own, lng, lat))
+        assert all(polys[list(base).index(c)].contains(shapely.Point(x, y)) for c, x, y in zip(own, lng, lat, strict=True))
         return
     assert (inside.sum(axis=0) == 1).all()
     own = dggs.latlng_to_cell(lat, lng, 0)
@@ -85,10 +85,10 @@ def test_pole_cells_hold_their_points_and_have_their_area(level):
         lat = hemi * (90.0 - rng.random(3000) ** 2 * reach)
         lng = rng.uniform(-180, 180, 3000)
         own = dggs.latlng_to_cell(lat, lng, level)
-        for c, p in zip(cells, polys):
+        for c, p in zip(cells, polys, strict=True):
             sel = own == c
             assert shapely.contains_xy(p, lng[sel], lat[sel]).all(), (c, int(sel.sum()))
-    for c, p in zip(cells, polys):
+    for c, p in zip(cells, polys, strict=True):
         assert all(q.exterior.is_ccw for q in parts(p)), c
         assert geodesic_area(p) / dggs.cell_area(c) - 1 == pytest.approx(0.0, abs=1e-6), c
 
@@ -115,7 +115,7 @@ def test_antimeridian_cells_are_ccw_with_their_area(level):
     if cells.size > 60:
         cells = np.random.default_rng(level).choice(cells, 60, replace=False)
     split = 0
-    for c, p in zip(cells, np.atleast_1d(dggs.cell_to_polygon(cells))):
+    for c, p in zip(cells, np.atleast_1d(dggs.cell_to_polygon(cells)), strict=True):
         assert p.is_valid, c
         assert all(q.exterior.is_ccw for q in parts(p)), c
         lo, _, hi, _ = p.bounds

@@ -30,7 +30,7 @@ def geometric_fans(cells: np.ndarray) -> dict[tuple, set[str]]:
     """Rounded corner point -> the cells whose boundary has that corner."""
     corners = np.round(_xyz(dggs.cell_to_boundary(cells)), DECIMALS) + 0.0  # no -0.0
     fans: dict[tuple, set[str]] = defaultdict(set)
-    for cell, pts in zip(cells.tolist(), corners):
+    for cell, pts in zip(cells.tolist(), corners, strict=True):
         for p in pts:
             fans[tuple(p)].add(cell)
     return fans
@@ -45,7 +45,7 @@ def test_vertex_neighbors_match_shared_corners_whole_level(level):
         for c in members:
             expected[c] |= members - {c}
     got = vertex_neighbors(cells)
-    for cell, row in zip(cells.tolist(), got.tolist()):
+    for cell, row in zip(cells.tolist(), got.tolist(), strict=True):
         assert {c for c in row if c} == expected[cell], cell
     sizes = Counter(len(m) for m in fans.values())
     if level == 0:
@@ -63,8 +63,8 @@ def test_vertex_ids_name_shared_corners_once(level):
     assert vids.shape == (cells.size, 3)
     corners = np.round(_xyz(dggs.cell_to_boundary(cells)), DECIMALS) + 0.0
     by_point: dict[tuple, set[str]] = defaultdict(set)
-    for row, pts in zip(vids.tolist(), corners):
-        for v, p in zip(row, pts):
+    for row, pts in zip(vids.tolist(), corners, strict=True):
+        for v, p in zip(row, pts, strict=True):
             by_point[tuple(p)].add(v)
     assert all(len(v) == 1 for v in by_point.values())  # one id per corner point
     assert len(set(vids.ravel().tolist())) == len(fans)  # and one corner point per id

@@ -30,7 +30,7 @@ def single_process(pdf, level, fine=9):
     cells = dggs.latlng_to_cell(pdf["lat"].to_numpy(), pdf["lng"].to_numpy(), fine)
     parents = np.array([c[: level + 1] for c in cells.tolist()])
     out = {}
-    for p, v in zip(parents.tolist(), pdf["pop"].tolist()):
+    for p, v in zip(parents.tolist(), pdf["pop"].tolist(), strict=True):
         s = out.setdefault(p, [0, 0.0, float("inf"), float("-inf")])
         s[0] += 1
         s[1] += v

@@ -109,7 +109,7 @@ def test_latlng_to_cell_mixed_levels_equal_python(con):
     level = np.random.default_rng(2).integers(0, 29, lat.size)
     con.register("pts", pa.table({"lat": lat, "lng": lng, "level": pa.array(level, pa.int8())}))
     got = _column(con, "SELECT dggs_latlng_to_cell(lat, lng, level) AS i, dggs_latlng_to_cell_str(lat, lng, level) AS s FROM pts")
-    want = np.array([dggs.latlng_to_cell(a, b, int(lv), as_int=True) for a, b, lv in zip(lat, lng, level)], np.uint64)
+    want = np.array([dggs.latlng_to_cell(a, b, int(lv), as_int=True) for a, b, lv in zip(lat, lng, level, strict=True)], np.uint64)
     np.testing.assert_array_equal(got["i"].astype(np.uint64), want)
     np.testing.assert_array_equal(got["s"].astype(str), dggs.int_to_str(want))
 
@@ -153,7 +153,7 @@ def test_cell_to_parent_returns_the_kind_given_and_mixed_levels(con, kind):
     typ = con.sql("SELECT DISTINCT typeof(dggs_cell_to_parent(cell, level)) FROM cells").fetchall()
     assert typ == [(kind,)]
     got = _column(con, "SELECT dggs_cell_to_parent(cell, level) AS p FROM cells")["p"]
-    want = [dggs.cell_to_parent(c, int(lv)) for c, lv in zip(cells.tolist(), levels)]
+    want = [dggs.cell_to_parent(c, int(lv)) for c, lv in zip(cells.tolist(), levels, strict=True)]
     if kind == "VARCHAR":
         assert got.astype(str).tolist() == want
     else:
@@ -201,7 +201,7 @@ def test_string_ids_on_parquet(con, tmp_path):
     pq.write_table(pa.table({"cell": ids}), path)
     got = con.sql(f"SELECT dggs_cell_to_parent(cell, 4) AS p, count(*) AS n FROM '{path}' GROUP BY 1 ORDER BY 1").fetchall()
     parents, counts = np.unique(dggs.cell_to_parent(_py(ids), 4).astype(str), return_counts=True)
-    assert got == list(zip(parents.tolist(), counts.tolist()))
+    assert got == list(zip(parents.tolist(), counts.tolist(), strict=True))
 
 
 # ---------------------------------------------------------------------------------------------- NULLs and errors

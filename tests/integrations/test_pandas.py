@@ -218,7 +218,7 @@ def test_invalid_ids_name_the_row():
 
 def _brute_force(cells: list[str], values: list[int], level: int) -> dict[str, tuple[int, int, int]]:
     out: dict[str, list[int]] = {}
-    for cell, v in zip(cells, values):
+    for cell, v in zip(cells, values, strict=True):
         s = out.setdefault(cell[: level + 1], [0, 0, -1])
         s[0] += 1
         s[1] += v
@@ -241,7 +241,7 @@ def test_aggregate_equals_brute_force_groupby_on_prefixes(points, level, as_int)
     if as_int:
         assert stats.index.dtype.kind in "iu"
     assert sorted(keys) == sorted(expected)
-    for key, (_, row), (_, n) in zip(keys, stats.iterrows(), counted["count"].items()):
+    for key, (_, row), (_, n) in zip(keys, stats.iterrows(), counted["count"].items(), strict=True):
         assert (row[("pop", "count")], row[("pop", "sum")], row[("pop", "max")]) == expected[key]
         assert n == expected[key][0]
 
@@ -379,10 +379,10 @@ def test_sjoin_cells_equals_the_plain_functions(mode):
     # brute force with the plain functions: a pair when the point's cell is among the polygon's cells
     cell = dggs.latlng_to_cell(pts["lat"].to_numpy(), pts["lng"].to_numpy(), level)
     want = set()
-    for j, geom in zip(polys.index, polys.geometry):
+    for j, geom in zip(polys.index, polys.geometry, strict=True):
         inside = set(dggs.polygon_to_cells(geom, level, mode=mode).tolist())
-        want |= {(i, j) for i, c in zip(pts.index, cell) if c in inside}
-    assert set(zip(got.index, got["index_right"])) == want and len(got) == len(want)
+        want |= {(i, j) for i, c in zip(pts.index, cell, strict=True) if c in inside}
+    assert set(zip(got.index, got["index_right"], strict=True)) == want and len(got) == len(want)
     assert got["name"].tolist() == pts.loc[got.index, "name"].tolist()  # this frame's columns, same rows
     assert got["name_right"].tolist() == polys.loc[got["index_right"], "name"].tolist()  # a clash gets the suffix
     assert (got[f"cell_{level}"].to_numpy() == np.asarray(dggs.latlng_to_cell(
@@ -390,8 +390,8 @@ def test_sjoin_cells_equals_the_plain_functions(mode):
     assert list(got.index) == sorted(got.index, key=list(pts.index).index)  # the points' order kept
     # modes bracket the exact join: overlaps misses no point inside, contains joins none outside
     def exact(test):
-        return {(i, j) for j, geom in zip(polys.index, polys.geometry)
-                for i, a, b in zip(pts.index, pts["lat"], pts["lng"])
+        return {(i, j) for j, geom in zip(polys.index, polys.geometry, strict=True)
+                for i, a, b in zip(pts.index, pts["lat"], pts["lng"], strict=True)
                 if test(geom, Point(b, a)) or test(geom, Point(b + 360, a))}
 
     if mode == "overlaps":

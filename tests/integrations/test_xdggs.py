@@ -166,7 +166,7 @@ class TestSplit26Info:
         assert actual == mapping
 
     @pytest.mark.parametrize("as_str", [False, True])
-    @pytest.mark.parametrize(["cell_ids", "cell_centers"], list(zip(cell_ids, cell_centers)))
+    @pytest.mark.parametrize(["cell_ids", "cell_centers"], list(zip(cell_ids, cell_centers, strict=True)))
     def test_cell_ids2geographic(self, cell_ids, cell_centers, as_str):
         grid = dx.Split26Info(level=3, id_format="str" if as_str else "int")
 
@@ -184,7 +184,7 @@ class TestSplit26Info:
         assert abs(lat[0] - 51.05) < 0.5 and abs(lon[0] + 114.07) < 0.5
 
     @pytest.mark.parametrize("as_str", [False, True])
-    @pytest.mark.parametrize(["cell_centers", "cell_ids"], list(zip(cell_centers, cell_ids)))
+    @pytest.mark.parametrize(["cell_centers", "cell_ids"], list(zip(cell_centers, cell_ids, strict=True)))
     def test_geographic2cell_ids(self, cell_centers, cell_ids, as_str):
         grid = dx.Split26Info(level=3, id_format="str" if as_str else "int")
 
@@ -210,7 +210,7 @@ class TestSplit26Info:
         # each cell's three corners (dggs.cell_to_boundary, (lat, lng)) are on its polygon, which holds the centre
         corners = np.asarray(dggs.cell_to_boundary(cell_ids))
         lat, lng = dggs.cell_to_latlng(cell_ids)
-        for polygon, cell_corners, y, x in zip(actual, corners, lat, lng):
+        for polygon, cell_corners, y, x in zip(actual, corners, lat, lng, strict=True):
             assert shapely.covers(polygon.buffer(1e-9), shapely.points(cell_corners[:, ::-1])).all()
             assert polygon.contains(shapely.Point(x, y))
 
@@ -257,7 +257,7 @@ class TestSplit26Info:
         actual = grid.zoom_to(ids, level=new_level)
 
         assert actual.shape == (3, per_cell)
-        for cell, children in zip(ids.tolist(), actual.tolist()):
+        for cell, children in zip(ids.tolist(), actual.tolist(), strict=True):
             assert children == list(dggs.cell_to_children(cell, new_level))
             assert all(dggs.cell_to_parent(c, level) == cell for c in children)
 

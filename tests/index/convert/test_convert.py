@@ -11,17 +11,15 @@ import sys
 
 import numpy as np
 import pytest
-from dggs.index import ids as _ids
-from dggs.index._convert import strings as _codec
-from dggs.index._kernel import codec as _kcodec
-from dggs.index.ids import int_to_str, str_to_int
-from dggs.index._convert import cells_in, is_valid_any
-from dggs.index._convert import Kind
-from dggs.index._convert import cells_out, cells_out_flat
 from hypothesis import example, given
 from hypothesis import strategies as st
 
 from dggs.errors import InvalidCellError
+from dggs.index import ids as _ids
+from dggs.index._convert import Kind, cells_in, cells_out, cells_out_flat, is_valid_any
+from dggs.index._convert import strings as _codec
+from dggs.index._kernel import codec as _kcodec
+from dggs.index.ids import int_to_str, str_to_int
 
 pd = pytest.importorskip("pandas")
 pa = pytest.importorskip("pyarrow")

@@ -68,7 +68,7 @@ def test_points_agree_across_forms_and_keep_shape(points, level):
     i = dggs.latlng_to_cell(lat, lng, level, as_int=True)
     assert i.dtype == np.uint64 and s.dtype.kind == "U"
     assert np.array_equal(dggs.int_to_str(i), s)
-    assert all(dggs.latlng_to_cell(a, b, level) == c for a, b, c in zip(lat, lng, s))
+    assert all(dggs.latlng_to_cell(a, b, level) == c for a, b, c in zip(lat, lng, s, strict=True))
     if len(points) % 2 == 0:  # a 2-D input gives a 2-D output
         grid = dggs.latlng_to_cell(lat.reshape(2, -1), lng.reshape(2, -1), level, as_int=True)
         assert grid.shape == (2, len(points) // 2) and np.array_equal(grid.ravel(), i)
@@ -89,7 +89,7 @@ def test_array_functions_agree_across_forms(cell_list):
     assert np.array_equal(dggs.int_to_str(dggs.uncompact_cells(i, 13)), dggs.uncompact_cells(s, 13))
     assert np.array_equal(dggs.int_to_str(dggs.cell_to_children(i, 13)), dggs.cell_to_children(s, 13))
     polys_s, polys_i = dggs.cell_to_polygon(s, densify=4), dggs.cell_to_polygon(i, densify=4)
-    assert all(a.equals_exact(b, 0.0) for a, b in zip(polys_s, polys_i))
+    assert all(a.equals_exact(b, 0.0) for a, b in zip(polys_s, polys_i, strict=True))
 
 
 def test_polygon_fill_agrees_across_forms():

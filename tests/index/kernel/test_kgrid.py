@@ -18,17 +18,18 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from dggs.index._kernel import distance as KD
-from dggs.index._kernel import grid as K
-from dggs.index._kernel.grid_tables import chart_distance
 from hypothesis import given
 from hypothesis import strategies as st
 
 from dggs.geometry import snyder, split26
 from dggs.geometry.icosahedron import ISEA
+from dggs.index._kernel import distance as KD
+from dggs.index._kernel import grid as K
+from dggs.index._kernel.grid_tables import chart_distance
 
 from ...reference.numpy_split26 import locate
 from .test_khier import FACES, MAX_LEVEL, i2s, s2i  # the id layout written out by hand, once
+
 FIXTURE = Path(__file__).parents[2] / "reference" / "fixtures" / "neighbours_v1.json"
 
 
@@ -81,7 +82,7 @@ def cells_at_points(latlng, levels) -> list[str]:
     for lv in levels:
         if lv >= 1:
             dig = locate(x, y, lv)
-            out += [FACES[f] + "".join(map(str, row)) for f, row in zip(face, dig)]
+            out += [FACES[f] + "".join(map(str, row)) for f, row in zip(face, dig, strict=True)]
     return out
 
 
@@ -95,7 +96,7 @@ def pinned_cells() -> list[str]:
     verts = ISEA.geometry.vertices * (1 - 1e-12)
     vlat = np.degrees(np.arctan2(verts[:, 2], np.hypot(verts[:, 0], verts[:, 1])))
     vlng = np.degrees(np.arctan2(verts[:, 1], verts[:, 0]))
-    pts = SPECIAL_POINTS + list(zip(vlat, vlng))
+    pts = SPECIAL_POINTS + list(zip(vlat, vlng, strict=True))
     return sorted(set(cells_at_points(pts, range(0, MAX_LEVEL + 1, 3)) + vertex_cells()))
 
 
@@ -210,10 +211,10 @@ def test_are_neighbours():
     nb = nbrs(a)
     second = nbrs(nb[:, 0])  # a and two cells 2 steps away (the graphs have no triangles)
     parent = ids([c[:-1] if len(c) > 1 else c for c in cells])
-    pairs = [(x, y, True) for x, row in zip(a, nb) for y in row]
-    pairs += [(x, y, False) for x, row in zip(a, second) for y in row]  # includes x itself
-    pairs += [(x, y, False) for x, y in zip(a, parent)]  # another level (or itself at level 0)
-    aa, bb, expect = zip(*pairs)
+    pairs = [(x, y, True) for x, row in zip(a, nb, strict=True) for y in row]
+    pairs += [(x, y, False) for x, row in zip(a, second, strict=True) for y in row]  # includes x itself
+    pairs += [(x, y, False) for x, y in zip(a, parent, strict=True)]  # another level (or itself at level 0)
+    aa, bb, expect = zip(*pairs, strict=True)
     out = np.zeros(len(aa), dtype=np.bool_)
     K.are_neighbours(np.array(aa, dtype=np.uint64), np.array(bb, dtype=np.uint64), out)
     assert out.tolist() == list(expect)
@@ -330,11 +331,11 @@ def pairs_within(k: int, cells: list[str], per_cell: int, seed: int):
 
 def test_distance_equals_bfs_within_8():
     cells = sample_origins()[::2]
-    a, b, d = map(np.array, zip(*pairs_within(8, cells, 4, seed=1)))
+    a, b, d = map(np.array, zip(*pairs_within(8, cells, 4, seed=1), strict=True))
     a, b = a.astype(np.uint64), b.astype(np.uint64)
-    got = [KD.distance(x, y, 100) for x, y in zip(a, b)]
+    got = [KD.distance(x, y, 100) for x, y in zip(a, b, strict=True)]
     assert got == d.tolist()
-    assert [KD.distance(y, x, 100) for x, y in zip(a, b)] == d.tolist()  # symmetric
+    assert [KD.distance(y, x, 100) for x, y in zip(a, b, strict=True)] == d.tolist()  # symmetric
     out = np.zeros(len(a), dtype=np.int64)
     KD.distances.threaded(a, b, 100, out)
     assert out.tolist() == d.tolist()

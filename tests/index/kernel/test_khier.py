@@ -12,10 +12,11 @@ from collections import defaultdict
 
 import numpy as np
 import pytest
-from dggs.index._kernel import compact as KC
-from dggs.index._kernel import hierarchy as K
 from hypothesis import given
 from hypothesis import strategies as st
+
+from dggs.index._kernel import compact as KC
+from dggs.index._kernel import hierarchy as K
 
 MAX_LEVEL = 28
 FACES = "ABCDEFGHIJKLMNOPQRST"
