@@ -31,15 +31,13 @@ Examples
 
 from __future__ import annotations
 
-import re
-import sys
-from typing import Any, NoReturn
+from typing import Any
 
 import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, LevelMismatchError
 from dggs.index._checks import check_level
-from dggs.index.hierarchy import cell_to_parent, get_level, is_valid_cell
+from dggs.index.hierarchy import cell_to_parent
 from dggs.index.points import cell_to_polygon, latlng_to_cell
 from dggs.index.polyfill import polygon_to_cells
 
@@ -49,93 +47,20 @@ except ImportError as exc:  # pragma: no cover - exercised only without the extr
     raise ImportError("dggs.pandas needs the 'pandas' extra: pip install 'dggs[pandas]'") from exc
 
 from . import _pandas_join as _join  # noqa: E402 - after the extra's check
+from ._pandas_frames import (  # noqa: E402
+    Cells,
+    ColumnError,
+    first_true,
+    frame_coordinates,
+    geometry_name,
+    geopandas_module,
+    is_geo,
+    row_label,
+)
 
 __all__ = ["DggsAccessor", "ColumnError"]
 
-_CELL_COLUMN = re.compile(r"^cell_\d+$")
 _MODES = ("center", "contains", "overlaps")
-
-
-class ColumnError(DggsValueError):
-    """A column the accessor needs is not in the frame (or the choice is ambiguous)."""
-
-
-def _geopandas() -> Any:
-    try:
-        import geopandas
-    except ImportError as exc:  # pragma: no cover - exercised only without geopandas
-        raise ImportError("this method needs geopandas: pip install 'dggs[pandas]'") from exc
-    return geopandas
-
-
-def _is_geo(frame: pd.DataFrame) -> bool:
-    """A GeoDataFrame with an active geometry column."""
-    gpd = sys.modules.get("geopandas")
-    if gpd is None or not isinstance(frame, gpd.GeoDataFrame):
-        return False
-    return _geometry_name(frame) in frame.columns
-
-
-def _geometry_name(frame: Any) -> Any:
-    """The name of a GeoDataFrame's active geometry column (None without one)."""
-    return getattr(frame, "active_geometry_name", None)
-
-
-def _coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
-    """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row."""
-    col = frame[name]
-    if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
-        numbers: np.ndarray = col.to_numpy(dtype=np.float64, na_value=np.nan)  # pandas is untyped here
-        return numbers
-    values = pd.to_numeric(col, errors="coerce")
-    bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
-    if bad.any():
-        i = int(np.flatnonzero(bad.to_numpy())[0])
-        raise CoordinateError(f"{name} {col.iloc[i]!r} in row {_label(frame, i)} is not a number")
-    coerced: np.ndarray = values.to_numpy(dtype=np.float64, na_value=np.nan)
-    return coerced
-
-
-def _label(frame_or_index: Any, i: int) -> str:
-    """The repr of row ``i``'s label, numpy scalars as plain Python values."""
-    index = frame_or_index.index if hasattr(frame_or_index, "columns") else frame_or_index
-    label = index[i]
-    return repr(label.item() if isinstance(label, np.generic) else label)
-
-
-def _first(mask: np.ndarray) -> int | None:
-    hits = np.flatnonzero(mask)
-    return int(hits[0]) if hits.size else None
-
-
-class _Cells:
-    """The cell ids a method reads: a column or the index, with its values and labels."""
-
-    def __init__(self, frame: pd.DataFrame, column: str | None):
-        if column is None:
-            found = [c for c in frame.columns if isinstance(c, str) and _CELL_COLUMN.match(c)]
-            if len(found) > 1:
-                raise ColumnError(f"several cell columns {found}: pass column=")
-            column = found[0] if found else None
-        elif column not in frame.columns:
-            raise ColumnError(f"column {column!r} is not in the frame (columns: {list(frame.columns)})")
-        self.column = column
-        self.labels = frame.index
-        self.values = frame[column] if column is not None else frame.index.to_series()
-        if self.values.dtype == object or isinstance(self.values.dtype, pd.StringDtype):
-            self.ids: Any = self.values.to_numpy(dtype=object)
-        else:
-            self.ids = self.values.to_numpy()
-        self.where = f"column {column!r}" if column is not None else "the index (no cell_<level> column; pass column=)"
-
-    def reraise(self, exc: DggsValueError, level: int | None = None) -> NoReturn:
-        """Raise ``exc`` again, naming the row label of the first bad id."""
-        bad = _first(~np.asarray(is_valid_cell(self.ids), dtype=bool))
-        if bad is None and level is not None:
-            bad = _first(np.asarray(get_level(self.ids)) < level)
-        if bad is None:
-            raise exc
-        raise type(exc)(f"{exc} (row {_label(self.labels, bad)}, {self.where})") from exc
 
 
 @pd.api.extensions.register_dataframe_accessor("dggs")
@@ -197,7 +122,7 @@ class DggsAccessor:
         level = check_level(level)
         df = self._df
         name = column if column is not None else f"cell_{level}"
-        if lat not in df.columns and lng not in df.columns and _is_geo(df):
+        if lat not in df.columns and lng not in df.columns and is_geo(df):
             geom = df.geometry
             if len(df) and not (geom.geom_type == "Point").all():
                 raise ColumnError(f"no columns {lat!r}, {lng!r} and the geometry is not all points")
@@ -208,16 +133,16 @@ class DggsAccessor:
             for col in (lat, lng):
                 if col not in df.columns:
                     raise ColumnError(f"column {col!r} is not in the frame (columns: {list(df.columns)})")
-            lat_a, lng_a = _coordinates(df, lat), _coordinates(df, lng)
+            lat_a, lng_a = frame_coordinates(df, lat), frame_coordinates(df, lng)
             names = (lat, lng)
         try:
             ids = latlng_to_cell(lat_a, lng_a, level, as_int=as_int) if len(df) else np.array([], dtype=np.uint64)
         except CoordinateError as exc:
-            bad = _first(~np.isfinite(lat_a) | ~np.isfinite(lng_a) | (np.abs(lat_a) > 90.0))
+            bad = first_true(~np.isfinite(lat_a) | ~np.isfinite(lng_a) | (np.abs(lat_a) > 90.0))
             if bad is None:
                 raise
             what = names[0] if not np.isfinite(lat_a[bad]) or abs(lat_a[bad]) > 90 else names[1]
-            raise CoordinateError(f"{exc} (row {_label(df, bad)}, column {what!r})") from exc
+            raise CoordinateError(f"{exc} (row {row_label(df, bad)}, column {what!r})") from exc
         values = pd.Series(
             ids if as_int else np.asarray(ids, dtype=object), index=df.index, dtype=None if as_int else "str"
         )
@@ -259,16 +184,16 @@ class DggsAccessor:
         >>> g.crs.to_epsg(), g.geom_type.tolist()
         (4326, ['Polygon', 'Polygon'])
         """
-        gpd = _geopandas()
+        gpd = geopandas_module()
         df = self._df
-        cells = _Cells(df, column)
+        cells = Cells(df, column)
         try:
             polys = cell_to_polygon(cells.ids, densify=densify) if len(df) else np.array([], dtype=object)
         except InvalidCellError as exc:
             cells.reraise(exc)
         data = pd.DataFrame(df)
-        if _is_geo(df):
-            data = data.drop(columns=[_geometry_name(df)])
+        if is_geo(df):
+            data = data.drop(columns=[geometry_name(df)])
         geometry = gpd.GeoSeries(np.asarray(polys, dtype=object), index=df.index, crs="EPSG:4326")
         return gpd.GeoDataFrame(data, geometry=geometry, crs="EPSG:4326")
 
@@ -321,7 +246,7 @@ class DggsAccessor:
         """
         level = check_level(level)
         df = self._df
-        cells = _Cells(df, column)
+        cells = Cells(df, column)
         try:
             parents = cell_to_parent(cells.ids, level) if len(df) else cells.ids
         except (InvalidCellError, LevelMismatchError) as exc:
@@ -330,8 +255,8 @@ class DggsAccessor:
         if key.dtype == object:
             key = key.astype("str")
         drop = [cells.column] if cells.column is not None else []
-        if _is_geo(df):
-            drop.append(_geometry_name(df))
+        if is_geo(df):
+            drop.append(geometry_name(df))
         data = pd.DataFrame(df).drop(columns=drop)
         if agg is None:
             out = data.groupby(key, sort=True).size().to_frame("count")
@@ -410,7 +335,7 @@ class DggsAccessor:
         if mode not in _MODES:
             raise DggsValueError(f"mode {mode!r} is not one of {', '.join(_MODES)}")
         df = self._df
-        if not _is_geo(df):
+        if not is_geo(df):
             raise ColumnError("polyfill needs a GeoDataFrame with an active geometry column")
         geoms = df.geometry
         if geoms.crs is not None and not geoms.crs.equals("EPSG:4326"):
@@ -422,11 +347,11 @@ class DggsAccessor:
                 found.append(np.array([], dtype=np.uint64 if as_int else object))
                 continue
             if geom.geom_type not in ("Polygon", "MultiPolygon"):
-                raise DggsValueError(f"row {_label(df, i)}: a {geom.geom_type} is not a Polygon or MultiPolygon")
+                raise DggsValueError(f"row {row_label(df, i)}: a {geom.geom_type} is not a Polygon or MultiPolygon")
             try:
                 found.append(polygon_to_cells(geom, level, mode=mode, as_int=as_int, max_cells=max_cells))
             except DggsValueError as exc:
-                raise type(exc)(f"{exc} (row {_label(df, i)})") from exc
+                raise type(exc)(f"{exc} (row {row_label(df, i)})") from exc
         if not explode:
             return df.assign(**{name: pd.Series([c.tolist() for c in found], index=df.index, dtype=object)})
         counts = np.array([c.shape[0] for c in found], dtype=np.int64)

@@ -116,13 +116,10 @@ def tables(quick: bool, dggs_levels: int) -> None:
         "as chapter 6 measures every scheme."
     )
     if dggs_levels:
-        from dggs.experiments.dggs_grid import dggs_grid_available, dggs_grid_metrics
+        from dggs.experiments.dggs_grid import dggs_grid_metrics
 
         click.echo()
-        if dggs_grid_available():
-            click.echo(format_dggs_row(dggs_grid_metrics(dggs_levels, 64, _progress()), 64))
-        else:
-            click.echo("dggs grid row skipped: dggs.cell_to_boundary is not available yet")
+        click.echo(format_dggs_row(dggs_grid_metrics(dggs_levels, 64, _progress()), 64))
 
 
 @experiments.command()

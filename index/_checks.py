@@ -46,6 +46,8 @@ def check_level(level: Any, name: str = "level") -> int:
     >>> check_level(np.int64(5))
     5
     """
+    if type(level) is int and 0 <= level <= MAX_LEVEL:  # the common case, first
+        return level
     if not _is_int(level):
         raise LevelError(f"{name} {level!r} must be an integer 0..{MAX_LEVEL}")
     if not 0 <= level <= MAX_LEVEL:
@@ -63,6 +65,8 @@ def check_max_cells(max_cells: Any) -> int:
     """
     if max_cells is None:
         return MAX_CELLS
+    if type(max_cells) is int and 0 <= max_cells <= _INT64_MAX:
+        return max_cells
     if not _is_int(max_cells) or max_cells < 0:
         raise DggsValueError(f"max_cells {max_cells!r} must be a non-negative integer (or None for {MAX_CELLS:,})")
     return min(int(max_cells), _INT64_MAX)  # more than any call can return: no limit, in a kernel's integer
@@ -93,6 +97,8 @@ def check_k(k: Any, name: str = "k") -> int:
     DggsValueError
         Not a non-negative integer.
     """
+    if type(k) is int and k >= 0:
+        return k
     if not _is_int(k) or k < 0:
         raise DggsValueError(f"{name} {k!r} must be a non-negative integer")
     return int(k)
@@ -108,10 +114,10 @@ def check_radius(k: Any, what: str) -> int:
     TooManyCellsError
         Past :data:`K_LIMIT`, where a disk would hold more cells than any level has.
     """
-    k = check_k(k)
-    if k > K_LIMIT:
-        raise TooManyCellsError(f"{what} with k={k} would return more cells than the grid has at any level")
-    return k
+    radius = check_k(k)
+    if radius > K_LIMIT:
+        raise TooManyCellsError(f"{what} with k={radius} would return more cells than the grid has at any level")
+    return radius
 
 
 def check_densify(densify: Any) -> int:

@@ -61,7 +61,8 @@ def special_rings(coords: np.ndarray) -> np.ndarray:
     degree of a pole: the few cells that take the exact per-cell path.
     """
     steps = np.abs(np.diff(coords[..., 0], axis=1))
-    return (steps > 90.0).any(axis=1) | (np.abs(coords[..., 1]) > 89.0).any(axis=1)
+    special: np.ndarray = (steps > 90.0).any(axis=1) | (np.abs(coords[..., 1]) > 89.0).any(axis=1)
+    return special
 
 
 def rings_to_geometries(coords: np.ndarray, ids: np.ndarray, densify: int) -> np.ndarray:
@@ -154,7 +155,7 @@ def ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygon
             piece = poly.intersection(window)
             if not piece.is_empty:
                 parts.append(shapely.affinity.translate(piece, xoff=-360.0 * k))
-    geoms: list = []
+    geoms: list[Any] = []
     for p in parts:
         geoms.extend(getattr(p, "geoms", [p]))
     geoms = [orient(g, 1.0) for g in geoms if isinstance(g, Polygon) and g.area > 0]

@@ -70,12 +70,17 @@ _RING = Op(many=_rows(kg.ring, kg.ring_size_bound, "grid_ring"), out=ROWS)
 _DISTANCE = Op(many=_distances, out=VALUE)
 
 
-def edge_neighbors(cell):
+def edge_neighbors(cell: Any) -> Any:
     """The three cells that share an edge with ``cell``, across face edges too.
 
     Column ``i`` is the cell across the edge from corner ``i`` to corner
     ``i + 1`` of :func:`cell_to_boundary`.  A single id gives a list of 3;
     an array gives shape ``input shape + (3,)``, of the same kind.
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
 
     Examples
     --------
@@ -85,11 +90,13 @@ def edge_neighbors(cell):
     return apply(_NEIGHBOURS, cell)
 
 
-def are_neighbor_cells(a, b):
+def are_neighbor_cells(a: Any, b: Any) -> Any:
     """Whether cells ``a`` and ``b`` share an edge (element-wise; shapes broadcast as in numpy).
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
     DggsValueError
         The two shapes do not broadcast (the message names both sizes and shapes).
 
@@ -101,7 +108,7 @@ def are_neighbor_cells(a, b):
     return apply_pair(_ARE_NEIGHBOURS, a, b)
 
 
-def grid_disk(cell, k: int = 1, max_cells: int | None = None):
+def grid_disk(cell: Any, k: int = 1, max_cells: int | None = None) -> Any:
     """All cells within ``k`` edge steps of ``cell`` (including it), sorted.
 
     A single id gives a sorted list.  An array of N cells gives shape
@@ -117,8 +124,12 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
+    DggsValueError
+        ``k`` is not a non-negative integer, or ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
-        The output would exceed ``max_cells``.
+        The output would exceed ``max_cells``, or ``k`` is past :data:`dggs.index._checks.K_LIMIT`.
 
     Examples
     --------
@@ -130,10 +141,19 @@ def grid_disk(cell, k: int = 1, max_cells: int | None = None):
     return apply(_DISK, cell, check_radius(k, "grid_disk"), check_max_cells(max_cells))
 
 
-def grid_ring(cell, k: int = 1, max_cells: int | None = None):
+def grid_ring(cell: Any, k: int = 1, max_cells: int | None = None) -> Any:
     """The cells exactly ``k`` edge steps from ``cell``, sorted.
 
     Same shapes and padding as :func:`grid_disk`.
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
+    DggsValueError
+        ``k`` is not a non-negative integer, or ``max_cells`` is not None or a non-negative integer.
+    TooManyCellsError
+        The output would exceed ``max_cells``, or ``k`` is past :data:`dggs.index._checks.K_LIMIT`.
 
     Examples
     --------
@@ -143,7 +163,7 @@ def grid_ring(cell, k: int = 1, max_cells: int | None = None):
     return apply(_RING, cell, check_radius(k, "grid_ring"), check_max_cells(max_cells))
 
 
-def grid_distance(a, b, max_steps: int = 10_000):
+def grid_distance(a: Any, b: Any, max_steps: int = 10_000) -> Any:
     """Number of edge steps on the shortest path between cells of one level.
 
     Element-wise for arrays of the same shape, or shapes that broadcast as in
@@ -151,10 +171,13 @@ def grid_distance(a, b, max_steps: int = 10_000):
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
     LevelMismatchError
         The cells are at different levels.
     DggsValueError
-        The distance exceeds ``max_steps``, or the shapes do not broadcast.
+        The distance exceeds ``max_steps``, ``max_steps`` is not a non-negative integer,
+        or the shapes do not broadcast.
 
     Examples
     --------

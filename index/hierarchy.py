@@ -7,12 +7,15 @@ integer range.  The compiled kernels are in :mod:`dggs.index._kernel.hierarchy`.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from dggs.errors import LevelMismatchError
 
 from ._checks import MAX_CELLS, check_level, check_max_cells, check_size
 from ._convert import CELL, FLAT, VALUE, Op, apply, id_name, is_valid_any
+from ._convert.strings import face_of, level_of
 from ._kernel import compact as kc
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
@@ -41,11 +44,13 @@ def _level_error(ids: np.ndarray, bad: int, message: str) -> LevelMismatchError:
 
 
 def _levels(ids: np.ndarray) -> np.ndarray:
-    return kh.levels(ids).astype(np.int64)
+    levels: np.ndarray = kh.levels(ids).astype(np.int64)
+    return levels
 
 
 def _faces(ids: np.ndarray) -> np.ndarray:
-    return ((ids >> np.uint64(FACE_SHIFT)) & np.uint64(31)).astype(np.int64)
+    faces: np.ndarray = ((ids >> np.uint64(FACE_SHIFT)) & np.uint64(31)).astype(np.int64)
+    return faces
 
 
 def _parents(ids: np.ndarray, level: int) -> np.ndarray:
@@ -99,8 +104,8 @@ def _uncompact(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
     return out
 
 
-_LEVEL = Op(many=_levels, out=VALUE)
-_FACE = Op(many=_faces, out=VALUE)
+_LEVEL = Op(many=_levels, out=VALUE, one=level_of)
+_FACE = Op(many=_faces, out=VALUE, one=face_of)
 _PARENT = Op(many=_parents, out=CELL, one=kh.parent_of)
 _CHILDREN = Op(many=_children, out=FLAT)
 _CENTER_CHILD = Op(many=_center_children, out=CELL)
@@ -110,6 +115,11 @@ _UNCOMPACT = Op(many=_uncompact, out=FLAT)
 
 def get_num_cells(level: int) -> int:
     """Number of cells at ``level``: 20 at level 0, ``120 * 3 ** (level - 1)`` after.
+
+    Raises
+    ------
+    LevelError
+        ``level`` is not an integer 0..MAX_LEVEL.
 
     Examples
     --------
@@ -134,7 +144,7 @@ def get_base_cells(as_int: bool = False) -> np.ndarray:
     return ids if as_int else np.array(list(FACE_LETTERS))
 
 
-def is_valid_cell(cell) -> bool | np.ndarray:
+def is_valid_cell(cell: Any) -> bool | np.ndarray:
     """Whether ``cell`` is a well-formed id (string or integer).  Never raises.
 
     Examples
@@ -142,11 +152,17 @@ def is_valid_cell(cell) -> bool | np.ndarray:
     >>> is_valid_cell("C401"), is_valid_cell("C6"), is_valid_cell(42)
     (True, False, False)
     """
-    return is_valid_any(cell)
+    valid: bool | np.ndarray = is_valid_any(cell)
+    return valid
 
 
-def get_level(cell):
+def get_level(cell: Any) -> Any:
     """Level of a cell (``len(id) - 1`` for a string id).
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
 
     Examples
     --------
@@ -156,8 +172,13 @@ def get_level(cell):
     return apply(_LEVEL, cell)
 
 
-def get_face(cell):
+def get_face(cell: Any) -> Any:
     """Icosahedron face (0..19, PROJ's numbering) of a cell.
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
 
     Examples
     --------
@@ -167,13 +188,15 @@ def get_face(cell):
     return apply(_FACE, cell)
 
 
-def cell_to_parent(cell, level: int | None = None):
+def cell_to_parent(cell: Any, level: int | None = None) -> Any:
     """The ancestor of a cell at ``level`` (default: one level up).
 
     Raises
     ------
     InvalidCellError
         A malformed id.
+    LevelError
+        ``level`` is not None or an integer 0..MAX_LEVEL.
     LevelMismatchError
         ``level`` is finer than the cell, or the cell is a base cell.
 
@@ -185,7 +208,7 @@ def cell_to_parent(cell, level: int | None = None):
     return apply(_PARENT, cell, -1 if level is None else check_level(level))
 
 
-def cell_to_children(cell, level: int | None = None, max_cells: int | None = None):
+def cell_to_children(cell: Any, level: int | None = None, max_cells: int | None = None) -> Any:
     """The descendants of a cell (or of each cell) at ``level`` (default: one level down), in id order.
 
     3 children per level (6 from a base cell to level 1).  A single id gives
@@ -199,8 +222,14 @@ def cell_to_children(cell, level: int | None = None, max_cells: int | None = Non
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
+    LevelError
+        ``level`` is not None or an integer 0..MAX_LEVEL, or no level is given for cells at MAX_LEVEL.
     LevelMismatchError
         ``level`` is coarser than a cell, or no level is given for cells of mixed levels.
+    DggsValueError
+        ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
         The result would exceed ``max_cells``; nothing is allocated.
 
@@ -215,8 +244,17 @@ def cell_to_children(cell, level: int | None = None, max_cells: int | None = Non
     return apply(_CHILDREN, cell, -1 if level is None else check_level(level, "child level"), limit)
 
 
-def cell_to_center_child(cell, level: int | None = None):
+def cell_to_center_child(cell: Any, level: int | None = None) -> Any:
     """The descendant at ``level`` that holds the cell's centre point (default: one level down).
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
+    LevelError
+        ``level`` is not None or an integer 0..MAX_LEVEL.
+    LevelMismatchError
+        ``level`` is coarser than a cell.
 
     Examples
     --------
@@ -226,12 +264,17 @@ def cell_to_center_child(cell, level: int | None = None):
     return apply(_CENTER_CHILD, cell, -1 if level is None else check_level(level, "child level"))
 
 
-def compact_cells(cells):
+def compact_cells(cells: Any) -> Any:
     """Replace every complete set of siblings by their parent, recursively.
 
     Duplicates and cells already covered by an ancestor in the input are
     dropped.  The result covers exactly the same area with the fewest cells,
     sorted.  Linear after one sort.
+
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
 
     Examples
     --------
@@ -241,13 +284,19 @@ def compact_cells(cells):
     return apply(_COMPACT, cells)
 
 
-def uncompact_cells(cells, level: int, max_cells: int | None = None):
+def uncompact_cells(cells: Any, level: int, max_cells: int | None = None) -> Any:
     """Expand cells to their descendants at ``level`` (the inverse of compaction), sorted.
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
+    LevelError
+        ``level`` is not an integer 0..MAX_LEVEL.
     LevelMismatchError
         A cell is finer than ``level``.
+    DggsValueError
+        ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
         The result would exceed ``max_cells`` (default :data:`MAX_CELLS`).
 

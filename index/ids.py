@@ -20,7 +20,7 @@ import numpy as np
 
 from ._checks import check_level
 from ._convert import CELL, Op, apply
-from ._convert.strings import valid_int
+from ._convert.strings import valid_id
 from ._kernel.bits import MAX_LEVEL
 
 __all__ = ["MAX_LEVEL", "FACE_LETTERS", "check_level", "int_to_str", "str_to_int"]
@@ -29,15 +29,12 @@ __all__ = ["MAX_LEVEL", "FACE_LETTERS", "check_level", "int_to_str", "str_to_int
 FACE_LETTERS = "ABCDEFGHIJKLMNOPQRST"
 
 
-def _valid(cell: int) -> int:
-    return cell if valid_int(cell) else 0
-
-
 def _same(ids: np.ndarray) -> np.ndarray:
     return ids
 
 
-_CONVERT = Op(many=_same, out=CELL, one=_valid)
+_TO_INT = Op(many=_same, out=CELL, one=valid_id, form="int")
+_TO_STR = Op(many=_same, out=CELL, one=valid_id, form="str", nulls=True)
 
 
 def str_to_int(ids: Any) -> Any:
@@ -70,7 +67,7 @@ def str_to_int(ids: Any) -> Any:
     >>> dggs.str_to_int(np.array(["A", "T5"])).dtype
     dtype('uint64')
     """
-    return apply(_CONVERT, ids, form="int")
+    return apply(_TO_INT, ids)
 
 
 def int_to_str(ids: Any) -> Any:
@@ -104,4 +101,4 @@ def int_to_str(ids: Any) -> Any:
     array([['A', 'T5'],
            ['C401', 'B0']], dtype='<U4')
     """
-    return apply(_CONVERT, ids, form="str", nulls=True)
+    return apply(_TO_STR, ids)

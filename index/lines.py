@@ -29,11 +29,13 @@ __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells"
 
 
 @lru_cache(maxsize=1)
-def _geod():
+def _geod() -> Any:
     """Pyproj's WGS84 geodesic solver, made on first use (``import dggs`` stays free of pyproj)."""
     import pyproj
 
     return pyproj.Geod(ellps="WGS84")
+
+
 #: Units of the distance functions: metres and kilometres on WGS84, radians on the sphere.
 DISTANCE_UNITS = ("m", "km", "rad")
 
@@ -41,7 +43,8 @@ DISTANCE_UNITS = ("m", "km", "rad")
 def _check_unit(unit: Any) -> str:
     if unit not in DISTANCE_UNITS:
         raise DggsValueError(f"unit {unit!r} must be one of {', '.join(map(repr, DISTANCE_UNITS))}")
-    return unit
+    checked: str = unit
+    return checked
 
 
 def _distance(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.ndarray, unit: str) -> np.ndarray:
@@ -49,7 +52,8 @@ def _distance(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.nda
         p1, p2 = np.radians(lat1), np.radians(lat2)
         dlat, dlng = p2 - p1, np.radians(lng2 - lng1)
         h = np.sin(dlat / 2) ** 2 + np.cos(p1) * np.cos(p2) * np.sin(dlng / 2) ** 2
-        return 2 * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+        angle: np.ndarray = 2 * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+        return angle
     _, _, d = _geod().inv(lng1, lat1, lng2, lat2)
     d = np.asarray(d, dtype=np.float64)
     return d / 1000.0 if unit == "km" else d
@@ -78,7 +82,7 @@ def _check_range(lat: np.ndarray, lng: np.ndarray, what: str) -> None:
         )
 
 
-def great_circle_distance(lat1, lng1, lat2, lng2, unit: str = "m"):
+def great_circle_distance(lat1: Any, lng1: Any, lat2: Any, lng2: Any, unit: str = "m") -> Any:
     """Distance between points (geodetic WGS84 degrees), element-wise.
 
     ``unit="m"`` or ``"km"``: the geodesic distance on the WGS84 ellipsoid
@@ -125,7 +129,7 @@ def great_circle_distance(lat1, lng1, lat2, lng2, unit: str = "m"):
     return values_out(_distance(a1, o1, a2, o2, unit), pair_kind(k1, k2, shape))
 
 
-def cell_centers_distance(a, b, unit: str = "m"):
+def cell_centers_distance(a: Any, b: Any, unit: str = "m") -> Any:
     """Distance between the centres of cells ``a`` and ``b`` (element-wise, shapes broadcast).
 
     The centres are :func:`dggs.cell_to_latlng`'s; the distance is
@@ -164,7 +168,8 @@ def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int) -> np
     lat1, lng1, az = line
     n = s.shape[0]
     lng, lat, _ = _geod().fwd(np.full(n, lng1), np.full(n, lat1), np.full(n, az), s)
-    return latlng_to_cell(np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64), level, as_int=True)
+    ids: np.ndarray = latlng_to_cell(np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64), level, as_int=True)
+    return ids
 
 
 def _neighbours(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -189,7 +194,7 @@ def _around_corner(a: int, b: int) -> list[int]:
     return best
 
 
-def _between(line, level: int, sa: float, ca: int, sb: float, cb: int) -> list[int]:
+def _between(line: tuple[float, float, float], level: int, sa: float, ca: int, sb: float, cb: int) -> list[int]:
     """Cells strictly between ``ca`` (at distance ``sa``) and ``cb`` (at ``sb``) on the line, in order.
 
     Bisects until consecutive cells share an edge; consecutive cells that meet only at a
@@ -205,7 +210,9 @@ def _between(line, level: int, sa: float, ca: int, sb: float, cb: int) -> list[i
     return _between(line, level, sa, ca, sm, cm) + mid + _between(line, level, sm, cm, sb, cb)
 
 
-def geodesic_to_cells(lat1, lng1, lat2, lng2, level: int, as_int: bool = False, max_cells: int | None = None):
+def geodesic_to_cells(
+    lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None
+) -> np.ndarray:
     """The cells along the WGS84 geodesic from one point to another, in order (h3's ``grid_path_cells``).
 
     The geodesic (``pyproj.Geod``) is sampled every quarter of a short cell
@@ -240,6 +247,8 @@ def geodesic_to_cells(lat1, lng1, lat2, lng2, level: int, as_int: bool = False, 
         A latitude outside -90..90 or a non-finite or non-numeric coordinate.
     LevelError
         A bad level.
+    DggsValueError
+        ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
         The line would have more than ``max_cells`` cells.
 

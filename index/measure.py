@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -19,13 +20,14 @@ __all__ = ["cell_area", "level_table"]
 _UNITS = {"m^2": 1.0, "km^2": 1e-6}
 
 
-def _num_cells(level):
+def _num_cells(level: Any) -> np.ndarray:
     return np.where(level == 0, 20.0, 120.0 * 3.0 ** (np.asarray(level, dtype=float) - 1))
 
 
 def _areas_of_levels(level: np.ndarray, unit: str) -> np.ndarray:
     total = 4 * math.pi if unit == "rads^2" else WGS84.area * _UNITS[unit]
-    return total / _num_cells(level)
+    areas: np.ndarray = total / _num_cells(level)
+    return areas
 
 
 def _areas(ids: np.ndarray, unit: str) -> np.ndarray:
@@ -35,7 +37,7 @@ def _areas(ids: np.ndarray, unit: str) -> np.ndarray:
 _AREA = Op(many=_areas, out=VALUE)
 
 
-def cell_area(cell_or_level, unit: str = "m^2"):
+def cell_area(cell_or_level: Any, unit: str = "m^2") -> Any:
     """Area of a cell, or of every cell at a level, on the WGS84 ellipsoid.
 
     Exactly the ellipsoid's area divided by the number of cells at the level:
@@ -48,6 +50,15 @@ def cell_area(cell_or_level, unit: str = "m^2"):
         Cell id(s) (strings or 64-bit integers) or level(s) (integers 0..MAX_LEVEL).
     unit : {"m^2", "km^2", "rads^2"}
         Square metres, square kilometres, or steradians (unit sphere).
+
+    Raises
+    ------
+    DggsValueError
+        An unknown ``unit``.
+    LevelError
+        A level that is not an integer 0..MAX_LEVEL.
+    InvalidCellError
+        A malformed id (the message names it).
 
     Examples
     --------
@@ -66,12 +77,16 @@ def cell_area(cell_or_level, unit: str = "m^2"):
     return apply(_AREA, cell_or_level, unit)
 
 
-
-def level_table(max_level: int = MAX_LEVEL) -> list[dict]:
+def level_table(max_level: int = MAX_LEVEL) -> list[dict[str, Any]]:
     """Cell count, area and edge lengths at each level (for docs and the CLI).
 
     Edge lengths are those of the planar 30-60-90 cell of the same area
     (short leg, long leg, hypotenuse), a close guide to the curved edges.
+
+    Raises
+    ------
+    LevelError
+        ``max_level`` is not an integer 0..MAX_LEVEL.
 
     Examples
     --------
@@ -79,7 +94,7 @@ def level_table(max_level: int = MAX_LEVEL) -> list[dict]:
     >>> row["cells"], round(row["area_km2"], 1)
     (2361960, 216.0)
     """
-    rows = []
+    rows: list[dict[str, Any]] = []
     for level in range(check_level(max_level) + 1):
         area = cell_area(level)
         if level == 0:

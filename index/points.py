@@ -43,13 +43,14 @@ def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lat, lng
 
 
-_LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point)
+_LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point, form="str")
+_LOCATE_INT = Op(many=_locate, out=_CELL, one=kp.one_point, form="int")
 _CENTRE = Op(many=_centres, out=VALUE, one=kp.centre_of)
 _BOUNDARY = Op(many=boundaries, out=VALUE)
 _POLYGON = Op(many=geometries, out=VALUE)
 
 
-def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
+def latlng_to_cell(lat: Any, lng: Any, level: int, as_int: bool = False) -> Any:
     """The cell at ``level`` holding each point (geodetic WGS84 degrees).
 
     Parameters
@@ -92,10 +93,10 @@ def latlng_to_cell(lat, lng, level: int, as_int: bool = False):
     >>> latlng_to_cell([0.0, 90.0], [0.0, 0.0], 2)
     ['C32', 'A50']
     """
-    return apply_points(_LOCATE, lat, lng, check_level(level), form="int" if as_int else "str")
+    return apply_points(_LOCATE_INT if as_int else _LOCATE, lat, lng, check_level(level))
 
 
-def cell_to_latlng(cell):
+def cell_to_latlng(cell: Any) -> Any:
     """Centre (geodetic lat, lng in degrees) of a cell or of each cell of an array.
 
     The centre is the image of the planar triangle's centroid; it lies in
@@ -120,7 +121,7 @@ def cell_to_latlng(cell):
     return apply(_CENTRE, cell)
 
 
-def cell_to_boundary(cell, densify: int = 0):
+def cell_to_boundary(cell: Any, densify: int = 0) -> Any:
     """Corners of a cell as (lat, lng) pairs, counter-clockwise seen from outside.
 
     Parameters
@@ -136,6 +137,13 @@ def cell_to_boundary(cell, densify: int = 0):
         For one cell, a tuple of ``3 * (densify + 1)`` (lat, lng) tuples, not
         closed.  For an array, an ndarray of shape ``input shape + (3 * (densify + 1), 2)``.
 
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
+    DggsValueError
+        ``densify`` is not a non-negative integer, or is over the limit of points per edge.
+
     Examples
     --------
     >>> len(cell_to_boundary("C401")), len(cell_to_boundary("C401", densify=2))
@@ -144,7 +152,7 @@ def cell_to_boundary(cell, densify: int = 0):
     return apply(_BOUNDARY, cell, check_densify(densify))
 
 
-def cell_to_polygon(cell, densify: int | None = None):
+def cell_to_polygon(cell: Any, densify: int | None = None) -> Any:
     """A cell as a shapely Polygon in (lng, lat), split at the antimeridian.
 
     Parameters
@@ -161,6 +169,13 @@ def cell_to_polygon(cell, densify: int | None = None):
         A MultiPolygon only where the cell crosses the antimeridian.  All
         ordinary cells are built in one vectorized shapely call.
 
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
+    DggsValueError
+        ``densify`` is not None or a non-negative integer, or is over the limit of points per edge.
+
     Examples
     --------
     >>> poly = cell_to_polygon("C401")
@@ -170,7 +185,7 @@ def cell_to_polygon(cell, densify: int | None = None):
     return apply(_POLYGON, cell, None if densify is None else check_densify(densify))
 
 
-def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) -> dict:
+def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 16) -> dict[str, Any]:
     """A GeoJSON FeatureCollection of cells (RFC 7946: lng/lat, CCW rings).
 
     Parameters
@@ -186,8 +201,11 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
     DggsValueError
-        ``properties`` do not give one row per cell.
+        ``properties`` do not give one row per cell, or ``densify`` is not None or a
+        non-negative integer within the limit of points per edge.
 
     Examples
     --------
@@ -201,7 +219,7 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     rows = property_rows(properties, n)
     lv = kh.levels(ids)
     as_str = kind.form == "str"
-    features = []
+    features: list[dict[str, Any]] = []
     for cid, level, poly, props in zip(ids.tolist(), lv.tolist(), polys, rows, strict=True):
         key = format_int(cid) if as_str else cid
         features.append(
@@ -215,7 +233,7 @@ def cells_to_geojson(cells, properties: Any = None, densify: int | None = 16) ->
     return {"type": "FeatureCollection", "features": features}
 
 
-def _orient(poly):
+def _orient(poly: Any) -> Any:
     if isinstance(poly, Polygon):
         return shapely.geometry.polygon.orient(poly, 1.0)
     return MultiPolygon([shapely.geometry.polygon.orient(p, 1.0) for p in poly.geoms])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import shapely
@@ -22,7 +23,7 @@ __all__ = ["polygon_to_cells", "FILL_MODES"]
 #: The fill modes of :func:`polygon_to_cells`.
 FILL_MODES = ("center", "contains", "overlaps")
 
-def _wrap_polygon(poly):
+def _wrap_polygon(poly: Any) -> Any:
     """Fold parts of a lng/lat polygon beyond +-180 back into -180..180."""
     minx, _, maxx, _ = poly.bounds
     if minx >= -180.0 and maxx <= 180.0:
@@ -67,7 +68,7 @@ def _polar_xy(lat: np.ndarray, lng: np.ndarray, hemi: float) -> tuple[np.ndarray
     return rho * np.cos(t), hemi * rho * np.sin(t)
 
 
-def _polar_target(target, hemi: float, buffers: dict):
+def _polar_target(target: Any, hemi: float, buffers: dict[Any, Any]) -> Any:
     """The part of the target above :data:`_POLAR_CLIP` in the polar plane of ``hemi``."""
     key = ("polar", hemi)
     if key not in buffers:
@@ -84,7 +85,7 @@ def _polar_target(target, hemi: float, buffers: dict):
     return buffers[key]
 
 
-def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.ndarray, np.ndarray]:
+def _classify(target: Any, cells: np.ndarray, level: int, buffers: dict[Any, Any]) -> tuple[np.ndarray, np.ndarray]:
     """Which cells may hold a centre in ``target`` (hit), and which lie wholly inside it.
 
     Each cell's lng/lat footprint lies in a circle around its centre whose
@@ -150,7 +151,7 @@ def _classify(target, cells: np.ndarray, level: int, buffers: dict) -> tuple[np.
 _RADIUS_STEP = 1.25
 
 
-def _buffers(target, rclass: int, buffers: dict, plane=None):
+def _buffers(target: Any, rclass: int, buffers: dict[Any, Any], plane: Any = None) -> tuple[Any, Any]:
     """The target grown and shrunk by the radius of class ``rclass`` (prepared, computed once)."""
     key = (plane, rclass)
     if key not in buffers:
@@ -160,7 +161,8 @@ def _buffers(target, rclass: int, buffers: dict, plane=None):
         shapely.prepare(grown)
         shapely.prepare(shrunk)
         buffers[key] = grown, shrunk
-    return buffers[key]
+    pair: tuple[Any, Any] = buffers[key]
+    return pair
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
@@ -170,14 +172,15 @@ def _children(ids: np.ndarray, level: int) -> np.ndarray:
     return out
 
 
-def _centres_inside(target, ids: np.ndarray) -> np.ndarray:
+def _centres_inside(target: Any, ids: np.ndarray) -> np.ndarray:
     lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
     kp.centres(ids.shape[0], ids, lat, lng)
-    return shapely.contains_xy(target, lng, lat)
+    inside: np.ndarray = shapely.contains_xy(target, lng, lat)
+    return inside
 
 
 def polygon_to_cells(
-    polygon, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
+    polygon: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
 ) -> np.ndarray:
     """Cells at ``level`` whose centres lie in, that lie wholly in, or that touch a polygon (lng/lat, WGS84).
 
@@ -228,8 +231,12 @@ def polygon_to_cells(
 
     Raises
     ------
+    LevelError
+        ``level`` is not an integer 0..MAX_LEVEL.
     DggsValueError
-        Not a (valid) shapely polygon, latitudes outside -90..90, or an unknown ``mode``.
+        Not a (valid) shapely polygon, non-finite bounds, latitudes outside -90..90, longitudes
+        more than one turn beyond -180..180, an unknown ``mode``, or ``max_cells`` is not None or
+        a non-negative integer.
     TooManyCellsError
         The result would exceed ``max_cells``.
 
@@ -257,18 +264,17 @@ def _cell_geometries(ids: np.ndarray, level: int) -> np.ndarray:
     return rings_to_geometries(boundaries(ids, n, lnglat=True), ids, n)
 
 
-def _edge_test(target, ids: np.ndarray, level: int, mode: str) -> np.ndarray:
+def _edge_test(target: Any, ids: np.ndarray, level: int, mode: str) -> np.ndarray:
     """Which cells lie wholly in (``"contains"``) or touch (``"overlaps"``) the target."""
     if ids.size == 0:
         return np.zeros(0, dtype=bool)
     geoms = _cell_geometries(ids, level)
-    if mode == "contains":
-        return shapely.contains(target, geoms)
-    return shapely.intersects(target, geoms)
+    test: np.ndarray = shapely.contains(target, geoms) if mode == "contains" else shapely.intersects(target, geoms)
+    return test
 
 
 def _fill(
-    polygon, level: int, max_cells: int | None, work: dict | None = None, mode: str = "center"
+    polygon: Any, level: int, max_cells: int | None, work: dict[str, int] | None = None, mode: str = "center"
 ) -> np.ndarray:
     """Sorted uint64 ids of the cells at ``level`` in ``polygon`` by ``mode`` (see :func:`polygon_to_cells`).
 
@@ -288,7 +294,7 @@ def _fill(
         raise DggsValueError(f"polygon latitudes {miny}..{maxy} are out of range -90..90")
     target = _wrap_polygon(polygon)
     shapely.prepare(target)
-    buffers: dict = {}
+    buffers: dict[Any, Any] = {}
     candidates = get_base_cells(as_int=True)
     accepted: list[np.ndarray] = []
     total = 0

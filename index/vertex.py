@@ -23,6 +23,8 @@ whatever the form of the cell ids.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from dggs.errors import DggsValueError
@@ -88,7 +90,7 @@ _VERTEX_NEIGHBOURS = Op(many=_vertex_neighbours, out=ROWS)
 _DISK_VERTEX = Op(many=_disks_vertex, out=ROWS)
 
 
-def cell_to_vertexes(cell):
+def cell_to_vertexes(cell: Any) -> Any:
     """The ids of a cell's three corners (vertices), in the order of :func:`dggs.cell_to_boundary`.
 
     A vertex id is ``"<cell>:<i>"``: the smallest cell id around the vertex
@@ -122,7 +124,7 @@ def cell_to_vertexes(cell):
     return apply(_VERTEXES, cell)
 
 
-def is_valid_vertex(vertex) -> bool:
+def is_valid_vertex(vertex: Any) -> bool:
     """Whether ``vertex`` is a vertex id as :func:`cell_to_vertexes` gives them (never raises).
 
     Examples
@@ -137,7 +139,7 @@ def is_valid_vertex(vertex) -> bool:
     return True
 
 
-def vertex_to_latlng(vertex) -> tuple[float, float]:
+def vertex_to_latlng(vertex: Any) -> tuple[float, float]:
     """The (lat, lng) of a vertex, geodetic WGS84 degrees.
 
     Raises
@@ -157,7 +159,7 @@ def vertex_to_latlng(vertex) -> tuple[float, float]:
     return float(lat), float(lng)
 
 
-def vertex_to_cells(vertex) -> list[str]:
+def vertex_to_cells(vertex: Any) -> list[str]:
     """The cells that meet at a vertex (4, 5, 6, 10 or 12 of them), sorted string ids.
 
     Raises
@@ -176,7 +178,7 @@ def vertex_to_cells(vertex) -> list[str]:
     return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
 
 
-def vertex_neighbors(cell):
+def vertex_neighbors(cell: Any) -> Any:
     """The cells that share at least one corner with ``cell`` (not itself), sorted.
 
     Like ``grid_disk(cell, adjacency="vertex")`` in other grids minus the cell.
@@ -191,6 +193,11 @@ def vertex_neighbors(cell):
         array, shape ``input shape + (16,)`` of the same kind, rows sorted and
         padded with ``""`` (or 0).
 
+    Raises
+    ------
+    InvalidCellError
+        A malformed id (the message names it).
+
     Examples
     --------
     >>> import dggs
@@ -200,7 +207,7 @@ def vertex_neighbors(cell):
     return apply(_VERTEX_NEIGHBOURS, cell)
 
 
-def grid_disk_vertex(cell, k: int = 1, max_cells: int | None = None):
+def grid_disk_vertex(cell: Any, k: int = 1, max_cells: int | None = None) -> Any:
     """All cells within ``k`` steps of ``cell``, a step joining cells that share a corner, sorted.
 
     ``grid_disk_vertex(c, 1)`` is ``c`` and its :func:`vertex_neighbors`
@@ -224,10 +231,12 @@ def grid_disk_vertex(cell, k: int = 1, max_cells: int | None = None):
 
     Raises
     ------
+    InvalidCellError
+        A malformed id (the message names it).
     DggsValueError
-        ``k`` is not a non-negative integer.
+        ``k`` is not a non-negative integer, or ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
-        A disk would exceed ``max_cells``.
+        A disk would exceed ``max_cells``, or ``k`` is past :data:`dggs.index._checks.K_LIMIT`.
 
     Examples
     --------

@@ -17,7 +17,7 @@ import click
 __all__ = ["register", "bin_", "query", "export", "plot", "info", "demo"]
 
 
-def _open(db: str, readonly: bool = True):  # noqa: ANN202 - CellStore, imported lazily
+def _open(db: str, readonly: bool = True) -> Any:  # a CellStore, imported lazily
     from dggs.storage import CellStore
 
     return CellStore(db, create=False, readonly=readonly)

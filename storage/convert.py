@@ -34,7 +34,7 @@ class Prepared:
     """Checked rows of one batch, ready for ``executemany``."""
 
     rows: list[tuple]
-    rejects: list[dict]
+    rejects: list[dict[str, Any]]
     with_parts: bool = False
 
 
@@ -103,7 +103,7 @@ def _is_number(value: object, from_text: bool) -> bool:
     return False
 
 
-def infer_type(values: list, from_text: bool) -> str:
+def infer_type(values: list[Any], from_text: bool) -> str:
     """Guess the SQL type of a new value column from a batch of raw values.
 
     ``INTEGER`` if every non-empty value is an integer (text input: parses
@@ -206,7 +206,8 @@ def _convert(raw: Sequence[Any], kind: str, name: str, bad: _Bad, text: bool) ->
             pass
     elif text:
         try:
-            return np.asarray(raw, dtype=np.int64).tolist()
+            ints: list[Any] = np.asarray(raw, dtype=np.int64).tolist()
+            return ints
         except (ValueError, OverflowError):
             pass
     out: list[Any] = []

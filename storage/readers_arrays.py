@@ -20,7 +20,7 @@ from .readers import RawBatch, _skip
 __all__ = ["records_batches", "array_batches", "check_arrays"]
 
 
-def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict:
+def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict[str, Any]:
     return dict(items[i])
 
 
@@ -116,7 +116,9 @@ def array_batches(
         batch_cols = {name: col[sl] for name, col in cols.items()}
         batch_lat, batch_lng = lat_a[sl], lng_a[sl]
 
-        def record(i: int, _lat=batch_lat, _lng=batch_lng, _cols=batch_cols) -> dict:
+        def record(
+            i: int, _lat: np.ndarray = batch_lat, _lng: np.ndarray = batch_lng, _cols: dict[str, np.ndarray] = batch_cols
+        ) -> dict[str, Any]:
             out = {"lat": _lat[i], "lng": _lng[i], **{k: v[i] for k, v in _cols.items()}}
             return {k: (v.item() if hasattr(v, "item") else v) for k, v in out.items()}
 

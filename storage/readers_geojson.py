@@ -22,11 +22,11 @@ from .readers import RawBatch
 __all__ = ["load_geojson", "geojson_batches"]
 
 
-def _feature_at(props: Sequence[dict], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict:
+def _feature_at(props: Sequence[dict[str, Any]], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict[str, Any]:
     return {"lat": lat[i], "lng": lng[i], **props[i]}
 
 
-def load_geojson(path: str | Path) -> list[dict]:
+def load_geojson(path: str | Path) -> list[dict[str, Any]]:
     """Read the features of a GeoJSON file (FeatureCollection, Feature or geometry).
 
     Raises
@@ -43,7 +43,8 @@ def load_geojson(path: str | Path) -> list[dict]:
         raise DggsValueError(f"{path} is nested too deeply to read as GeoJSON") from None
     kind = data.get("type") if isinstance(data, dict) else None
     if kind == "FeatureCollection" and isinstance(data.get("features"), list):
-        return data["features"]
+        features: list[dict[str, Any]] = data["features"]
+        return features
     if kind == "Feature":
         return [data]
     if isinstance(kind, str) and "coordinates" in data:
@@ -73,15 +74,15 @@ def geojson_batches(
         lat: list[Any] = []
         lng: list[Any] = []
         cells: list[str] = []
-        props: list[dict] = []
+        props: list[dict[str, Any]] = []
         parts: list[int] = []
         bad: dict[int, tuple[str | None, Any, str]] = {}
 
         # this chunk's lists are bound as defaults: a closure would see whichever lists the loop made last
         def add(
-            row: int, y: Any, x: Any, cell: str, prop: dict, part: int = 0, *,
+            row: int, y: Any, x: Any, cell: str, prop: dict[str, Any], part: int = 0, *,
             rows: list[int] = rows, parts: list[int] = parts, lat: list[Any] = lat, lng: list[Any] = lng,
-            cells: list[str] = cells, props: list[dict] = props,
+            cells: list[str] = cells, props: list[dict[str, Any]] = props,
         ) -> None:
             rows.append(row)
             parts.append(part)

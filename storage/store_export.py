@@ -59,7 +59,7 @@ class ExportMethods:
         rows = self.aggregate(level, column, queries.export_stats(column, stats))
         cells = [row["cell"] for row in rows]
         props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
-        collection = dggs.cells_to_geojson(cells, properties=props, densify=densify)
+        collection: dict[str, Any] = dggs.cells_to_geojson(cells, properties=props, densify=densify)
         if path is not None:
             with atomic_write(path) as fh:
                 json.dump(collection, fh)

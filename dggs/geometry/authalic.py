@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -68,7 +69,8 @@ def _clenshaw_sin(coeffs: np.ndarray, x: np.ndarray) -> np.ndarray:
     b2 = np.zeros_like(x)
     for c in coeffs[::-1]:
         b1, b2 = two_c2 * b1 - b2 + c, b1
-    return b1 * s2
+    total: np.ndarray = b1 * s2
+    return total
 
 
 @dataclass(frozen=True)
@@ -130,25 +132,25 @@ class Ellipsoid:
         """Coefficients of ``phi - beta = sum c_k sin 2k beta`` (Karney 2023, eq. A20)."""
         return _series_coefficients(_C_PHI_XI, self.n)
 
-    def geodetic_to_authalic(self, phi):
+    def geodetic_to_authalic(self, phi: Any) -> Any:
         """Authalic latitude (radians) of geodetic latitude ``phi`` (radians)."""
         phi = np.asarray(phi, dtype=np.float64)
         if self.f == 0.0:
             return phi
         return phi + _clenshaw_sin(self.to_authalic_series, phi)
 
-    def authalic_to_geodetic(self, xi):
+    def authalic_to_geodetic(self, xi: Any) -> Any:
         """Geodetic latitude (radians) of authalic latitude ``xi`` (radians)."""
         xi = np.asarray(xi, dtype=np.float64)
         if self.f == 0.0:
             return xi
         return xi + _clenshaw_sin(self.to_geodetic_series, xi)
 
-    def geodetic_to_authalic_deg(self, lat):
+    def geodetic_to_authalic_deg(self, lat: Any) -> Any:
         """Authalic latitude in degrees of geodetic latitude ``lat`` in degrees."""
         return np.degrees(self.geodetic_to_authalic(np.radians(lat)))
 
-    def authalic_to_geodetic_deg(self, lat):
+    def authalic_to_geodetic_deg(self, lat: Any) -> Any:
         """Geodetic latitude in degrees of authalic latitude ``lat`` in degrees."""
         return np.degrees(self.authalic_to_geodetic(np.radians(lat)))
 

@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 
@@ -115,7 +116,7 @@ ISEA = Orientation(VERTEX_LATITUDE, 11.25, 0.0)
 POLE = Orientation(90.0, 0.0, 0.0)
 
 
-def latlng_to_xyz(lat_rad, lng_rad) -> np.ndarray:
+def latlng_to_xyz(lat_rad: Any, lng_rad: Any) -> np.ndarray:
     """Unit vectors (..., 3) of latitudes and longitudes in radians."""
     cl = np.cos(lat_rad)
     return np.stack([cl * np.cos(lng_rad), cl * np.sin(lng_rad), np.sin(lat_rad)], axis=-1)
@@ -179,9 +180,10 @@ def geometry(orientation: Orientation) -> Geometry:
     rotation = np.stack([x_axis, y_axis, z_axis])  # rows: frame axes
     to_geo = rotation.T
 
-    def frame_points(latlngs):
+    def frame_points(latlngs: Any) -> np.ndarray:
         arr = np.radians(np.array(latlngs))
-        return latlng_to_xyz(arr[:, 0], arr[:, 1]) @ to_geo.T
+        points: np.ndarray = latlng_to_xyz(arr[:, 0], arr[:, 1]) @ to_geo.T
+        return points
 
     vertices = frame_points(_VERTEX_LATLNG)
     centres = frame_points(_CENTRE_LATLNG)
@@ -214,7 +216,8 @@ def face_of(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:
     ``-i * TIE_STEP`` (at most 7.6e-15, about 50 nm on the Earth), so a
     lower-numbered face wins any near-tie.
     """
-    return np.argmax(face_dots(orientation, xyz), axis=1)
+    faces: np.ndarray = np.argmax(face_dots(orientation, xyz), axis=1)
+    return faces
 
 
 def face_dots(orientation: Orientation, xyz: np.ndarray) -> np.ndarray:

@@ -31,6 +31,7 @@ Examples
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -71,7 +72,7 @@ __all__ = [
 # ----------------------------------------------------------------------------
 # Input checks
 # ----------------------------------------------------------------------------
-def _numbers(value, name: str) -> None:
+def _numbers(value: Any, name: str) -> None:
     """Raise :class:`CoordinateError` naming the first value that is not a real number (str, bool, None...).
 
     numpy would turn ``"10"`` into 10.0, ``True`` into 1.0 and ``None`` into NaN.
@@ -92,7 +93,7 @@ def _numbers(value, name: str) -> None:
 # ----------------------------------------------------------------------------
 # Forward
 # ----------------------------------------------------------------------------
-def forward(lat, lng, orientation: Orientation = ISEA):
+def forward(lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, Any, Any]:
     """Project spherical latitude/longitude (degrees) to a face and face-plane ``(x, y)``.
 
     Parameters
@@ -132,7 +133,9 @@ def forward(lat, lng, orientation: Orientation = ISEA):
     return face.reshape(shape), x.reshape(shape), y.reshape(shape)
 
 
-def _forward_rad(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
+def _forward_rad(
+    lat: np.ndarray, lng: np.ndarray, orientation: Orientation
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Forward of radian arrays (1-d) through the compiled kernel."""
     geo = orientation.geometry
     n = lat.shape[0]
@@ -159,7 +162,7 @@ def _outside_face(x: np.ndarray, y: np.ndarray, slack: float) -> np.ndarray:
     )
 
 
-def checked_face_xy(face, x, y):
+def checked_face_xy(face: Any, x: Any, y: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, tuple[int, ...], bool]:
     """Check inverse input, naming the first bad value; return flat arrays, the shape and scalar-ness.
 
     Returns ``(face, x, y, shape, scalar)`` with 1-d int64 / float64 arrays.
@@ -205,7 +208,7 @@ def checked_face_xy(face, x, y):
     return face_a, x_a, y_a, shape, scalar
 
 
-def inverse(face, x, y, orientation: Orientation = ISEA):
+def inverse(face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple[Any, Any]:
     """Map face-plane ``(x, y)`` on face ``face`` back to latitude/longitude (degrees).
 
     The exact, non-iterative closed form of the azimuth (Snyder 1992 eqs.
@@ -288,7 +291,7 @@ class Projection:
     def __repr__(self) -> str:
         return f"Projection(ellipsoid={self.ellipsoid.name}, orientation={self.orientation})"
 
-    def forward(self, lat, lng):
+    def forward(self, lat: Any, lng: Any) -> tuple[Any, Any, Any]:
         """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
         _numbers(lat, "latitude")
         _numbers(lng, "longitude")
@@ -300,7 +303,7 @@ class Projection:
             return int(face[0]), float(x[0]), float(y[0])
         return face, x, y
 
-    def inverse(self, face, x, y):
+    def inverse(self, face: Any, x: Any, y: Any) -> tuple[Any, Any]:
         """``(face, x, y)`` in metres -> geodetic ``(lat, lng)`` in degrees."""
         lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), self.orientation)
         lat = self.ellipsoid.authalic_to_geodetic_deg(lat)

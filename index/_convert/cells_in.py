@@ -46,7 +46,8 @@ class _Parsed:
         return self.ids, self.kind
 
     def mask(self) -> np.ndarray:
-        return codec.valid_ints(self.ids) if self.kind.form == "int" else self.ids != 0
+        valid: np.ndarray = codec.valid_ints(self.ids) if self.kind.form == "int" else self.ids != 0
+        return valid
 
 
 def _scan(items: Any, kind: Kind) -> _Parsed:

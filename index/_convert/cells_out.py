@@ -33,12 +33,13 @@ def _u_array(ids: np.ndarray) -> np.ndarray:
     return codes.view(f"U{codes.shape[1]}").reshape(-1)
 
 
-def _py_values(ids: np.ndarray, form: str) -> list:
+def _py_values(ids: np.ndarray, form: str) -> list[Any]:
     """Flat list of Python str / int."""
-    return _u_array(ids).tolist() if form == "str" else ids.reshape(-1).tolist()
+    values: list[Any] = _u_array(ids).tolist() if form == "str" else ids.reshape(-1).tolist()
+    return values
 
 
-def _nest(items: list, dims: tuple[int, ...]) -> list:
+def _nest(items: list[Any], dims: tuple[int, ...]) -> list[Any]:
     """Group a flat list into nested lists of the given dims."""
     if len(dims) <= 1:
         return items
@@ -54,7 +55,7 @@ def _pylist(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
     keep = rows != 0
     vals = _py_values(rows[keep], kind.form)
     ends = np.cumsum(keep.sum(axis=1)).tolist()
-    lists = [vals[a:b] for a, b in zip([0, *ends[:-1]], ends, strict=True)]
+    lists = [vals[a:b] for a, b in zip([0, *ends][:-1], ends, strict=True)]
     outer = kind.shape + trailing[:-1]
     return _nest(lists, outer) if outer else lists[0]
 

