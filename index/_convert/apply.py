@@ -139,11 +139,11 @@ def apply(op: Op, cells: Any, *args: Any) -> Any:
         An id is malformed (the message names it and its index).
     """
     one = op.one
-    if one is not None:  # the single-id fast path, written out: each call here costs about 60 ns
+    if one is not None:  # the single-id fast path, written out (each extra Python call costs 60-100 ns here)
         t = type(cells)
         v = strings.parse_str(cells) if t is str else cells if t is int and 0 < cells < _INT64_END else 0
         if v:
-            r = v if one is valid_id and t is str else one(v, *args)  # a parsed string is valid already
+            r: Any = v if one is valid_id and t is str else one(v, *args)  # a parsed string is valid already
             out = op.out
             as_str = t is str if op.form is None else op.form == "str"
             if out is CELL:
