@@ -139,6 +139,13 @@ def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = N
     --------
     >>> geoarrow_field().metadata[b"ARROW:extension:name"]
     b'geoarrow.wkb'
+
+    Raises
+    ------
+    DggsValueError
+        An unknown ``encoding``, or ``encoding="geoarrow"`` without the ``cells``.
+    InvalidCellError
+        A malformed id among the ``cells``.
     """
     _check_encoding(encoding)
     meta = {b"ARROW:extension:metadata": json.dumps({"crs": "OGC:CRS84", "crs_type": "authority_code"}).encode()}

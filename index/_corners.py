@@ -48,6 +48,11 @@ def fans(ids: np.ndarray, corner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     Returns ``(fan, size)``: ``fan`` of shape (N, :data:`MAX_FAN`) padded with 0,
     ``size`` the number of cells around each corner.
+
+    Raises
+    ------
+    RuntimeError
+        A walk around a corner did not close (a broken grid: never for valid ids).
     """
     n = ids.shape[0]
     fan = np.zeros((n, MAX_FAN), dtype=np.uint64)
@@ -103,7 +108,13 @@ def format_vertex(owner: int, index: int) -> str:
 
 
 def parse_vertex(vertex: Any) -> tuple[int, int]:
-    """(owner cell id, corner index) of a vertex id, or :class:`DggsValueError` naming it."""
+    """(owner cell id, corner index) of a vertex id, or :class:`DggsValueError` naming it.
+
+    Raises
+    ------
+    DggsValueError
+        ``vertex`` is not of the form ``'<cell>:<0-2>'``.
+    """
     if isinstance(vertex, str) and vertex.count(":") == 1:
         cell, _, idx = vertex.partition(":")
         owner = parse_str(cell)
@@ -113,6 +124,13 @@ def parse_vertex(vertex: Any) -> tuple[int, int]:
 
 
 def check_canonical(vertex: Any, owner: int, index: int) -> None:
+    """Refuse a vertex id that is not the canonical name of its corner.
+
+    Raises
+    ------
+    DggsValueError
+        The corner has another name (the smallest cell around it names it).
+    """
     o, i = vertex_keys(np.array([owner], dtype=np.uint64))
     if int(o[0, index]) != owner or int(i[0, index]) != index:
         raise DggsValueError(

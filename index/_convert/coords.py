@@ -175,7 +175,13 @@ def _first_non_number(arr: np.ndarray) -> Any:
 
 
 def raise_bad_point(lat: np.ndarray, lng: np.ndarray, i: int) -> NoReturn:
-    """Raise :class:`CoordinateError` naming point ``i`` (the kernel gave it the null id)."""
+    """Raise :class:`CoordinateError` naming point ``i`` (the kernel gave it the null id).
+
+    Raises
+    ------
+    CoordinateError
+        Always: naming the non-finite or out-of-range coordinate of point ``i``.
+    """
     a, b = float(lat[i]), float(lng[i])
     if not np.isfinite(a):
         raise CoordinateError(f"latitude {a!r} at index {i} is not a finite number")
@@ -191,7 +197,13 @@ def check_points(lat: np.ndarray, lng: np.ndarray, ids: np.ndarray) -> None:
 
 
 def as_float_scalar(value: Any, name: str) -> float:
-    """A Python float of a numeric scalar (or 0-d array); strings and bools are refused."""
+    """A Python float of a numeric scalar (or 0-d array); strings and bools are refused.
+
+    Raises
+    ------
+    CoordinateError
+        ``value`` is not a number, or too large for a float.
+    """
     if isinstance(value, np.ndarray) and value.ndim == 0:
         value = value[()]
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):

@@ -71,7 +71,13 @@ def value_id(x: Any) -> tuple[int, str | None]:
 
 
 def fail(value: Any, index: int | None, form: str | None, shape: tuple[int, ...] = ()) -> NoReturn:
-    """Raise InvalidCellError naming ``value`` (at ``index``), with the reason it is not an id."""
+    """Raise InvalidCellError naming ``value`` (at ``index``), with the reason it is not an id.
+
+    Raises
+    ------
+    InvalidCellError
+        Always: naming ``value``, where it was and why it is no id.
+    """
     value = value.item() if isinstance(value, np.generic) else value
     f = value_id(value)[1]
     if f is None:

@@ -93,6 +93,11 @@ def arrow_strings(ids: np.ndarray, pa: Any, large: bool = False) -> tuple[Any, i
     """``(array, first_bad)``: a pyarrow ``string`` (``large_string``) Array of ids, the null id 0 as a null.
 
     ``pa`` is the pyarrow module; ``array`` is None when an id is not well formed.
+
+    Raises
+    ------
+    OverflowError
+        Over 2**31 characters of ids for 32-bit offsets (``large`` takes any number).
     """
     ids = np.ascontiguousarray(ids, dtype=np.uint64).reshape(-1)
     codes, bad = format_u8(ids)
