@@ -169,6 +169,10 @@ def _parse_any(obj: Any) -> _Parsed:
     pd, pa = sys.modules.get("pandas"), sys.modules.get("pyarrow")
     if pd is not None and isinstance(obj, pd.Series):
         return _parse_pandas(obj, pd)
+    if pd is not None and isinstance(obj, pd.Index) and not isinstance(obj, pd.MultiIndex):
+        p = _parse_pandas(pd.Series(obj, index=None, name=obj.name), pd)
+        p.kind = replace(p.kind, container="pandas-index", index=None)
+        return p
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _parse_arrow(obj, pa)
     if hasattr(obj, "__array__"):

@@ -63,7 +63,10 @@ def _pylist(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
 def _numpy(ids: np.ndarray, kind: Kind, shape: tuple[int, ...]) -> np.ndarray:
     dt = kind.dtype
     if kind.form == "int":
-        return np.ascontiguousarray(ids.view(np.int64) if dt == I64 else ids).reshape(shape)
+        out = ids.view(np.int64) if dt is not None and dt.kind == "i" else ids
+        if dt is not None and dt.kind in "iu" and out.dtype != dt:
+            out = out.astype(dt)  # the input's byte order: '>i8' in, '>i8' out
+        return np.ascontiguousarray(out).reshape(shape)
     if dt is not None and dt.kind == "S":
         codes, bad = strings.format_u8(ids)
         if bad >= 0:
@@ -80,6 +83,11 @@ def _arrow_values(ids: np.ndarray, kind: Kind, pa: Any) -> Any:
         out, bad = strings.arrow_strings(ids, pa, large=kind.dtype is not None and pa.types.is_large_string(kind.dtype))
         if bad >= 0:
             fail(int(ids[bad]), bad, "int")
+        if kind.dtype is not None and out.type != kind.dtype:  # binary, string_view, dictionary in: the same out
+            try:
+                out = out.cast(kind.dtype)
+            except (pa.ArrowException, NotImplementedError):  # a type strings cannot become: plain strings
+                pass
         return out
     nulls = ids == 0
     return pa.array(ids.view(np.int64) if kind.dtype == pa.int64() else ids, mask=nulls if nulls.any() else None)
@@ -160,6 +168,8 @@ def cells_out(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> An
         return _numpy(ids, kind, kind.shape + trailing)
     if c == "pandas":
         return _pandas(ids, kind, trailing)
+    if c == "pandas-index":
+        return sys.modules["pandas"].Index(_pandas(ids, replace(kind, index=None), trailing), name=kind.name)
     if c == "arrow":
         return _arrow(ids, kind, trailing)
     return _pylist(ids, kind, trailing)

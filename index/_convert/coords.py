@@ -20,8 +20,10 @@ from .kind import OBJECT, Kind
 def _container(obj: Any) -> tuple[str, Any] | None:
     """``(container, the pandas index or whether chunked)`` of a coordinate container; None for a scalar."""
     mod = type(obj).__module__
-    if mod.startswith("pandas") and hasattr(obj, "index"):  # a Series or Index, not pandas' NA or NaT
+    if mod.startswith("pandas") and hasattr(obj, "index"):  # a Series, not pandas' NA or NaT
         return "pandas", obj.index
+    if mod.startswith("pandas") and isinstance(obj, sys.modules["pandas"].Index):
+        return "pandas-index", None
     if mod.startswith("pyarrow"):
         pa = sys.modules["pyarrow"]
         if isinstance(obj, (pa.Array, pa.ChunkedArray)):
@@ -74,6 +76,9 @@ def coords_in(lat: Any, lng: Any) -> tuple[np.ndarray, np.ndarray, Kind]:
                 f"or as many numbers; together they make shape {shape}"
             )
         kind = Kind("pandas", "str", shape, dtype=OBJECT, index=index, name=name)
+    elif found[0] == "pandas-index":
+        name = getattr(lat, "name", None) if _container(lat) else getattr(lng, "name", None)
+        kind = Kind("pandas-index", "str", shape, dtype=OBJECT, name=name) if len(shape) == 1 else Kind("numpy", "str", shape)
     elif found[0] == "arrow":
         kind = Kind("arrow", "str", shape, chunked=bool(found[1]))
     else:
@@ -100,6 +105,8 @@ def _flat_values(obj: Any) -> tuple[np.ndarray, Kind] | None:
     c, extra = found
     if c == "pandas":
         return obj.to_numpy(), Kind("pandas", "int", (len(obj),), index=extra, name=getattr(obj, "name", None))
+    if c == "pandas-index":
+        return obj.to_numpy(), Kind("pandas-index", "int", (len(obj),), name=obj.name)
     if c == "arrow":
         pa = sys.modules["pyarrow"]
         flat = obj.combine_chunks() if isinstance(obj, pa.ChunkedArray) else obj

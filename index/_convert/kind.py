@@ -35,7 +35,7 @@ class Kind:
     """What came into :func:`cells_in`, and what :func:`cells_out` rebuilds.
 
     ``container`` is ``'scalar'``, ``'list'``, ``'tuple'``, ``'numpy'``,
-    ``'pandas'`` or ``'arrow'``; ``form`` is ``'str'`` or ``'int'``;
+    ``'pandas'`` (a Series), ``'pandas-index'`` or ``'arrow'``; ``form`` is ``'str'`` or ``'int'``;
     ``shape`` is the input's shape (``()`` for a scalar); ``dtype`` the numpy
     dtype, pandas dtype or pyarrow type; ``index`` and ``name`` a pandas
     Series' own; ``chunked`` whether a pyarrow ChunkedArray came in.
@@ -98,7 +98,8 @@ def as_form(kind: Kind, form: str) -> Kind:
         return kind
     if kind.scalar:
         return SCALAR_INT if form == "int" else SCALAR_STR
-    dt: Any = {"numpy": U64 if form == "int" else np.dtype("U1"), "pandas": U64 if form == "int" else OBJECT}.get(
+    pandas_dt = U64 if form == "int" else OBJECT
+    dt: Any = {"numpy": U64 if form == "int" else np.dtype("U1"), "pandas": pandas_dt, "pandas-index": pandas_dt}.get(
         kind.container
     )
     if kind.container == "arrow":

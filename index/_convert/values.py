@@ -71,7 +71,7 @@ def values_out(values: np.ndarray, kind: Kind, trailing: tuple[int, ...] = (), r
         A Python scalar (nested tuples with trailing dims) for a scalar; a
         (nested) list for a list or tuple; a numpy array shaped
         ``kind.shape + trailing``; a pandas Series on the input's index (of
-        lists with trailing dims); a pyarrow Array, fixed-size lists with
+        lists with trailing dims), a pandas Index for an Index; a pyarrow Array, fixed-size lists with
         trailing dims, WKB ``binary`` for geometries (a ChunkedArray for a
         ChunkedArray).
 
@@ -103,6 +103,8 @@ def values_out(values: np.ndarray, kind: Kind, trailing: tuple[int, ...] = (), r
         return values.reshape(shape)
     if c == "pandas":
         return _pandas(values, kind, trailing)
+    if c == "pandas-index":
+        return sys.modules["pandas"].Index(_pandas(values, kind, trailing), name=kind.name)
     if c == "arrow":
         return _arrow(values, kind, trailing)
     return values.reshape(shape).tolist()

@@ -83,6 +83,13 @@ ID_KINDS = {
     "arrow-int64": (lambda: pa.array(INTS, pa.int64()), "arrow"),
     "chunked-string": (lambda: pa.chunked_array([CELLS[:1], CELLS[1:]]), "chunked"),
     "chunked-uint64": (lambda: pa.chunked_array([INTS[:1], INTS[1:]], pa.uint64()), "chunked"),
+    "numpy-int64-big-endian": (lambda: np.array(INTS, dtype=">i8"), "numpy"),
+    "pandas-index-object": (lambda: pd.Index(CELLS, name="cells"), "index"),
+    "pandas-index-uint64": (lambda: pd.Index(INTS, dtype="uint64"), "index"),
+    "arrow-string_view": (lambda: pa.array(CELLS, pa.string_view()), "arrow"),
+    "arrow-binary": (lambda: pa.array([c.encode() for c in CELLS], pa.binary()), "arrow"),
+    "arrow-large_binary": (lambda: pa.array([c.encode() for c in CELLS], pa.large_binary()), "arrow"),
+    "arrow-dictionary": (lambda: pa.array(CELLS).dictionary_encode(), "arrow"),
 }
 
 # name -> (call, scalar type, shape): "aligned" (one value per id), "rows" (several values per id),
@@ -156,6 +163,10 @@ def _same_kind(out, kind: str, given, shape: str) -> str | None:
         if shape != "flat" and out.index.tolist() != given.index.tolist():
             return f"expected index {given.index.tolist()}, got {out.index.tolist()}"
         return None
+    if kind == "index":
+        if not isinstance(out, pd.Index):
+            return f"expected a pandas Index, got {type(out).__name__}"
+        return None if shape == "flat" or len(out) == len(given) else f"expected {len(given)} rows, got {len(out)}"
     if kind == "arrow":
         if not isinstance(out, pa.Array):
             return f"expected a pyarrow Array, got {type(out).__name__}"
@@ -200,6 +211,7 @@ COORD_KINDS = {
     "numpy": (lambda v: np.array(v), "numpy"),
     "numpy-2d": (lambda v: np.array(v).reshape(1, 2), "numpy"),
     "pandas": (lambda v: pd.Series(v, index=INDEX, name="coord"), "pandas"),
+    "pandas-index": (lambda v: pd.Index(v, name="coord"), "index"),
     "arrow-float64": (lambda v: pa.array(v, pa.float64()), "arrow"),
     "chunked-float64": (lambda v: pa.chunked_array([v[:1], v[1:]], pa.float64()), "chunked"),
 }
@@ -222,3 +234,25 @@ def test_coordinates_come_back_in_the_kind_given(fname, kname):
         return
     problem = _same_kind(out, kind, lat, "aligned")
     assert problem is None, f"{fname}({kname}): {problem}"
+
+
+# The element type comes back too where the container has one: the same dtype for numpy integers (byte order
+# included) and the same pyarrow type for string-like arrays.
+@pytest.mark.parametrize("dtype", ["<i8", ">i8", "<u8", ">u8"])
+def test_numpy_integer_ids_keep_their_dtype(dtype):
+    ids = np.array(INTS, dtype=dtype)
+    assert dggs.cell_to_parent(ids).dtype == np.dtype(dtype)
+    assert dggs.grid_disk(ids, 1).dtype == np.dtype(dtype)
+
+
+@pytest.mark.parametrize("arrow_type", [pa.string(), pa.large_string(), pa.string_view(), pa.binary(), pa.large_binary()])
+def test_arrow_string_ids_keep_their_type(arrow_type):
+    ids = pa.array(CELLS).cast(arrow_type)
+    assert dggs.cell_to_parent(ids).type == arrow_type
+    assert dggs.compact_cells(ids).type == arrow_type
+
+
+def test_dictionary_ids_come_back_dictionary_encoded():
+    ids = pa.array(CELLS * 3).dictionary_encode()
+    out = dggs.cell_to_parent(ids)
+    assert pa.types.is_dictionary(out.type) and out.dictionary_decode().to_pylist() == [c[:-1] for c in CELLS * 3]
