@@ -213,7 +213,7 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
         v, kind = (obj if strings.valid_int(obj) else 0), SCALAR_INT
     else:
         p = _parse_any(obj)
-        if nulls and p.bad >= 0 and p.kind.form == "int" and p.kind.container == "numpy":
+        if nulls and p.bad >= 0 and isinstance(obj, np.ndarray) and obj.dtype.kind in "iu":  # raw ints kept in place
             p.bad = int(codec.max_level(p.ids)[1])  # the first bad id that is not the null id
         return p.check()
     if not v:
