@@ -24,6 +24,7 @@ Examples
 from __future__ import annotations
 
 import os
+import types
 from collections.abc import Callable
 from typing import Any
 
@@ -94,8 +95,13 @@ class Loops:
         self.__name__ = body.__name__.lstrip("_")
         #: The body compiled without threads (small inputs; the scalar paths).
         self.serial = numba.njit(cache=cache, nogil=True)(body)
-        #: The body compiled with ``parallel=True``.
-        self.threaded = numba.njit(cache=cache, nogil=True, parallel=True)(body)
+        #: The body compiled with ``parallel=True``, from a copy of the function with its own qualified name:
+        #: numba's cache key leaves the ``parallel`` flag out, so one name would share one cache entry and
+        #: whichever version compiled first would serve both.
+        twin = types.FunctionType(body.__code__, body.__globals__, body.__name__, body.__defaults__, body.__closure__)
+        twin.__qualname__ = f"{body.__qualname__}__threaded"
+        twin.__doc__ = body.__doc__
+        self.threaded = numba.njit(cache=cache, nogil=True, parallel=True)(twin)
 
     def __call__(self, n: int, *args: Any) -> Any:
         """Run the body over ``args``, on several threads if ``n`` items of work warrant it."""
