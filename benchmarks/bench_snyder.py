@@ -130,13 +130,13 @@ def run(points: int, repeats: int, threads: int, library: bool = False,
 
     cases: list[tuple[str, str, Callable[..., object], list[np.ndarray], str]] = [
         ("forward", "dggs forward (lat/lng)", snyder.forward, [lat, lng], "fwd"),
-        ("forward", "dggs forward_xyz (core)", numpy_snyder.forward_xyz, [xyz], "fwd"),
+        ("forward", "numpy reference forward_xyz", numpy_snyder.forward_xyz, [xyz], "fwd"),
         ("forward", "PROJ isea forward", lambda a, b: proj().transform(a, b), [lng, lat], "proj"),
     ]
     for m in INVERSE_METHODS:
         cases.append(("inverse", f"dggs inverse {m}",
                       lambda f, a, b, m=m: inverse(f, a, b, m), [face, x, y], m))
-    cases.append(("inverse", "dggs inverse_xyz closed (core)",
+    cases.append(("inverse", "numpy reference inverse_xyz closed",
                   lambda f, a, b: numpy_snyder.inverse_xyz(f, a, b), [face, x, y], "closed"))
     cases.append(("inverse", "PROJ isea inverse",
                   lambda a, b: proj().transform(a, b, direction="INVERSE"), [px, py], "proj"))
