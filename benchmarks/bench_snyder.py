@@ -42,8 +42,8 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 from dggs.experiments import inverse as thesis_inverse
-from dggs.geometry import snyder
 from dggs.experiments import numpy_snyder
+from dggs.geometry import snyder
 from dggs.geometry.icosahedron import latlng_to_xyz
 
 #: thesis §4.1: "a single call of the original Snyder inverse projection can occur within
