@@ -289,8 +289,20 @@ class Connection:
         self.conn.execute("UPDATE meta SET value = ? WHERE key = 'updated'", (now(),))
 
     def set_level(self, level: int) -> None:
-        """Record ``level`` as the stored level, unless one is already set."""
+        """Claim ``level`` as the stored level (inside the caller's write transaction).
+
+        The check before an ingest (:meth:`check_level_for_ingest`) reads the
+        level outside any transaction, so two writers creating one new store
+        can both pass it; the claim is atomic, and the one that commits second
+        sees the first one's level here and stops.
+
+        Raises
+        ------
+        LevelMismatchError
+            If another writer has already claimed another level.
+        """
         self.conn.execute("INSERT OR IGNORE INTO meta (key, value) VALUES ('level', ?)", (str(level),))
+        self.check_level_for_ingest(level)
 
     def check_level_for_ingest(self, level: int) -> None:
         """Check that rows may be ingested at ``level``.
@@ -359,5 +371,24 @@ class Connection:
         if problems != ["ok"]:
             raise StorageError(
                 f"{self.path} is corrupt ({'; '.join(problems[:3])}); restore it from a backup, "
+                "or ingest the inputs again into a new store"
+            )
+        self._check_levels()
+
+    def _check_levels(self) -> None:
+        """Raise StorageError unless every stored cell is at ``meta.level`` (ids have level + 1 characters)."""
+        try:
+            level = self.level
+            with self.snapshot() as table:
+                row = self.conn.execute(
+                    f"SELECT cell FROM {table} WHERE length(cell) != ? LIMIT 1",
+                    (-1 if level is None else level + 1,),
+                ).fetchone()
+        except sqlite3.Error as exc:
+            raise translate(exc, self.path, self.timeout) from exc
+        if row is not None:
+            raise StorageError(
+                f"{self.path} is damaged: it holds cell {row[0]!r} (level {len(row[0]) - 1}) "
+                f"but its meta.level is {level}; restore it from a backup, "
                 "or ingest the inputs again into a new store"
             )

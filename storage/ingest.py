@@ -205,10 +205,9 @@ def run_ingest(
     source_id = source["id"]
     pending = store.pending_count()
     merged = int(conn.execute("SELECT count(*) FROM points").fetchone()[0])
-    missing = {k: v for k, v in declared.items() if k not in column_types(conn)}
-    if missing:  # declared columns exist even if no row arrives
+    if any(k not in column_types(conn) for k in declared):  # declared columns exist even if no row arrives
         with store.transaction():
-            add_columns(conn, missing)
+            _claim_columns(conn, declared, store.path)
     done = source["rows_done"]
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = Producer(
@@ -298,9 +297,7 @@ def _write_batch(
     )
     one = f"(?, ?, ?, {int(source_id)}, ?, {part}{', ?' * len(types)})"
     with store.transaction():
-        if new:
-            have = column_types(conn)
-            add_columns(conn, {k: v for k, v in new.items() if k not in have})
+        _claim_columns(conn, {**types, **new}, store.path)
         store.set_level(level)
         _insert_many(conn, head, one, prepared.rows, _max_variables(conn))
         if prepared.rejects:
@@ -333,6 +330,28 @@ def _write_batch(
                 "this one stopped (nothing stored twice): let the other finish"
             )
         store.touch()
+
+
+def _claim_columns(conn: sqlite3.Connection, wanted: Mapping[str, str], path: str) -> None:
+    """Add the missing value columns, checking the stored ones (inside a write transaction).
+
+    The types were read before the transaction: another writer may have
+    created a column since, with another type, which would silently convert
+    this batch's values (SQLite's type affinity); so they are read again here.
+
+    Raises
+    ------
+    DggsValueError
+        If a stored column has another type than this ingest's.
+    """
+    have = column_types(conn)
+    for name, kind in wanted.items():
+        if name in have and have[name] != sql_type(kind):
+            raise DggsValueError(
+                f"{path}: value column {name!r} is stored as {have[name]}, not {sql_type(kind)} "
+                "(another ingest created it meanwhile); declare its type to match, or use another store"
+            )
+    add_columns(conn, {k: v for k, v in wanted.items() if k not in have})
 
 
 def _max_variables(conn: sqlite3.Connection) -> int:
