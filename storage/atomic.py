@@ -28,7 +28,41 @@ from typing import IO, Any
 
 from dggs.errors import StorageError
 
-__all__ = ["atomic_write", "atomic_path"]
+__all__ = ["atomic_write", "atomic_path", "refuse_store"]
+
+#: The files of a SQLite store in WAL mode: the database, its log and its shared-memory index.
+STORE_FILES = ("", "-wal", "-shm")
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether ``a`` and ``b`` name one file: by inode if both exist, else by resolved path."""
+    try:
+        return os.path.samefile(a, b)  # follows symlinks; hard links too
+    except OSError:
+        return a.resolve() == b.resolve()
+
+
+def refuse_store(target: str | os.PathLike[str], store: str | os.PathLike[str]) -> None:
+    """Refuse to write ``target`` if it is the store file ``store`` or its ``-wal``/``-shm``.
+
+    Compared by device and inode (:func:`os.path.samefile`), so a relative
+    path, a symlink or a hard link to the store is caught; a ``-wal`` or
+    ``-shm`` that does not exist yet is compared by its resolved path.
+
+    Raises
+    ------
+    StorageError
+        Naming ``target``, if writing it would overwrite the store.
+    """
+    if str(store) == ":memory:":
+        return
+    out = Path(target)
+    for suffix in STORE_FILES:
+        if _same_file(out, Path(str(store) + suffix)):
+            raise StorageError(
+                f"cannot write {target}: it is the store {store}{suffix} being read; "
+                "choose another output file"
+            )
 
 
 @contextlib.contextmanager

@@ -259,10 +259,12 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
     Example:
       dggs plot cities.db --level 5 --column population --png map.png
     """
+    from dggs.storage.atomic import refuse_store
     from dggs.storage.plot import plot_cells
 
     stat = stat or ("sum" if column else "count")
     with _open(db) as store:
+        refuse_store(out, store.path)
         rows = store.aggregate(level, column, (stat,) if stat == "count" else ("count", stat))
         path = store.path
     label = f"{stat} of {column}" if column and stat != "count" else "points"

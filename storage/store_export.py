@@ -16,7 +16,7 @@ import dggs
 from dggs._formats import export_format
 
 from . import queries
-from .atomic import atomic_write
+from .atomic import atomic_write, refuse_store
 from .connection import guarded
 
 __all__ = ["ExportMethods"]
@@ -26,6 +26,7 @@ class ExportMethods:
     """``to_geojson``, ``to_arrow`` and ``export`` (mixed into CellStore)."""
 
     aggregate: Any  # provided by CellStore
+    path: str  # provided by CellStore
 
     @guarded
     def to_geojson(
@@ -47,6 +48,8 @@ class ExportMethods:
             If ``level`` is out of range or finer than the stored level.
         DggsValueError
             If a stat is unknown or needs a numeric ``column``.
+        StorageError
+            If ``path`` cannot be written, or is the store itself (or its ``-wal``/``-shm``).
 
         Examples
         --------
@@ -56,6 +59,8 @@ class ExportMethods:
         ...     fc["features"][0]["properties"]["sum"]
         3.0
         """
+        if path is not None:
+            refuse_store(path, self.path)
         rows = self.aggregate(level, column, queries.export_stats(column, stats))
         cells = [row["cell"] for row in rows]
         props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
@@ -129,7 +134,8 @@ class ExportMethods:
             An unknown format or extension, or bad level/column/stats
             (as :meth:`aggregate`).
         StorageError
-            If the file cannot be written.
+            If the file cannot be written, or is the store itself (or its
+            ``-wal``/``-shm`` file, through any link).
 
         Examples
         --------
@@ -141,6 +147,7 @@ class ExportMethods:
         2
         """
         fmt = export_format(path, format)
+        refuse_store(path, self.path)
         if fmt == "geojson":
             return len(self.to_geojson(level, column, path, stats, densify)["features"])
         from dggs.arrow import write_cells

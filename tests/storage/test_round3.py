@@ -13,7 +13,9 @@ import sys
 from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 
+from dggs.cli import main
 from dggs.errors import DggsError, LevelMismatchError, StorageError
 from dggs.storage import CellStore
 
@@ -85,3 +87,53 @@ def test_two_cli_writers_at_two_levels(tmp_path):
     with CellStore(db, readonly=True) as store:
         store.check()
         assert store.count() == 3000
+
+
+# -- item 2: an export never overwrites the store it reads ------------------
+
+
+@pytest.fixture
+def small_store(tmp_path):
+    path = tmp_path / "s.gpkg"  # a store with another format's extension
+    with CellStore(path) as store:
+        store.ingest_records([{"lat": 1.0, "lng": 2.0}, {"lat": 40.0, "lng": -3.0}], level=5)
+    return path
+
+
+def _alias(store: Path, how: str, tmp_path: Path) -> Path:
+    if how == "same":
+        return store
+    if how in ("-wal", "-shm"):
+        return Path(str(store) + how)
+    if how == "relative":
+        return Path("..") / store.parent.name / store.name
+    link = tmp_path / f"link-{how}.geojson"
+    if how == "symlink":
+        link.symlink_to(store)
+    else:
+        link.hardlink_to(store)
+    return link
+
+
+@pytest.mark.parametrize("how", ["same", "-wal", "-shm", "relative", "symlink", "hardlink"])
+@pytest.mark.parametrize("fmt", ["geojson", "geoparquet", "gpkg"])
+def test_export_refuses_its_own_store(small_store, tmp_path, how, fmt, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    before = small_store.read_bytes()
+    out = _alias(small_store, how, tmp_path)
+    result = CliRunner().invoke(main, ["export", str(small_store), "--level", "2", "-o", str(out), "--format", fmt])
+    assert result.exit_code == 1, result.output
+    assert "is the store" in result.output and len(result.output.strip().splitlines()) == 1
+    assert small_store.read_bytes() == before
+    with CellStore(small_store, readonly=True) as store:
+        store.check()
+        assert store.count() == 2
+    with CellStore(small_store) as store, pytest.raises(StorageError, match="is the store"):
+        store.to_geojson(2, path=out)
+
+
+def test_plot_refuses_its_own_store(small_store):
+    before = small_store.read_bytes()
+    result = CliRunner().invoke(main, ["plot", str(small_store), "--level", "2", "--png", str(small_store)])
+    assert result.exit_code == 1 and "is the store" in result.output, result.output
+    assert small_store.read_bytes() == before
