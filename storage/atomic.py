@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -28,7 +29,7 @@ from typing import IO, Any
 
 from dggs.errors import StorageError
 
-__all__ = ["atomic_write", "atomic_path", "refuse_store"]
+__all__ = ["atomic_write", "atomic_path", "refuse_store", "remove_stale"]
 
 #: The files of a SQLite store in WAL mode: the database, its log and its shared-memory index.
 STORE_FILES = ("", "-wal", "-shm")
@@ -65,6 +66,63 @@ def refuse_store(target: str | os.PathLike[str], store: str | os.PathLike[str]) 
             )
 
 
+def _mode_for(target: Path) -> int:
+    """The permission bits ``target`` gets: its own if it exists, else 0o666 less the umask (as ``open``)."""
+    try:
+        return stat.S_IMODE(os.stat(target).st_mode)
+    except OSError:
+        pass
+    mask = os.umask(0o022)  # the only portable way to read the umask is to set it
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+def _prefix(target: Path) -> str:
+    """Temporary names: ``.NAME.PID-RANDOM.tmp``, so a later run can tell a dead writer's leftovers."""
+    return f".{target.name}.{os.getpid()}-"
+
+
+def _writer_alive(name: str, target: Path) -> bool:
+    """Whether the temporary file ``name`` of ``target`` belongs to a running process."""
+    middle = name[len(target.name) + 2 : -len(".tmp")]
+    pid = middle.split("-", 1)[0]
+    if "-" not in middle or not pid.isdigit():
+        return False  # an older run's name (no pid): its writer has gone
+    try:
+        os.kill(int(pid), 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # exists, owned by someone else
+        return True
+    return True
+
+
+def remove_stale(target: str | os.PathLike[str]) -> list[str]:
+    """Remove the temporary files (or folders) a killed writer of ``target`` left; return their names.
+
+    Only names this module makes for ``target`` (``.NAME.*.tmp`` beside it)
+    whose process is gone; a running writer's file is kept.
+    """
+    path = Path(target)
+    folder = path.parent if str(path.parent) else Path(".")
+    removed: list[str] = []
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        return removed
+    for name in names:
+        if not (name.startswith(f".{path.name}.") and name.endswith(".tmp")) or _writer_alive(name, path):
+            continue
+        stale = folder / name
+        with contextlib.suppress(OSError):
+            if stale.is_dir() and not stale.is_symlink():
+                shutil.rmtree(stale)
+            else:
+                stale.unlink()
+            removed.append(name)
+    return removed
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike[str], suffix: str = "", keep_name: bool = False) -> Iterator[str]:
     """Yield a temporary path next to ``path``; rename it over ``path`` on success.
@@ -73,7 +131,11 @@ def atomic_path(path: str | os.PathLike[str], suffix: str = "", keep_name: bool 
     ``keep_name`` the temporary file has ``path``'s own name, in a fresh
     hidden folder beside it (for writers such as GDAL that choose the format
     from the extension and refuse an existing empty file); the folder and
-    anything the writer left in it are removed afterwards.
+    anything the writer left in it are removed afterwards.  The file gets
+    the mode an existing ``path`` has, else the one ``open`` would give it
+    (0o666 less the umask), whatever mode the writer chose.  Temporary files
+    of an earlier writer of ``path`` that was killed are removed first
+    (:func:`remove_stale`).
 
     Raises
     ------
@@ -84,12 +146,14 @@ def atomic_path(path: str | os.PathLike[str], suffix: str = "", keep_name: bool 
     """
     target = Path(path)
     folder = None
+    remove_stale(target)
     try:
+        mode = _mode_for(target)
         if keep_name:
-            folder = tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
+            folder = tempfile.mkdtemp(prefix=_prefix(target), suffix=".tmp", dir=target.parent or ".")
             tmp = os.path.join(folder, target.name)
         else:
-            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix + ".tmp", dir=target.parent or ".")
+            fd, tmp = tempfile.mkstemp(prefix=_prefix(target), suffix=suffix + ".tmp", dir=target.parent or ".")
             os.close(fd)
     except OSError as exc:
         raise StorageError(f"cannot write {path}: {exc.strerror or exc}") from exc
@@ -97,6 +161,7 @@ def atomic_path(path: str | os.PathLike[str], suffix: str = "", keep_name: bool 
         yield tmp
         with open(tmp, "rb+") as fh:
             os.fsync(fh.fileno())
+            os.fchmod(fh.fileno(), mode)
         os.replace(tmp, target)
     except OSError as exc:
         raise StorageError(

@@ -7,7 +7,9 @@ value (on the command line: one line, a non-zero exit).
 
 from __future__ import annotations
 
+import os
 import sqlite3
+import stat
 import subprocess
 import sys
 from pathlib import Path
@@ -18,6 +20,7 @@ from click.testing import CliRunner
 from dggs.cli import main
 from dggs.errors import DggsError, LevelMismatchError, StorageError
 from dggs.storage import CellStore
+from dggs.storage.atomic import atomic_write
 
 from .helpers import write_csv
 
@@ -137,3 +140,55 @@ def test_plot_refuses_its_own_store(small_store):
     result = CliRunner().invoke(main, ["plot", str(small_store), "--level", "2", "--png", str(small_store)])
     assert result.exit_code == 1 and "is the store" in result.output, result.output
     assert small_store.read_bytes() == before
+
+
+# -- item 8: outputs respect the umask; stale temporary files are removed ----
+
+
+@pytest.fixture
+def umask():
+    def set_(mask: int) -> None:
+        os.umask(mask)
+
+    old = os.umask(0o022)
+    yield set_
+    os.umask(old)
+
+
+@pytest.mark.parametrize("mask", [0o022, 0o002, 0o077])
+@pytest.mark.parametrize("name", ["out.geojson", "out.parquet", "out.gpkg", "map.png"])
+def test_outputs_respect_the_umask(small_store, tmp_path, umask, mask, name):
+    umask(mask)
+    out = tmp_path / name
+    args = ["plot", str(small_store), "--level", "2", "--png"] if name.endswith(".png") else [
+        "export", str(small_store), "--level", "2", "-o"]
+    result = CliRunner().invoke(main, [*args, str(out)])
+    assert result.exit_code == 0, result.output
+    assert stat.S_IMODE(out.stat().st_mode) == 0o666 & ~mask
+
+
+def test_atomic_write_keeps_an_existing_files_mode(tmp_path, umask):
+    out = tmp_path / "kept.txt"
+    out.write_text("old")
+    out.chmod(0o640)
+    with atomic_write(out) as fh:
+        fh.write("new")
+    assert out.read_text() == "new" and stat.S_IMODE(out.stat().st_mode) == 0o640
+
+
+def test_stale_temporary_files_are_removed_on_the_next_export(small_store, tmp_path):
+    out = tmp_path / "cells.geojson"
+    dead = subprocess.Popen([sys.executable, "-c", "pass"])
+    dead.wait()
+    stale = [tmp_path / ".cells.geojson.k2j4h5x1.tmp", tmp_path / f".cells.geojson.{dead.pid}-abc.tmp"]
+    for path in stale:
+        path.write_bytes(b"x" * 1000)
+    (tmp_path / ".cells.geojson.q9w8e7r6.tmp").mkdir()  # a killed GPKG export's folder
+    (tmp_path / ".cells.geojson.q9w8e7r6.tmp" / "cells.geojson").write_text("half")
+    alive = tmp_path / f".cells.geojson.{os.getppid()}-def.tmp"  # a running export's file
+    alive.write_bytes(b"y")
+    other = tmp_path / ".other.geojson.k2j4h5x1.tmp"  # another output's: not ours to remove
+    other.write_bytes(b"z")
+    result = CliRunner().invoke(main, ["export", str(small_store), "--level", "2", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == sorted([alive.name, other.name])
