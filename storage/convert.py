@@ -293,8 +293,15 @@ def prepare(
     if transformer is not None:
         ok = np.isfinite(lat) & np.isfinite(lng)
         x, y = transformer.transform(np.where(ok, lng, 0.0), np.where(ok, lat, 0.0))
+        # pyproj clamps what lies outside a projection's domain (EPSG:3857's (1e20, 1e20) gives
+        # lat 90): a point that does not transform back to itself was never in the CRS.
+        bx, by = transformer.transform(x, y, direction="INVERSE")
+        with np.errstate(invalid="ignore"):
+            back = np.isclose(bx, np.where(ok, lng, 0.0), rtol=1e-9, atol=1e-6) & np.isclose(
+                by, np.where(ok, lat, 0.0), rtol=1e-9, atol=1e-6
+            )
         lng, lat = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
-        failed = ok & ~(np.isfinite(lat) & np.isfinite(lng))
+        failed = ok & ~(np.isfinite(lat) & np.isfinite(lng) & back)
         for i in np.flatnonzero(failed).tolist():
             lat_bad.setdefault(i, ("lat", (batch.lat[i], batch.lng[i]), "cannot be transformed to WGS84"))
     with np.errstate(invalid="ignore"):

@@ -82,6 +82,11 @@ def _not_text(path: str | Path, encoding: str, line: int, reason: str) -> DggsVa
 
 def _arrow_error(path: str | Path, encoding: str, line: int, exc: Exception) -> DggsValueError:
     text = str(exc)
+    if "straddl" in text:  # a record longer than pyarrow's block
+        return DggsValueError(
+            f"{path}, line {line + 1}: a record longer than {BLOCK_SIZE >> 20} MiB "
+            "(a field that long is most likely an unclosed quote or not CSV at all)"
+        )
     if "UTF8" in text or "UTF-8" in text or isinstance(exc, UnicodeDecodeError):
         return _not_text(path, encoding, line, "invalid UTF8 data" if "UTF8" in text else text)
     return DggsValueError(f"{path} is not a readable CSV file (after line {line}): {text}")
@@ -119,8 +124,11 @@ def csv_header(path: str | Path, delimiter: str = ",", encoding: str = "utf-8") 
             end = data.find(b"\n", end) + 1 or len(data)
             if end == len(data) and not whole:
                 break
+            head = data[:end]
+            if whole and end == len(data) and not head.endswith((b"\n", b"\r")):
+                head += b"\n"  # a header-only file without its final newline is still a header
             try:
-                table = pacsv.read_csv(pa.BufferReader(data[:end]), **_options(delimiter, "utf-8", lambda row: "skip"))
+                table = pacsv.read_csv(pa.BufferReader(head), **_options(delimiter, "utf-8", lambda row: "skip"))
             except (pa.ArrowInvalid, UnicodeDecodeError) as exc:
                 if "Empty CSV file" in str(exc) and whole and end == len(data):
                     raise DggsValueError(f"{path} is empty (no header row)") from None
@@ -205,6 +213,12 @@ def csv_batches(
     header = csv_header(path, delimiter, encoding)
     wanted = [lat, lng, *values]
     readers.check_columns(path, header, wanted)
+    for name in dict.fromkeys(wanted):
+        if header.count(name) > 1:
+            raise DggsValueError(
+                f"{path} has column {name!r} twice in its header ({', '.join(map(repr, header))}); "
+                "rename one of them"
+            )
     index = [header.index(name) for name in wanted]
     need = max(index) + 1
     types = types if types is not None else {}
@@ -222,6 +236,8 @@ def csv_batches(
     except (pa.ArrowInvalid, UnicodeDecodeError) as exc:
         if line_file is not None:
             line_file.close()
+        if "Empty CSV file" in str(exc):  # the header (read above) without a final newline: no rows
+            return
         raise _arrow_error(path, encoding, 0, exc) from exc
     state = {"record": 0, "line": header_lines}  # records and lines read so far
 

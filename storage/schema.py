@@ -73,7 +73,7 @@ POINT_TABLES = ("points", "points_pending")
 SQL_TYPES = {"INTEGER": "INTEGER", "REAL": "REAL", "TEXT": "TEXT"}
 _PY_TYPES = {int: "INTEGER", float: "REAL", str: "TEXT", bool: "INTEGER"}
 
-_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # used with fullmatch: "$" would let "cell\n" through
 
 # ``points`` is clustered on the cell id (WITHOUT ROWID, primary key led by
 # ``cell``): a descendant query reads one contiguous key range, a roll-up
@@ -190,7 +190,7 @@ def check_column_name(name: object) -> str:
     ...
     dggs.errors.DggsValueError: value column 'cell' clashes with a built-in column ...
     """
-    if not isinstance(name, str) or not _NAME.match(name):
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
         raise DggsValueError(
             f"value column name {name!r} is not a plain identifier "
             "(letters, digits and _, not starting with a digit)"

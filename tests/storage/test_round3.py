@@ -18,8 +18,8 @@ import pytest
 from click.testing import CliRunner
 
 from dggs.cli import main
-from dggs.errors import DggsError, LevelMismatchError, StorageError
-from dggs.storage import CellStore
+from dggs.errors import DggsError, DggsValueError, LevelMismatchError, StorageError
+from dggs.storage import BadRowError, CellStore, RejectedRowsWarning
 from dggs.storage.atomic import atomic_write
 
 from .helpers import write_csv
@@ -192,3 +192,70 @@ def test_stale_temporary_files_are_removed_on_the_next_export(small_store, tmp_p
     result = CliRunner().invoke(main, ["export", str(small_store), "--level", "2", "-o", str(out)])
     assert result.exit_code == 0, result.output
     assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == sorted([alive.name, other.name])
+
+
+# -- item 17: CSV rules -------------------------------------------------------
+
+
+def _csv(tmp_path: Path, text: str, name: str = "in.csv") -> Path:
+    path = tmp_path / name
+    path.write_text(text, newline="")
+    return path
+
+
+def _rows(store: CellStore) -> list[dict]:
+    return sorted(store.descendants(list("ABCDEFGHIJ")), key=lambda r: r["row"])
+
+
+def test_nan_is_missing_and_infinity_a_bad_row_in_every_input(tmp_path):
+    """The one rule (docs/storage.md): NaN is a missing value (NULL), +-inf a bad row."""
+    with CellStore() as store:
+        store.ingest_csv(_csv(tmp_path, "lat,lng,v\n1,2,nan\n3,4,NaN\n5,6,1.5\n"), values=["v"], level=5)
+        store.ingest_records([{"lat": 1, "lng": 2, "v": float("nan")}], values=["v"], level=5)
+        store.ingest_points([1.0], [2.0], 5, {"v": [float("nan")]})
+        assert sorted(r["v"] is None for r in _rows(store)) == [False, True, True, True, True]
+        for spelling in ("inf", "-inf", "Infinity"):
+            with pytest.raises(BadRowError, match="not finite"):
+                store.ingest_csv(_csv(tmp_path, f"lat,lng,v\n1,2,{spelling}\n", f"{spelling}.csv"), values=["v"])
+        with pytest.raises(BadRowError, match="not finite"):
+            store.ingest_records([{"lat": 1, "lng": 2, "v": float("inf")}], values=["v"])
+        with pytest.raises(BadRowError, match="not finite"):
+            store.ingest_points([1.0], [2.0], 5, {"v": [float("-inf")]})
+
+
+def test_a_duplicate_header_is_refused(tmp_path):
+    with CellStore() as store, pytest.raises(DggsValueError, match="'lat' twice"):
+        store.ingest_csv(_csv(tmp_path, "lat,lat,lng\n1,2,3\n"), level=5)
+    with CellStore() as store:  # a duplicate column that is not used is harmless
+        assert store.ingest_csv(_csv(tmp_path, "lat,lng,x,x\n1,2,3,4\n", "x.csv"), level=5).rows_inserted == 1
+
+
+@pytest.mark.parametrize("name", ["cell\n", "v\n", "v\r", " v", "v "])
+def test_a_value_column_name_with_a_trailing_newline_is_refused(tmp_path, name):
+    with CellStore() as store, pytest.raises(DggsValueError, match="not a plain identifier"):
+        store.ingest_records([{"lat": 1.0, "lng": 2.0, name: 3}], values=[name], level=5)
+
+
+@pytest.mark.parametrize("text", ["lat,lng,v", "lat,lng,v\n", "lat,lng,v\r\n"])
+def test_a_header_only_file_is_no_rows_not_empty(tmp_path, text):
+    with CellStore() as store:
+        result = store.ingest_csv(_csv(tmp_path, text), values=["v"], level=5)
+        assert (result.rows_read, result.rows_inserted) == (0, 0)
+        assert store.columns == {"v": "TEXT"} or "v" not in store.columns
+
+
+def test_a_field_longer_than_a_block_is_named_by_its_line(tmp_path):
+    big = "x" * (5 << 20)
+    path = _csv(tmp_path, f"lat,lng,v\n1,2,a\n3,4,b\n1,2,{big}\n3,4,y\n")
+    with CellStore() as store, pytest.raises(DggsValueError, match=r"line 4") as info:
+        store.ingest_csv(path, values=["v"], level=5)
+    assert "straddl" not in str(info.value) and "in.csv" in str(info.value)
+
+
+def test_projected_coordinates_outside_the_crs_are_bad_rows(tmp_path):
+    path = _csv(tmp_path, "lat,lng\n1e20,1e20\n5000,6000\n-2e7,3e7\n")
+    with CellStore() as store, pytest.warns(RejectedRowsWarning):
+        result = store.ingest_csv(path, level=5, crs="EPSG:3857", on_error="skip")
+        assert (result.rows_inserted, result.rows_rejected) == (1, 2)
+        (row,) = _rows(store)
+        assert row["row"] == 2 and abs(row["lat"]) < 1 and abs(row["lng"]) < 1
