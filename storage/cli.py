@@ -133,6 +133,10 @@ def bin_(
     show = sys.stderr.isatty() if progress is None else progress
     total = count_csv_rows(input_path) if (show and kind == "csv") else None
     bar = tqdm(total=total, unit=" rows", unit_scale=True, disable=not show, desc="binning", file=sys.stderr)
+    if kind == "csv":  # checked before the store is created: a typo leaves no empty store behind
+        from dggs.storage.inputs import check_csv
+
+        check_csv(input_path, lat, lng, declared, encoding=encoding)
     with CellStore(db) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(

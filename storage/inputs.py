@@ -72,6 +72,34 @@ def _identity(store: Connection, kind: str, file: Path, name: str, replace: bool
     return find_earlier_version(store, kind, name, file, info, replace)
 
 
+def check_csv(
+    path: str | os.PathLike[str], lat: str, lng: str, values: Values, delimiter: str = ",", encoding: str = "utf-8"
+) -> tuple[Path, list[str], dict[str, Any]]:
+    """Check a CSV input without a store: encoding, delimiter, header; return the file and value spec.
+
+    ``dggs bin`` calls it before it creates the store, so a typo in ``--lat``
+    leaves no empty store file behind.
+
+    Raises
+    ------
+    DggsValueError
+        If ``encoding`` is unknown or ``delimiter`` is not one plain character, or a column is missing.
+    StorageError
+        If ``path`` does not exist.
+    """
+    file = _source_file(path)
+    try:
+        codecs.lookup(encoding)
+    except (LookupError, TypeError):
+        raise DggsValueError(f"unknown text encoding {encoding!r} (e.g. utf-8, latin-1, cp1252)") from None
+    if not isinstance(delimiter, str) or len(delimiter) != 1 or delimiter in '"\r\n':
+        raise DggsValueError(f"delimiter must be one character (not a quote or newline), not {delimiter!r}")
+    names, declared = value_spec(values)
+    header = readers_csv.csv_header(file, delimiter, encoding)
+    readers.check_columns(file, header, [lat, lng, *names])
+    return file, names, declared
+
+
 def ingest_csv(
     store: Connection,
     path: str | os.PathLike[str],
@@ -94,17 +122,8 @@ def ingest_csv(
     StorageError
         If ``path`` does not exist.
     """
-    file = _source_file(path)
-    try:
-        codecs.lookup(encoding)
-    except (LookupError, TypeError):
-        raise DggsValueError(f"unknown text encoding {encoding!r} (e.g. utf-8, latin-1, cp1252)") from None
-    if not isinstance(delimiter, str) or len(delimiter) != 1 or delimiter in '"\r\n':
-        raise DggsValueError(f"delimiter must be one character (not a quote or newline), not {delimiter!r}")
+    file, names, declared = check_csv(path, lat, lng, values, delimiter, encoding)  # before the source is registered
     level = store.resolve_level(level)
-    names, declared = value_spec(values)
-    header = readers_csv.csv_header(file, delimiter, encoding)
-    readers.check_columns(file, header, [lat, lng, *names])  # before the source is registered
     info = _identity(store, "csv", file, str(path), options.replace)
     batch_size = options.batch_size
     return run_ingest(

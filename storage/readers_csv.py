@@ -137,7 +137,12 @@ def csv_header(path: str | Path, delimiter: str = ",", encoding: str = "utf-8") 
         if table is None:
             size *= 4
             continue
-        return list(table.schema.names)
+        try:
+            return list(table.schema.names)
+        except UnicodeDecodeError as exc:  # the header is not UTF-8: the input file, not the store
+            utf16 = data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE))
+            hint = "; it looks like UTF-16: pass encoding='utf-16'" if utf16 else ""
+            raise _not_text(path, encoding, 0, exc.reason + hint) from None
 
 
 def _may_have_blank_lines(path: str | Path) -> bool:

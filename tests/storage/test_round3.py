@@ -259,3 +259,27 @@ def test_projected_coordinates_outside_the_crs_are_bad_rows(tmp_path):
         assert (result.rows_inserted, result.rows_rejected) == (1, 2)
         (row,) = _rows(store)
         assert row["row"] == 2 and abs(row["lat"]) < 1 and abs(row["lng"]) < 1
+
+
+# -- item 16: messages that name the right thing ------------------------------
+
+
+@pytest.mark.parametrize("content", [
+    "lat,lng\n1,2\n".encode("utf-16"),
+    bytes(range(256)) * 12,
+])
+def test_a_csv_that_is_not_text_is_named_not_the_store(tmp_path, content):
+    path = tmp_path / "u.csv"
+    path.write_bytes(content)
+    db = tmp_path / "u.db"
+    result = CliRunner().invoke(main, ["bin", str(path), "--db", str(db), "--level", "5", "--no-progress"])
+    assert result.exit_code == 1 and "u.csv" in result.output and "corrupt" not in result.output, result.output
+    assert len(result.output.strip().splitlines()) == 1
+
+
+def test_a_failed_bin_leaves_no_empty_store(tmp_path):
+    path = _csv(tmp_path, "lat,lng\n1,2\n")
+    db = tmp_path / "new.db"
+    result = CliRunner().invoke(main, ["bin", str(path), "--db", str(db), "--lat", "nope", "--no-progress"])
+    assert result.exit_code == 1 and "'nope'" in result.output, result.output
+    assert not db.exists() and list(tmp_path.iterdir()) == [path]
