@@ -15,13 +15,38 @@ import pandas as pd
 from dggs.errors import CoordinateError, DggsValueError
 from dggs.index.hierarchy import get_level, is_valid_cell
 
-__all__ = ["Cells", "ColumnError", "first_true", "frame_coordinates", "geometry_name", "geopandas_module", "is_geo", "row_label"]
+__all__ = ["Cells", "ColumnError", "CrsError", "first_true", "in_wgs84", "frame_coordinates", "geometry_name", "geopandas_module", "is_geo", "row_label"]
 
 _CELL_COLUMN = re.compile(r"^cell_\d+$")
 
 
 class ColumnError(DggsValueError):
     """A column the accessor needs is not in the frame (or the choice is ambiguous)."""
+
+
+class CrsError(DggsValueError):
+    """A geometry's CRS has no transformation to WGS84 (EPSG:4326), the grid's coordinates."""
+
+
+def in_wgs84(geoms: Any) -> Any:
+    """A GeoSeries in EPSG:4326: reprojected from its CRS (pyproj, through ``GeoSeries.to_crs``).
+
+    A series without a CRS is taken as lng/lat degrees, as shapely geometries are.
+
+    Raises
+    ------
+    CrsError
+        The CRS has no transformation to EPSG:4326 (another body, a local engineering CRS).
+    """
+    crs = geoms.crs
+    if crs is None or crs.equals("EPSG:4326"):
+        return geoms
+    from pyproj.exceptions import CRSError, ProjError
+
+    try:
+        return geoms.to_crs("EPSG:4326")
+    except (CRSError, ProjError) as exc:
+        raise CrsError(f"the geometry's CRS {crs.name!r} ({crs.to_string()}) has no transformation to EPSG:4326") from exc
 
 
 def geopandas_module() -> Any:

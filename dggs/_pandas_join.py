@@ -48,7 +48,7 @@ def sjoin_cells(
     Parameters
     ----------
     polygons : GeoDataFrame
-        Polygon features (any CRS; filled in EPSG:4326).
+        Polygon features (any CRS with a transformation to EPSG:4326; filled there).
     level : int
         The cells' level: the join's resolution (see :func:`dggs.cell_area`).
     mode : {"center", "contains", "overlaps"}
@@ -77,6 +77,8 @@ def sjoin_cells(
     ------
     DggsValueError
         An unknown ``mode`` or ``how``, or bad points or polygons (naming the row).
+    CrsError
+        Points or polygons in a CRS without a transformation to EPSG:4326 (names the CRS).
 
     Examples
     --------

@@ -18,7 +18,9 @@ keeps the frame's index and returns a new frame:
 Methods that read cells take ``column=None`` to mean: the only column named
 ``cell_<level>`` if there is exactly one, else the index.  Bad input raises
 the library's typed errors (all :class:`dggs.DggsValueError`), naming the row
-label; a missing column raises :class:`ColumnError`.
+label; a missing column raises :class:`ColumnError`.  Geometries with a CRS
+are reprojected to EPSG:4326 (pyproj); a CRS without a transformation raises
+:class:`CrsError`.
 
 Examples
 --------
@@ -50,15 +52,17 @@ from . import _pandas_join as _join  # noqa: E402 - after the extra's check
 from ._pandas_frames import (  # noqa: E402
     Cells,
     ColumnError,
+    CrsError,
     first_true,
     frame_coordinates,
     geometry_name,
     geopandas_module,
+    in_wgs84,
     is_geo,
     row_label,
 )
 
-__all__ = ["DggsAccessor", "ColumnError"]
+__all__ = ["DggsAccessor", "ColumnError", "CrsError"]
 
 _MODES = ("center", "contains", "overlaps")
 
@@ -87,7 +91,8 @@ class DggsAccessor:
             Subdivision level, 0..MAX_LEVEL.
         lat, lng : str
             Columns of latitude and longitude (WGS84 degrees).  A GeoDataFrame
-            of points that has neither column uses its geometry (x = lng, y = lat).
+            of points that has neither column uses its geometry (x = lng, y = lat),
+            reprojected from its CRS to EPSG:4326 first.
         column : str, optional
             Name of the new column (default ``f"cell_{level}"``); an existing
             column of that name is replaced.
@@ -102,6 +107,8 @@ class DggsAccessor:
         ------
         ColumnError
             ``lat`` or ``lng`` is not a column.
+        CrsError
+            The geometry's CRS has no transformation to EPSG:4326 (names the CRS).
         CoordinateError
             A missing, non-numeric or out-of-range coordinate (names the row).
         LevelError
@@ -123,7 +130,7 @@ class DggsAccessor:
         df = self._df
         name = column if column is not None else f"cell_{level}"
         if lat not in df.columns and lng not in df.columns and is_geo(df):
-            geom = df.geometry
+            geom = in_wgs84(df.geometry)
             if len(df) and not (geom.geom_type == "Point").all():
                 raise ColumnError(f"no columns {lat!r}, {lng!r} and the geometry is not all points")
             lat_a = np.asarray(geom.y, dtype=np.float64)
@@ -316,6 +323,8 @@ class DggsAccessor:
             unknown ``mode``.
         ColumnError
             A frame without an active geometry column (a :class:`DggsValueError`).
+        CrsError
+            The geometry's CRS has no transformation to EPSG:4326 (names the CRS).
         TooManyCellsError
             A feature would have more than ``max_cells`` cells.
 
@@ -337,9 +346,7 @@ class DggsAccessor:
         df = self._df
         if not is_geo(df):
             raise ColumnError("polyfill needs a GeoDataFrame with an active geometry column")
-        geoms = df.geometry
-        if geoms.crs is not None and not geoms.crs.equals("EPSG:4326"):
-            geoms = geoms.to_crs("EPSG:4326")
+        geoms = in_wgs84(df.geometry)
         name = column if column is not None else f"cell_{level}"
         found: list[np.ndarray] = []
         for i, geom in enumerate(geoms.array):

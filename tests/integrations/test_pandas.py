@@ -424,3 +424,47 @@ def test_sjoin_cells_left_keeps_every_point_and_checks_arguments():
     geo_points = gpd.GeoDataFrame({"v": [1]}, geometry=[Point(5.0, 20.0)], crs="EPSG:4326")
     joined = geo_points.dggs.sjoin_cells(polys, 6)
     assert isinstance(joined, gpd.GeoDataFrame) and joined["name"].tolist() == ["box"]
+
+
+# -- issue 17: coordinates in another CRS, column clashes, typed errors --------------------------
+
+_ENGINEERING = (  # a local engineering CRS: no transformation to WGS84 exists
+    'ENGCRS["site grid",EDATUM["site"],CS[Cartesian,2],AXIS["x",east,LENGTHUNIT["metre",1]],'
+    'AXIS["y",north,LENGTHUNIT["metre",1]]]'
+)
+
+
+def test_latlng_to_cell_reprojects_points_in_another_crs():
+    # 20N 10E in Web Mercator metres, converted by pyproj here (the oracle), not by the accessor
+    from pyproj import Transformer
+
+    x, y = Transformer.from_crs(4326, 3857, always_xy=True).transform([10.0, -70.0], [20.0, 45.0])
+    gdf = gpd.GeoDataFrame({"v": [1, 2]}, geometry=gpd.points_from_xy(x, y), crs=3857)
+    got = gdf.dggs.latlng_to_cell(9)
+    assert got["cell_9"].tolist() == dggs.latlng_to_cell([20.0, 45.0], [10.0, -70.0], 9)
+    assert got.crs.to_epsg() == 3857 and got.geometry.equals(gdf.geometry)  # the frame's own geometry kept
+    # the same points as degrees in another geographic CRS (NAD83 differs from WGS84 by < 2 m)
+    nad83 = gpd.GeoDataFrame(geometry=gpd.points_from_xy([10.0, -70.0], [20.0, 45.0]), crs=4269)
+    assert nad83.dggs.latlng_to_cell(9)["cell_9"].tolist() == got["cell_9"].tolist()
+
+
+def test_points_or_polygons_in_a_crs_without_transform_raise_naming_the_crs():
+    pts = gpd.GeoDataFrame(geometry=gpd.points_from_xy([10.0], [20.0]), crs=_ENGINEERING)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        pts.dggs.latlng_to_cell(9)
+    polys = gpd.GeoDataFrame({"name": ["a"]}, geometry=[box(0, 0, 10, 10)], crs=_ENGINEERING)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        polys.dggs.polyfill(4)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        pd.DataFrame({"lat": [1.0], "lng": [2.0]}).dggs.sjoin_cells(polys, 4)
+    assert issubclass(dggs.pandas.CrsError, dggs.DggsValueError)
+
+
+def test_sjoin_cells_reprojects_projected_points_and_polygons():
+    pts, polys = _join_fixture()
+    want = pts.dggs.sjoin_cells(polys.iloc[:1], 5)
+    geo = gpd.GeoDataFrame(pts[["name"]], geometry=gpd.points_from_xy(pts["lng"], pts["lat"]), crs=4326)
+    sel = geo[(geo.geometry.y.abs() < 80)]  # inside Web Mercator's range
+    got = sel.to_crs(3857).dggs.sjoin_cells(polys.iloc[:1].set_crs(4326).to_crs(3857), 5)
+    assert list(got.index) == [i for i in want.index if i in sel.index]
+    assert got["cell_5"].tolist() == want.loc[got.index, "cell_5"].tolist()
