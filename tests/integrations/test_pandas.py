@@ -468,3 +468,20 @@ def test_sjoin_cells_reprojects_projected_points_and_polygons():
     got = sel.to_crs(3857).dggs.sjoin_cells(polys.iloc[:1].set_crs(4326).to_crs(3857), 5)
     assert list(got.index) == [i for i in want.index if i in sel.index]
     assert got["cell_5"].tolist() == want.loc[got.index, "cell_5"].tolist()
+
+
+def test_sjoin_cells_never_overwrites_a_column_of_either_frame():
+    pts = pd.DataFrame({"lat": [5.0, 6.0], "lng": [5.0, 6.0], "name": ["p", "q"], "name_right": ["mine", "too"]})
+    polys = gpd.GeoDataFrame({"name": ["box"], "_row": [7]}, geometry=[box(0, 0, 10, 10)], crs=4326)
+    # the suffixed name is taken by this frame: refused, naming it (pandas' merge refuses such suffixes too)
+    with pytest.raises(dggs.DggsValueError, match="'name_right'"):
+        pts.dggs.sjoin_cells(polys, 5)
+    got = pts.dggs.sjoin_cells(polys, 5, rsuffix="poly")  # another suffix joins
+    assert got["name_right"].tolist() == ["mine", "too"] and got["name"].tolist() == ["p", "q"]
+    assert got["name_poly"].tolist() == ["box", "box"] and got["index_poly"].tolist() == [0, 0]
+    assert got["_row"].tolist() == [7, 7]  # a polygon column of any name survives the join
+    with pytest.raises(dggs.DggsValueError, match="'index_right'"):
+        pts.rename(columns={"name_right": "index_right"}).dggs.sjoin_cells(polys, 5)
+    # the polygons' own suffixed column clashing with a renamed one is refused too
+    with pytest.raises(dggs.DggsValueError, match="'name_right'"):
+        pts[["lat", "lng", "name"]].dggs.sjoin_cells(polys.assign(name_right=[1]), 5)
