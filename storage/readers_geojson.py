@@ -70,6 +70,13 @@ def _shown(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
+def _json_text(value: Any) -> Any:
+    """A nested property (a JSON object or array) as JSON text, as it was in the file; anything else as it is."""
+    if isinstance(value, (dict, list, tuple)):
+        return json.dumps(value, ensure_ascii=False)
+    return value
+
+
 def _feature_at(props: Sequence[dict[str, Any]], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict[str, Any]:
     return {"lat": lat[i], "lng": lng[i], **props[i]}
 
@@ -129,7 +136,7 @@ def geojson_batches(
     against RFC 7946 first: a geometry whose coordinates are not arrays of
     numbers nested as its type says (strings, booleans, objects, an empty
     MultiPoint, a number too large for a float) is one bad entry, counted as
-    rejected. 
+    rejected.  Nested properties (JSON objects and arrays) are given as JSON text.
     """
     from shapely.errors import ShapelyError
     from shapely.geometry import shape
@@ -192,7 +199,7 @@ def geojson_batches(
             lines=None,
             lat=lat,
             lng=lng,
-            values={name: [p.get(name) for p in props] for name in values},
+            values={name: [_json_text(p.get(name)) for p in props] for name in values},
             text=False,
             record=partial(_feature_at, props, lat, lng),
             bad=bad,

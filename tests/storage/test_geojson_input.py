@@ -120,3 +120,16 @@ def test_cli_coordinates_as_an_object_is_one_line(tmp_path, skip):
         assert result.exit_code == 1 and result.output.count("\n") == 1, result.output
         assert "row 2" in result.output
 
+
+def test_nested_properties_are_stored_as_json_text(tmp_path):
+    nested = [{"a": [1, 2]}, [1, "x", None, True], {"é": {"deep": 1.5}}, "plain", None]
+    path = tmp_path / "n.geojson"
+    path.write_text(json.dumps({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "geometry": {"type": "Point", "coordinates": [i, i]}, "properties": {"n": i, "p": p}}
+        for i, p in enumerate(nested)]}))
+    with CellStore() as store:
+        store.ingest_geojson(path, level=5)
+        assert store.columns["p"] == "TEXT"
+        stored = {r["n"]: r["p"] for r in store.db.query("SELECT n, p FROM all_points")}
+    assert stored == {0: '{"a": [1, 2]}', 1: '[1, "x", null, true]', 2: '{"é": {"deep": 1.5}}', 3: "plain", 4: None}
+    assert [json.loads(stored[i]) for i in range(3)] == nested[:3]
