@@ -53,6 +53,7 @@ from ._pandas_frames import (  # noqa: E402
     Cells,
     ColumnError,
     CrsError,
+    check_agg,
     first_true,
     frame_coordinates,
     geometry_name,
@@ -106,7 +107,7 @@ class DggsAccessor:
         Raises
         ------
         ColumnError
-            ``lat`` or ``lng`` is not a column.
+            ``lat`` or ``lng`` is not a column, or is a column more than once.
         CrsError
             The geometry's CRS has no transformation to EPSG:4326 (names the CRS).
         CoordinateError
@@ -137,9 +138,6 @@ class DggsAccessor:
             lng_a = np.asarray(geom.x, dtype=np.float64)
             names = ("geometry y", "geometry x")
         else:
-            for col in (lat, lng):
-                if col not in df.columns:
-                    raise ColumnError(f"column {col!r} is not in the frame (columns: {list(df.columns)})")
             lat_a, lng_a = frame_coordinates(df, lat), frame_coordinates(df, lng)
             names = (lat, lng)
         try:
@@ -231,7 +229,10 @@ class DggsAccessor:
         Raises
         ------
         ColumnError
-            ``column`` is not in the frame.
+            ``column`` is not in the frame (or appears twice), or a key of a dict ``agg`` is not a
+            column aggregated.
+        DggsValueError
+            A function in ``agg`` that is neither callable nor the name of a groupby function.
         InvalidCellError, LevelMismatchError
             A malformed id, or a cell coarser than ``level`` (names the row).
 
@@ -268,6 +269,7 @@ class DggsAccessor:
         if agg is None:
             out = data.groupby(key, sort=True).size().to_frame("count")
         else:
+            check_agg(agg, data.columns, cells.column)
             out = data.groupby(key, sort=True).agg(agg)
             if isinstance(out, pd.Series):
                 out = out.to_frame()

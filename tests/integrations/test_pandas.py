@@ -485,3 +485,39 @@ def test_sjoin_cells_never_overwrites_a_column_of_either_frame():
     # the polygons' own suffixed column clashing with a renamed one is refused too
     with pytest.raises(dggs.DggsValueError, match="'name_right'"):
         pts[["lat", "lng", "name"]].dggs.sjoin_cells(polys.assign(name_right=[1]), 5)
+
+
+def test_duplicate_columns_raise_column_error_naming_the_column():
+    twice = pd.DataFrame([[1.0, 2.0, 3.0]], columns=["lat", "lat", "lng"])
+    with pytest.raises(ColumnError, match="'lat' appears 2 times"):
+        twice.dggs.latlng_to_cell(3)
+    with pytest.raises(ColumnError, match="'lat' appears 2 times"):
+        twice.dggs.sjoin_cells(gpd.GeoDataFrame(geometry=[box(0, 0, 1, 1)]), 3)
+    cells = pd.DataFrame([["C4012", "C4012", 3.0]], columns=["cell_4", "cell_4", "v"])
+    for method in (lambda f: f.dggs.aggregate(2, column="cell_4"), lambda f: f.dggs.cell_to_geometry("cell_4")):
+        with pytest.raises(ColumnError, match="'cell_4' appears 2 times"):
+            method(cells)
+
+
+@pytest.mark.parametrize(("agg", "named"), [
+    ({"v": "nope"}, "'nope'"),
+    ({"zz": "sum"}, "'zz'"),
+    ("nope", "'nope'"),
+    (["sum", "nope"], "'nope'"),
+    ({"v": ["sum", "nope"]}, "'nope'"),
+    (3, "3"),
+    ({"v": 3}, "3"),
+    ({"cell_4": "sum"}, "'cell_4'"),  # the cell column is the key, not a value to aggregate
+])
+def test_aggregate_with_a_bad_agg_raises_a_typed_error_naming_it(agg, named):
+    df = pd.DataFrame({"cell_4": ["C4012", "C4021"], "v": [1, 2]})
+    with pytest.raises(dggs.DggsValueError, match=re.escape(named)):
+        df.dggs.aggregate(2, agg)
+
+
+def test_aggregate_good_aggs_still_work():
+    df = pd.DataFrame({"cell_4": ["C4012", "C4021", "D0000"], "v": [1, 2, 5], "w": [1.0, 3.0, 5.0]})
+    out = df.dggs.aggregate(2, {"v": ["sum", "max"], "w": np.mean})
+    assert out[("v", "sum")].tolist() == [3, 5] and out[("w", "mean")].tolist() == [2.0, 5.0]
+    assert df.dggs.aggregate(2, "sum")["v"].tolist() == [3, 5]
+    assert df.dggs.aggregate(2, ["min", len])[("v", "min")].tolist() == [1, 5]
