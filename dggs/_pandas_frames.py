@@ -11,17 +11,43 @@ from typing import Any, NoReturn
 
 import numpy as np
 import pandas as pd
+from pandas.core.groupby import SeriesGroupBy  # importable so in pandas 2.0 (pandas.api.typing has it from 2.1)
 
 from dggs.errors import CoordinateError, DggsValueError
 from dggs.index.hierarchy import get_level, is_valid_cell
 
-__all__ = ["Cells", "ColumnError", "first_true", "frame_coordinates", "geometry_name", "geopandas_module", "is_geo", "row_label"]
+__all__ = ["Cells", "ColumnError", "CrsError", "check_agg", "first_true", "in_wgs84", "one_column", "frame_coordinates", "geometry_name", "geopandas_module", "is_geo", "row_label"]
 
 _CELL_COLUMN = re.compile(r"^cell_\d+$")
 
 
 class ColumnError(DggsValueError):
     """A column the accessor needs is not in the frame (or the choice is ambiguous)."""
+
+
+class CrsError(DggsValueError):
+    """A geometry's CRS has no transformation to WGS84 (EPSG:4326), the grid's coordinates."""
+
+
+def in_wgs84(geoms: Any) -> Any:
+    """A GeoSeries in EPSG:4326: reprojected from its CRS (pyproj, through ``GeoSeries.to_crs``).
+
+    A series without a CRS is taken as lng/lat degrees, as shapely geometries are.
+
+    Raises
+    ------
+    CrsError
+        The CRS has no transformation to EPSG:4326 (another body, a local engineering CRS).
+    """
+    crs = geoms.crs
+    if crs is None or crs.equals("EPSG:4326"):
+        return geoms
+    from pyproj.exceptions import CRSError, ProjError
+
+    try:
+        return geoms.to_crs("EPSG:4326")
+    except (CRSError, ProjError) as exc:
+        raise CrsError(f"the geometry's CRS {crs.name!r} ({crs.to_string()}) has no transformation to EPSG:4326") from exc
 
 
 def geopandas_module() -> Any:
@@ -45,9 +71,70 @@ def geometry_name(frame: Any) -> Any:
     return getattr(frame, "active_geometry_name", None)
 
 
+def one_column(frame: pd.DataFrame, name: Any) -> pd.Series:
+    """Column ``name``, which must be in the frame exactly once.
+
+    Raises
+    ------
+    ColumnError
+        ``name`` is not a column, or several columns have that name.
+    """
+    times = int((frame.columns == name).sum()) if name in frame.columns else 0
+    if times == 0:
+        raise ColumnError(f"column {name!r} is not in the frame (columns: {list(frame.columns)})")
+    if times > 1:
+        raise ColumnError(f"column {name!r} appears {times} times in the frame: rename the copies")
+    column: pd.Series = frame[name]
+    return column
+
+
+def _agg_function(spec: Any, column: Any = None) -> None:
+    """A function ``groupby(...).agg`` takes: a callable, or the name of a method of SeriesGroupBy."""
+    where = f" for column {column!r}" if column is not None else ""
+    if isinstance(spec, (list, tuple)):
+        for one in spec:
+            _agg_function(one, column)
+    elif isinstance(spec, str):
+        if spec.startswith("_") or not callable(getattr(SeriesGroupBy, spec, None)):
+            raise DggsValueError(f"aggregation {spec!r}{where} is not a pandas groupby function (e.g. 'sum', 'mean')")
+    elif not callable(spec):
+        raise DggsValueError(f"aggregation {spec!r}{where} is neither a function nor a function's name")
+
+
+def check_agg(agg: Any, columns: pd.Index, key: Any) -> None:
+    """Check an ``agg`` for :meth:`DggsAccessor.aggregate` before pandas runs it.
+
+    pandas answers an unknown function name with AttributeError and an unknown
+    column with KeyError; this names the bad value in a typed error instead.
+
+    Raises
+    ------
+    ColumnError
+        A dict key that is not one of the aggregated columns (the cell column ``key`` is not one).
+    DggsValueError
+        A function that is neither callable nor a groupby function's name.
+    """
+    if not isinstance(agg, dict):
+        _agg_function(agg)
+        return
+    for column, spec in agg.items():
+        if column not in columns:
+            what = "the cell column, the groupby key" if column == key else "not a column of the frame"
+            raise ColumnError(f"aggregation column {column!r} is {what} (columns: {list(columns)})")
+        _agg_function(spec, column)
+
+
 def frame_coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
-    """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row."""
-    col = frame[name]
+    """Column ``name`` as float64 (missing values as NaN); CoordinateError naming a non-numeric row.
+
+    Raises
+    ------
+    ColumnError
+        ``name`` is not a column, or appears more than once.
+    CoordinateError
+        A value that is not a number (names the row).
+    """
+    col = one_column(frame, name)
     if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
         numbers: np.ndarray = col.to_numpy(dtype=np.float64, na_value=np.nan)  # pandas is untyped here
         return numbers
@@ -81,11 +168,9 @@ class Cells:
             if len(found) > 1:
                 raise ColumnError(f"several cell columns {found}: pass column=")
             column = found[0] if found else None
-        elif column not in frame.columns:
-            raise ColumnError(f"column {column!r} is not in the frame (columns: {list(frame.columns)})")
         self.column = column
         self.labels = frame.index
-        self.values = frame[column] if column is not None else frame.index.to_series()
+        self.values = one_column(frame, column) if column is not None else frame.index.to_series()
         if self.values.dtype == object or isinstance(self.values.dtype, pd.StringDtype):
             self.ids: Any = self.values.to_numpy(dtype=object)
         else:

@@ -32,6 +32,32 @@ __all__ = ["sjoin_cells"]
 _HOW = ("inner", "left")
 
 
+def _suffixed(right: pd.DataFrame, taken: pd.Index, key: str, rsuffix: str) -> pd.DataFrame:
+    """The polygons' columns as they join: the index as ``index_{rsuffix}``, clashes with ``_{rsuffix}``.
+
+    As :func:`geopandas.sjoin` names them, but a suffixed name that is itself
+    taken is refused rather than duplicated or overwritten (the rule pandas'
+    ``merge`` follows since 2.0, raising ``MergeError``).
+
+    Raises
+    ------
+    DggsValueError
+        ``index_{rsuffix}`` or a suffixed polygon column is already a column (names it).
+    """
+    right.index.name = None
+    clash = [c for c in right.columns if c != key and c in taken]
+    names = {c: f"{c}_{rsuffix}" for c in clash}
+    index = f"index_{rsuffix}"
+    final = [index] + [names.get(c, c) for c in right.columns if c != key]  # the key is joined on
+    for name in final:
+        if name in taken or final.count(name) > 1:
+            raise DggsValueError(
+                f"the join would give two columns {name!r} (this frame's {list(taken)}, the polygons' "
+                f"{list(right.columns)}): pass another rsuffix than {rsuffix!r}, or rename the column"
+            )
+    return right.rename(columns=names).reset_index(names=index)
+
+
 def sjoin_cells(
     self: Any,
     polygons: Any,
@@ -48,7 +74,7 @@ def sjoin_cells(
     Parameters
     ----------
     polygons : GeoDataFrame
-        Polygon features (any CRS; filled in EPSG:4326).
+        Polygon features (any CRS with a transformation to EPSG:4326; filled there).
     level : int
         The cells' level: the join's resolution (see :func:`dggs.cell_area`).
     mode : {"center", "contains", "overlaps"}
@@ -65,7 +91,9 @@ def sjoin_cells(
     rsuffix : str
         Suffix for polygon columns whose names this frame has too, and for
         the polygons' index, kept as column ``index_{rsuffix}`` (as
-        :func:`geopandas.sjoin` names it).
+        :func:`geopandas.sjoin` names it).  This frame's columns keep their
+        names; a suffixed name that is already taken is refused, never
+        overwritten.
 
     Returns
     -------
@@ -76,7 +104,10 @@ def sjoin_cells(
     Raises
     ------
     DggsValueError
-        An unknown ``mode`` or ``how``, or bad points or polygons (naming the row).
+        An unknown ``mode`` or ``how``, bad points or polygons (naming the row), or
+        a suffixed column name that is already taken (naming it).
+    CrsError
+        Points or polygons in a CRS without a transformation to EPSG:4326 (names the CRS).
 
     Examples
     --------
@@ -99,17 +130,16 @@ def sjoin_cells(
     key = column if column is not None else f"cell_{level}"
     left = self.latlng_to_cell(level, lat=lat, lng=lng, column=key, as_int=True)
     cells = polygons.dggs.polyfill(level, mode=mode, column=key, as_int=True)
-    right = pd.DataFrame(cells.drop(columns=cells.geometry.name))
-    right.index.name = None
-    right = right.reset_index(names=f"index_{rsuffix}")
-    clash = [c for c in right.columns if c != key and c in left.columns]
-    right = right.rename(columns={c: f"{c}_{rsuffix}" for c in clash})
+    right = _suffixed(pd.DataFrame(cells.drop(columns=cells.geometry.name)), left.columns, key, rsuffix)
+    row = "_row"  # the points' positions, under a name no polygon column has
+    while row in right.columns:
+        row += "_"
     pairs = (
-        pd.DataFrame({key: left[key].to_numpy(), "_row": np.arange(len(left))})
+        pd.DataFrame({key: left[key].to_numpy(), row: np.arange(len(left))})
         .merge(right, on=key, how=how, sort=False)
-        .sort_values("_row", kind="stable")
+        .sort_values(row, kind="stable")
     )
-    out = left.iloc[pairs.pop("_row").to_numpy()]  # the points' index, columns (and geometry) kept
+    out = left.iloc[pairs.pop(row).to_numpy()]  # the points' index, columns (and geometry) kept
     extra = {c: pairs[c].to_numpy() for c in pairs.columns if c != key}
     text = np.asarray(int_to_str(out[key].to_numpy(dtype=np.uint64)), dtype=object)
     return out.assign(**extra, **{key: pd.array(text, dtype="str")})

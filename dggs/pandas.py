@@ -18,7 +18,9 @@ keeps the frame's index and returns a new frame:
 Methods that read cells take ``column=None`` to mean: the only column named
 ``cell_<level>`` if there is exactly one, else the index.  Bad input raises
 the library's typed errors (all :class:`dggs.DggsValueError`), naming the row
-label; a missing column raises :class:`ColumnError`.
+label; a missing column raises :class:`ColumnError`.  Geometries with a CRS
+are reprojected to EPSG:4326 (pyproj); a CRS without a transformation raises
+:class:`CrsError`.
 
 Examples
 --------
@@ -50,15 +52,18 @@ from . import _pandas_join as _join  # noqa: E402 - after the extra's check
 from ._pandas_frames import (  # noqa: E402
     Cells,
     ColumnError,
+    CrsError,
+    check_agg,
     first_true,
     frame_coordinates,
     geometry_name,
     geopandas_module,
+    in_wgs84,
     is_geo,
     row_label,
 )
 
-__all__ = ["DggsAccessor", "ColumnError"]
+__all__ = ["DggsAccessor", "ColumnError", "CrsError"]
 
 _MODES = ("center", "contains", "overlaps")
 
@@ -87,7 +92,8 @@ class DggsAccessor:
             Subdivision level, 0..MAX_LEVEL.
         lat, lng : str
             Columns of latitude and longitude (WGS84 degrees).  A GeoDataFrame
-            of points that has neither column uses its geometry (x = lng, y = lat).
+            of points that has neither column uses its geometry (x = lng, y = lat),
+            reprojected from its CRS to EPSG:4326 first.
         column : str, optional
             Name of the new column (default ``f"cell_{level}"``); an existing
             column of that name is replaced.
@@ -101,7 +107,9 @@ class DggsAccessor:
         Raises
         ------
         ColumnError
-            ``lat`` or ``lng`` is not a column.
+            ``lat`` or ``lng`` is not a column, or is a column more than once.
+        CrsError
+            The geometry's CRS has no transformation to EPSG:4326 (names the CRS).
         CoordinateError
             A missing, non-numeric or out-of-range coordinate (names the row).
         LevelError
@@ -123,16 +131,13 @@ class DggsAccessor:
         df = self._df
         name = column if column is not None else f"cell_{level}"
         if lat not in df.columns and lng not in df.columns and is_geo(df):
-            geom = df.geometry
+            geom = in_wgs84(df.geometry)
             if len(df) and not (geom.geom_type == "Point").all():
                 raise ColumnError(f"no columns {lat!r}, {lng!r} and the geometry is not all points")
             lat_a = np.asarray(geom.y, dtype=np.float64)
             lng_a = np.asarray(geom.x, dtype=np.float64)
             names = ("geometry y", "geometry x")
         else:
-            for col in (lat, lng):
-                if col not in df.columns:
-                    raise ColumnError(f"column {col!r} is not in the frame (columns: {list(df.columns)})")
             lat_a, lng_a = frame_coordinates(df, lat), frame_coordinates(df, lng)
             names = (lat, lng)
         try:
@@ -224,7 +229,10 @@ class DggsAccessor:
         Raises
         ------
         ColumnError
-            ``column`` is not in the frame.
+            ``column`` is not in the frame (or appears twice), or a key of a dict ``agg`` is not a
+            column aggregated.
+        DggsValueError
+            A function in ``agg`` that is neither callable nor the name of a groupby function.
         InvalidCellError, LevelMismatchError
             A malformed id, or a cell coarser than ``level`` (names the row).
 
@@ -261,6 +269,7 @@ class DggsAccessor:
         if agg is None:
             out = data.groupby(key, sort=True).size().to_frame("count")
         else:
+            check_agg(agg, data.columns, cells.column)
             out = data.groupby(key, sort=True).agg(agg)
             if isinstance(out, pd.Series):
                 out = out.to_frame()
@@ -316,6 +325,8 @@ class DggsAccessor:
             unknown ``mode``.
         ColumnError
             A frame without an active geometry column (a :class:`DggsValueError`).
+        CrsError
+            The geometry's CRS has no transformation to EPSG:4326 (names the CRS).
         TooManyCellsError
             A feature would have more than ``max_cells`` cells.
 
@@ -337,9 +348,7 @@ class DggsAccessor:
         df = self._df
         if not is_geo(df):
             raise ColumnError("polyfill needs a GeoDataFrame with an active geometry column")
-        geoms = df.geometry
-        if geoms.crs is not None and not geoms.crs.equals("EPSG:4326"):
-            geoms = geoms.to_crs("EPSG:4326")
+        geoms = in_wgs84(df.geometry)
         name = column if column is not None else f"cell_{level}"
         found: list[np.ndarray] = []
         for i, geom in enumerate(geoms.array):

@@ -22,6 +22,61 @@ from .readers import RawBatch
 __all__ = ["load_geojson", "geojson_batches"]
 
 
+#: How deep each geometry's coordinates nest to reach a position (RFC 7946, sections 3.1.2-3.1.7).
+_DEPTH = {"Point": 0, "MultiPoint": 1, "Polygon": 2, "MultiPolygon": 3}
+
+
+class _Malformed(ValueError):
+    """A geometry whose coordinates are not what RFC 7946 says its type holds."""
+
+
+def _position(value: Any) -> tuple[float, ...]:
+    """A position: an array of two or more numbers (RFC 7946, 3.1.1); JSON strings and booleans are not numbers."""
+    if not isinstance(value, (list, tuple)):
+        raise _Malformed(f"a position must be an array of numbers, not {_shown(value)}")
+    if len(value) < 2:
+        raise _Malformed(f"a position needs two or more numbers, not {_shown(value)}")
+    for number in value:
+        if isinstance(number, bool) or not isinstance(number, (int, float)):
+            raise _Malformed(f"coordinate {_shown(number)} in {_shown(value)} is not a number")
+    try:
+        return tuple(float(number) for number in value)
+    except OverflowError:
+        raise _Malformed(f"a coordinate in {_shown(value)} is too large for a float") from None
+
+
+def _checked(kind: str, coords: Any) -> list[Any]:
+    """The coordinates of a ``kind`` geometry as nested lists of float positions, or _Malformed saying why."""
+    depth = _DEPTH[kind]
+    if depth == 0:
+        return list(_position(coords))
+
+    def walk(value: Any, level: int) -> list[Any]:
+        if not isinstance(value, (list, tuple)):
+            raise _Malformed(f"{kind} coordinates must be arrays nested {depth} deep, not {_shown(value)}")
+        if level == 1:
+            return [list(_position(v)) for v in value]
+        return [walk(v, level - 1) for v in value]
+
+    out = walk(coords, depth)
+    if kind == "MultiPoint" and not out:
+        raise _Malformed("MultiPoint has no points")
+    return out
+
+
+def _shown(value: Any) -> str:
+    """A short repr for a message (a malformed geometry can be large)."""
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _json_text(value: Any) -> Any:
+    """A nested property (a JSON object or array) as JSON text, as it was in the file; anything else as it is."""
+    if isinstance(value, (dict, list, tuple)):
+        return json.dumps(value, ensure_ascii=False)
+    return value
+
+
 def _feature_at(props: Sequence[dict[str, Any]], lat: Sequence[Any], lng: Sequence[Any], i: int) -> dict[str, Any]:
     return {"lat": lat[i], "lng": lng[i], **props[i]}
 
@@ -52,6 +107,19 @@ def load_geojson(path: str | Path) -> list[dict[str, Any]]:
     raise DggsValueError(f"{path} is not GeoJSON (no FeatureCollection, Feature or geometry)")
 
 
+def _add_cells(add: Any, row: int, prop: dict[str, Any], polygon: Any, level: int, bad: dict, at: int) -> None:
+    """One entry per cell whose centre ``polygon`` holds, at its centre; a bad entry if it holds none."""
+    found = dggs.polygon_to_cells(polygon, level)
+    if not len(found):
+        bad[at] = (None, polygon.geom_type, f"polygon holds no cell centre at level {level}")
+        add(row, None, None, "", prop)
+        return
+    clat, clng = dggs.cell_to_latlng(np.asarray(found))
+    triples = zip(np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist(), strict=True)
+    for part, (cell, y, x) in enumerate(triples):
+        add(row, y, x, cell, prop, part)
+
+
 def geojson_batches(
     features: Sequence[Any],
     values: Sequence[str],
@@ -64,8 +132,13 @@ def geojson_batches(
     A ``Polygon``/``MultiPolygon`` feature becomes one entry per cell at
     ``level`` whose centre lies inside it (:func:`dggs.polygon_to_cells`),
     each with the feature's properties and the cell centre as coordinates.
-    A ``MultiPoint`` gives one entry per point.
+    A ``MultiPoint`` gives one entry per point.  Coordinates are checked
+    against RFC 7946 first: a geometry whose coordinates are not arrays of
+    numbers nested as its type says (strings, booleans, objects, an empty
+    MultiPoint, a number too large for a float) is one bad entry, counted as
+    rejected.  Nested properties (JSON objects and arrays) are given as JSON text.
     """
+    from shapely.errors import ShapelyError
     from shapely.geometry import shape
 
     for start in range(skip, len(features), batch_size):
@@ -100,35 +173,25 @@ def geojson_batches(
                 add(row, None, None, "", {})
                 continue
             kind = geometry.get("type") if isinstance(geometry, dict) else None
-            coords: Any = geometry.get("coordinates") if isinstance(geometry, dict) else None
-            try:
-                if kind == "Point":
-                    add(row, coords[1], coords[0], "", prop)
-                    continue
-                if kind == "MultiPoint":
-                    for part, (x, y, *_) in enumerate(coords):
-                        add(row, y, x, "", prop, part)
-                    continue
-                if kind in ("Polygon", "MultiPolygon"):
-                    found = dggs.polygon_to_cells(shape(geometry), level)
-                    if len(found):
-                        clat, clng = dggs.cell_to_latlng(np.asarray(found))
-                        triples = zip(
-                            np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist(),
-                            strict=True,
-                        )
-                        for part, (cell, y, x) in enumerate(triples):
-                            add(row, y, x, cell, prop, part)
-                    else:
-                        bad[len(rows)] = (None, kind, f"polygon holds no cell centre at level {level}")
-                        add(row, None, None, "", prop)
-                    continue
-            except (TypeError, IndexError, ValueError, AttributeError) as exc:
-                bad[len(rows)] = (None, kind, f"geometry is malformed ({exc})")
+            if kind not in _DEPTH:
+                bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
                 add(row, None, None, "", prop)
                 continue
-            bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
-            add(row, None, None, "", prop)
+            try:
+                coords = _checked(kind, geometry.get("coordinates"))
+                if kind == "Point":
+                    add(row, coords[1], coords[0], "", prop)
+                elif kind == "MultiPoint":
+                    for part, (x, y, *_) in enumerate(coords):
+                        add(row, y, x, "", prop, part)
+                else:
+                    _add_cells(add, row, prop, shape({"type": kind, "coordinates": coords}), level, bad, len(rows))
+            except _Malformed as exc:
+                bad[len(rows)] = (None, kind, f"geometry is malformed: {exc}")
+                add(row, None, None, "", prop)
+            except (ValueError, ShapelyError) as exc:  # shapely's or the fill's refusal (DggsValueError)
+                bad[len(rows)] = (None, kind, f"geometry cannot be filled: {exc}")
+                add(row, None, None, "", prop)
 
         yield RawBatch(
             consumed=len(chunk),
@@ -136,7 +199,7 @@ def geojson_batches(
             lines=None,
             lat=lat,
             lng=lng,
-            values={name: [p.get(name) for p in props] for name in values},
+            values={name: [_json_text(p.get(name)) for p in props] for name in values},
             text=False,
             record=partial(_feature_at, props, lat, lng),
             bad=bad,

@@ -424,3 +424,100 @@ def test_sjoin_cells_left_keeps_every_point_and_checks_arguments():
     geo_points = gpd.GeoDataFrame({"v": [1]}, geometry=[Point(5.0, 20.0)], crs="EPSG:4326")
     joined = geo_points.dggs.sjoin_cells(polys, 6)
     assert isinstance(joined, gpd.GeoDataFrame) and joined["name"].tolist() == ["box"]
+
+
+# -- issue 17: coordinates in another CRS, column clashes, typed errors --------------------------
+
+_ENGINEERING = (  # a local engineering CRS: no transformation to WGS84 exists
+    'ENGCRS["site grid",EDATUM["site"],CS[Cartesian,2],AXIS["x",east,LENGTHUNIT["metre",1]],'
+    'AXIS["y",north,LENGTHUNIT["metre",1]]]'
+)
+
+
+def test_latlng_to_cell_reprojects_points_in_another_crs():
+    # 20N 10E in Web Mercator metres, converted by pyproj here (the oracle), not by the accessor
+    from pyproj import Transformer
+
+    x, y = Transformer.from_crs(4326, 3857, always_xy=True).transform([10.0, -70.0], [20.0, 45.0])
+    gdf = gpd.GeoDataFrame({"v": [1, 2]}, geometry=gpd.points_from_xy(x, y), crs=3857)
+    got = gdf.dggs.latlng_to_cell(9)
+    assert got["cell_9"].tolist() == dggs.latlng_to_cell([20.0, 45.0], [10.0, -70.0], 9)
+    assert got.crs.to_epsg() == 3857 and got.geometry.equals(gdf.geometry)  # the frame's own geometry kept
+    # the same points as degrees in another geographic CRS (NAD83 differs from WGS84 by < 2 m)
+    nad83 = gpd.GeoDataFrame(geometry=gpd.points_from_xy([10.0, -70.0], [20.0, 45.0]), crs=4269)
+    assert nad83.dggs.latlng_to_cell(9)["cell_9"].tolist() == got["cell_9"].tolist()
+
+
+def test_points_or_polygons_in_a_crs_without_transform_raise_naming_the_crs():
+    pts = gpd.GeoDataFrame(geometry=gpd.points_from_xy([10.0], [20.0]), crs=_ENGINEERING)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        pts.dggs.latlng_to_cell(9)
+    polys = gpd.GeoDataFrame({"name": ["a"]}, geometry=[box(0, 0, 10, 10)], crs=_ENGINEERING)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        polys.dggs.polyfill(4)
+    with pytest.raises(dggs.pandas.CrsError, match="site grid"):
+        pd.DataFrame({"lat": [1.0], "lng": [2.0]}).dggs.sjoin_cells(polys, 4)
+    assert issubclass(dggs.pandas.CrsError, dggs.DggsValueError)
+
+
+def test_sjoin_cells_reprojects_projected_points_and_polygons():
+    pts, polys = _join_fixture()
+    want = pts.dggs.sjoin_cells(polys.iloc[:1], 5)
+    geo = gpd.GeoDataFrame(pts[["name"]], geometry=gpd.points_from_xy(pts["lng"], pts["lat"]), crs=4326)
+    sel = geo[(geo.geometry.y.abs() < 80)]  # inside Web Mercator's range
+    got = sel.to_crs(3857).dggs.sjoin_cells(polys.iloc[:1].set_crs(4326).to_crs(3857), 5)
+    assert list(got.index) == [i for i in want.index if i in sel.index]
+    assert got["cell_5"].tolist() == want.loc[got.index, "cell_5"].tolist()
+
+
+def test_sjoin_cells_never_overwrites_a_column_of_either_frame():
+    pts = pd.DataFrame({"lat": [5.0, 6.0], "lng": [5.0, 6.0], "name": ["p", "q"], "name_right": ["mine", "too"]})
+    polys = gpd.GeoDataFrame({"name": ["box"], "_row": [7]}, geometry=[box(0, 0, 10, 10)], crs=4326)
+    # the suffixed name is taken by this frame: refused, naming it (pandas' merge refuses such suffixes too)
+    with pytest.raises(dggs.DggsValueError, match="'name_right'"):
+        pts.dggs.sjoin_cells(polys, 5)
+    got = pts.dggs.sjoin_cells(polys, 5, rsuffix="poly")  # another suffix joins
+    assert got["name_right"].tolist() == ["mine", "too"] and got["name"].tolist() == ["p", "q"]
+    assert got["name_poly"].tolist() == ["box", "box"] and got["index_poly"].tolist() == [0, 0]
+    assert got["_row"].tolist() == [7, 7]  # a polygon column of any name survives the join
+    with pytest.raises(dggs.DggsValueError, match="'index_right'"):
+        pts.rename(columns={"name_right": "index_right"}).dggs.sjoin_cells(polys, 5)
+    # the polygons' own suffixed column clashing with a renamed one is refused too
+    with pytest.raises(dggs.DggsValueError, match="'name_right'"):
+        pts[["lat", "lng", "name"]].dggs.sjoin_cells(polys.assign(name_right=[1]), 5)
+
+
+def test_duplicate_columns_raise_column_error_naming_the_column():
+    twice = pd.DataFrame([[1.0, 2.0, 3.0]], columns=["lat", "lat", "lng"])
+    with pytest.raises(ColumnError, match="'lat' appears 2 times"):
+        twice.dggs.latlng_to_cell(3)
+    with pytest.raises(ColumnError, match="'lat' appears 2 times"):
+        twice.dggs.sjoin_cells(gpd.GeoDataFrame(geometry=[box(0, 0, 1, 1)]), 3)
+    cells = pd.DataFrame([["C4012", "C4012", 3.0]], columns=["cell_4", "cell_4", "v"])
+    for method in (lambda f: f.dggs.aggregate(2, column="cell_4"), lambda f: f.dggs.cell_to_geometry("cell_4")):
+        with pytest.raises(ColumnError, match="'cell_4' appears 2 times"):
+            method(cells)
+
+
+@pytest.mark.parametrize(("agg", "named"), [
+    ({"v": "nope"}, "'nope'"),
+    ({"zz": "sum"}, "'zz'"),
+    ("nope", "'nope'"),
+    (["sum", "nope"], "'nope'"),
+    ({"v": ["sum", "nope"]}, "'nope'"),
+    (3, "3"),
+    ({"v": 3}, "3"),
+    ({"cell_4": "sum"}, "'cell_4'"),  # the cell column is the key, not a value to aggregate
+])
+def test_aggregate_with_a_bad_agg_raises_a_typed_error_naming_it(agg, named):
+    df = pd.DataFrame({"cell_4": ["C4012", "C4021"], "v": [1, 2]})
+    with pytest.raises(dggs.DggsValueError, match=re.escape(named)):
+        df.dggs.aggregate(2, agg)
+
+
+def test_aggregate_good_aggs_still_work():
+    df = pd.DataFrame({"cell_4": ["C4012", "C4021", "D0000"], "v": [1, 2, 5], "w": [1.0, 3.0, 5.0]})
+    out = df.dggs.aggregate(2, {"v": ["sum", "max"], "w": np.mean})
+    assert out[("v", "sum")].tolist() == [3, 5] and out[("w", "mean")].tolist() == [2.0, 5.0]
+    assert df.dggs.aggregate(2, "sum")["v"].tolist() == [3, 5]
+    assert df.dggs.aggregate(2, ["min", len])[("v", "min")].tolist() == [1, 5]
