@@ -27,7 +27,7 @@ from typing import Any
 from fastapi import FastAPI
 
 from . import mapdata, ogc, zones
-from .errors import install_handlers
+from .errors import head_as_get, install_handlers
 from .params import Context
 from .reader import StoreReader
 
@@ -115,7 +115,18 @@ def create_app(
         from fastapi.staticfiles import StaticFiles
 
         app.mount("/static", StaticFiles(directory=folder), name="static")
+    app.add_middleware(_HeadAsGet)
     return app
+
+
+class _HeadAsGet:
+    """:func:`head_as_get` in the form ``add_middleware`` takes (a class called with the app)."""
+
+    def __init__(self, app: Any) -> None:
+        self.app = head_as_get(app)
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        await self.app(scope, receive, send)
 
 
 def _version() -> str:

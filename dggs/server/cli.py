@@ -62,7 +62,7 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int, r
     _check_port(host, port)
     import threading
 
-    from .reader import warm_kernels
+    from .warm import warm_kernels
 
     # compiled once per installation (then loaded from numba's cache), so the first map view needs no compiling
     note = threading.Timer(2.0, lambda: click.echo("compiling the grid kernels, once for this installation ...",

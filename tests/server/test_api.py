@@ -506,7 +506,7 @@ def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
 # -- docstring examples ---------------------------------------------------------------
 
 
-@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "zones"])
+@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "warm", "zones"])
 def test_doctests(name):
     module = importlib.import_module(f"dggs.server.{name}")
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
