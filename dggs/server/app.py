@@ -30,6 +30,7 @@ from . import mapdata, ogc, zones
 from .errors import head_as_get, install_handlers
 from .params import Context
 from .reader import StoreReader
+from .vendor import STATIC_FOLDER
 
 __all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC"]
 
@@ -40,7 +41,7 @@ MAX_FEATURES = 50_000
 #: Default seconds a roll-up may lag a store that an ingest is writing to (see StoreReader).
 REFRESH = 2.0
 #: The web map's files (written by the front end; served at ``/static`` and ``/``).
-STATIC = Path(__file__).parent / "static"
+STATIC = STATIC_FOLDER
 
 
 def create_app(
