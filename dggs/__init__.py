@@ -43,6 +43,34 @@ from dggs.errors import (
 
 __version__ = "0.3.0"
 
+
+def _check_layout() -> None:
+    """Raise a clear ImportError when ``dggs.index`` cannot be found (the source tree imported as it is).
+
+    ``dggs.index`` and ``dggs.storage`` are the folders ``index/`` and ``storage/`` beside ``dggs/``,
+    mapped into the package by ``[tool.setuptools.package-dir]`` in pyproject.toml; only an install
+    (a wheel or ``pip install -e .``) applies that mapping.  Python run in the repository root finds the
+    bare ``dggs/`` folder first and would fail later with ``No module named 'dggs.index'``.
+
+    Raises
+    ------
+    ImportError
+        If ``dggs.index`` is not importable, naming the folder ``dggs`` was imported from.
+    """
+    import importlib.util
+    import os
+
+    if importlib.util.find_spec("dggs.index") is None:
+        here = os.path.dirname(os.path.abspath(__file__))
+        raise ImportError(
+            f"dggs was imported from the source folder {here}, which shadows the installed package: "
+            "its dggs.index and dggs.storage are the folders index/ and storage/ beside it, joined only "
+            "by an install; run Python from another folder, or install this tree with pip install -e ."
+        )
+
+
+_check_layout()
+
 #: Public name -> the module that defines it, imported on first access.
 #: The one table to update when a module moves.
 _LAZY: dict[str, str] = {

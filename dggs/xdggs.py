@@ -29,10 +29,17 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
-import xarray as xr
-from xdggs.grid import DGGSInfo, translate_parameters
-from xdggs.index import DGGSIndex
-from xdggs.utils import register_dggs
+
+try:
+    import xarray as xr
+    from xdggs.grid import DGGSInfo, translate_parameters
+    from xdggs.index import DGGSIndex
+    from xdggs.utils import register_dggs
+except ImportError as _exc:  # the optional extra: say which
+    raise ImportError(
+        f"dggs.xdggs needs xarray and xdggs ({_exc.name or _exc} is missing): pip install 'dggs[xarray]' "
+        "(Python 3.11 or later)"
+    ) from _exc
 
 import dggs
 

@@ -6,18 +6,14 @@ and the operating system raise (a corrupt file, a full disk, a lock held too
 long, read-only media) into a :class:`dggs.StorageError` naming the file and
 what to do; :func:`guarded` applies it to a function.
 
-Read-only media: a WAL-mode database needs its ``-shm`` file, which SQLite
-cannot create in a folder it may not write.  ``readonly=True`` then opens the
-file with ``?mode=ro&immutable=1`` (nothing can change it anyway), unless a
-non-empty ``-wal`` file is there: its rows would be invisible, so that is a
-:class:`StorageError` instead of a wrong answer.
+Read-only opens (immutable when no writer has the store open, and on
+read-only media) are in :mod:`.readonly`.
 """
 
 from __future__ import annotations
 
 import contextlib
 import functools
-import os
 import sqlite3
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -26,9 +22,11 @@ from typing import Any, TypeVar
 import dggs
 from dggs.errors import DggsError, LevelError, LevelMismatchError, StorageError
 
+from .readonly import connect as _connect
+from .readonly import connect_immutable, quiet, signature
 from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
 
-__all__ = ["Connection", "translate", "guarded", "DEFAULT_LEVEL"]
+__all__ = ["Connection", "translate", "guarded", "DEFAULT_LEVEL", "connect_immutable"]
 
 #: Level used by a new store when none is given.
 DEFAULT_LEVEL = 12
@@ -106,50 +104,6 @@ def guarded(method: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def _writable(path: Path) -> bool:
-    folder = path.parent if str(path.parent) else Path(".")
-    return os.access(folder, os.W_OK) and (not path.exists() or os.access(path, os.W_OK))
-
-
-def _connect(path: str, readonly: bool, timeout: float) -> sqlite3.Connection:
-    """Open the SQLite connection (read-only media: immutable, see the module doc)."""
-    if path == ":memory:" or not readonly:
-        return sqlite3.connect(path, isolation_level=None, timeout=timeout)
-    file = Path(path).resolve()
-    uri = file.as_uri() + "?mode=ro"
-    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
-    try:
-        conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
-        return conn
-    except sqlite3.OperationalError:
-        conn.close()
-        if _writable(file):
-            raise
-    except BaseException:
-        conn.close()
-        raise
-    return connect_immutable(file, timeout)
-
-
-def connect_immutable(file: Path, timeout: float = 30.0) -> sqlite3.Connection:
-    """Open a store on read-only media with ``?mode=ro&immutable=1``.
-
-    Raises
-    ------
-    StorageError
-        If a non-empty ``-wal`` file holds committed rows that an immutable
-        reader would not see.
-    """
-    wal = Path(str(file) + "-wal")
-    if wal.exists() and wal.stat().st_size > 0:
-        raise StorageError(
-            f"{file} is on read-only media with an unmerged write-ahead log ({wal.name}); "
-            "its latest rows cannot be read there: copy the store and its -wal file to a writable folder"
-        )
-    uri = file.as_uri() + "?mode=ro&immutable=1"
-    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
-
-
 class Connection:
     """An open cell store file: the connection, its transactions and metadata."""
 
@@ -169,8 +123,11 @@ class Connection:
             except OSError as exc:
                 raise translate(exc, path) from exc
         try:
-            self.conn = _connect(path, readonly, timeout)
-        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:
+            # the signature before the open: a change between the two is then seen as one
+            before = signature(Path(path).resolve()) if readonly and path != ":memory:" else None
+            self.conn, self.immutable = _connect(path, readonly, timeout)
+            self.signature = before
+        except (sqlite3.DatabaseError, UnicodeDecodeError, OSError) as exc:
             raise translate(exc, path, timeout) from exc
         except sqlite3.Error as exc:
             raise StorageError(f"cannot open {path}: {exc}") from exc
@@ -183,6 +140,33 @@ class Connection:
             self.conn.close()
             raise
         self._db: Any = None
+
+    def stale(self) -> bool:
+        """Whether the file changed (written, replaced, truncated, deleted) since this immutable reader opened it.
+
+        Always False for a WAL reader or a writer: SQLite itself keeps those consistent.
+        """
+        if not self.immutable:
+            return False
+        try:
+            return signature(Path(self.path).resolve()) != self.signature
+        except OSError:
+            return True
+
+    def behind(self) -> bool:
+        """Whether an immutable reader may miss commits: the file changed, or a writer's ``-wal`` is there now.
+
+        A long-lived reader (the server) opens the store again then.
+        """
+        return self.immutable and (self.stale() or not quiet(Path(self.path).resolve()))
+
+    def _check_fresh(self) -> None:
+        if self.stale():
+            gone = not Path(self.path).exists()
+            raise StorageError(
+                f"{self.path} was deleted while open read-only" if gone else
+                f"{self.path} changed while open read-only (written, replaced or truncated); open it again"
+            )
 
     @property
     def db(self) -> Any:
@@ -245,9 +229,15 @@ class Connection:
 
         That is ``points`` alone when nothing is pending (the common case,
         and a plain clustered scan), else the ``all_points`` view.
+
+        Raises
+        ------
+        StorageError
+            If an immutable reader's file changed since it was opened, or while it was read.
         """
         own = not self.conn.in_transaction
         if own:
+            self._check_fresh()  # an immutable reader: the file as it was opened, or an error
             self.conn.execute("BEGIN")
         try:
             pending = self.conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone()
@@ -255,6 +245,8 @@ class Connection:
         finally:
             if own and self.conn.in_transaction:
                 self.conn.execute("COMMIT")
+        if own:
+            self._check_fresh()  # and unchanged while it was read
 
     # -- metadata -----------------------------------------------------------
 

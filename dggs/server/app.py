@@ -27,9 +27,10 @@ from typing import Any
 from fastapi import FastAPI
 
 from . import mapdata, ogc, zones
-from .errors import install_handlers
+from .errors import head_as_get, install_handlers
 from .params import Context
 from .reader import StoreReader
+from .vendor import STATIC_FOLDER
 
 __all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC"]
 
@@ -40,7 +41,7 @@ MAX_FEATURES = 50_000
 #: Default seconds a roll-up may lag a store that an ingest is writing to (see StoreReader).
 REFRESH = 2.0
 #: The web map's files (written by the front end; served at ``/static`` and ``/``).
-STATIC = Path(__file__).parent / "static"
+STATIC = STATIC_FOLDER
 
 
 def create_app(
@@ -115,7 +116,18 @@ def create_app(
         from fastapi.staticfiles import StaticFiles
 
         app.mount("/static", StaticFiles(directory=folder), name="static")
+    app.add_middleware(_HeadAsGet)
     return app
+
+
+class _HeadAsGet:
+    """:func:`head_as_get` in the form ``add_middleware`` takes (a class called with the app)."""
+
+    def __init__(self, app: Any) -> None:
+        self.app = head_as_get(app)
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        await self.app(scope, receive, send)
 
 
 def _version() -> str:

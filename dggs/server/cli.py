@@ -62,7 +62,7 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int, r
     _check_port(host, port)
     import threading
 
-    from .reader import warm_kernels
+    from .warm import warm_kernels
 
     # compiled once per installation (then loaded from numba's cache), so the first map view needs no compiling
     note = threading.Timer(2.0, lambda: click.echo("compiling the grid kernels, once for this installation ...",
@@ -72,6 +72,10 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int, r
         warm_kernels()
     finally:
         note.cancel()
+    from .vendor import VENDOR_HELP, missing_vendor
+
+    if missing_vendor():
+        click.echo(f"warning: {VENDOR_HELP}", err=True)
     shown = f"[{host}]" if ":" in host else host
     click.echo(f"Serving {store} at http://{shown}:{port}/ (API at /api.html; Ctrl+C stops)", err=False)
     uvicorn.run(app, host=host, port=port, log_level="warning")

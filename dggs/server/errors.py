@@ -10,7 +10,11 @@ error the server returns has all four, with media type ``application/problem+jso
   range, an unknown column) is a 400;
 - FastAPI's own validation errors (a query parameter that is not an integer) are a 400
   naming the parameter and the value, not FastAPI's 422;
-- unknown routes are a 404 in the same shape.
+- unknown routes are a 404 in the same shape; a method a route does not take is a 405 with an
+  ``Allow`` header (RFC 9110, section 15.5.6), and HEAD is taken wherever GET is (section 9.3.2:
+  :func:`head_as_get`);
+- a store file deleted, truncated or damaged while serving (a :class:`dggs.StorageError`, or a raw
+  ``sqlite3.Error`` that got past the reader) is a 503 naming the file.
 
 Examples
 --------
@@ -21,6 +25,7 @@ Examples
 
 from __future__ import annotations
 
+import sqlite3
 from typing import Any
 
 __all__ = [
@@ -31,6 +36,7 @@ __all__ = [
     "TooManyZones",
     "problem",
     "install_handlers",
+    "head_as_get",
     "PROBLEM_JSON",
 ]
 
@@ -106,8 +112,14 @@ def install_handlers(app: Any) -> None:
 
     from dggs.errors import DggsError, StorageError
 
-    def respond(status: int, detail: str) -> JSONResponse:
-        return JSONResponse(problem(status, detail), status_code=status, media_type=PROBLEM_JSON)
+    def respond(status: int, detail: str, headers: Any = None) -> JSONResponse:
+        return JSONResponse(problem(status, detail), status_code=status, media_type=PROBLEM_JSON, headers=headers)
+
+    async def on_sqlite(request: Any, exc: Exception) -> JSONResponse:
+        from dggs.storage.connection import translate
+
+        path = str(request.app.state.ctx.reader.path)
+        return respond(503, str(translate(exc, path)))
 
     async def on_api_error(request: Any, exc: Exception) -> JSONResponse:
         assert isinstance(exc, ApiError)
@@ -132,11 +144,55 @@ def install_handlers(app: Any) -> None:
     async def on_http(request: Any, exc: Exception) -> JSONResponse:
         assert isinstance(exc, StarletteHTTPException)
         detail = exc.detail if isinstance(exc.detail, str) else str(exc.detail)
+        headers = dict(exc.headers or {})
         if exc.status_code == 404 and detail == "Not Found":
             detail = f"no resource at {request.url.path}; the landing page / lists the resources"
-        return respond(exc.status_code, detail)
+        if exc.status_code == 405:
+            allowed = [m.strip() for m in headers.get("Allow", "GET").split(",") if m.strip()]
+            if "GET" in allowed and "HEAD" not in allowed:
+                allowed.append("HEAD")  # head_as_get answers it
+            headers["Allow"] = ", ".join(allowed)
+            detail = f"{request.method} is not allowed on {request.url.path}; allowed: {headers['Allow']}"
+        return respond(exc.status_code, detail, headers or None)
 
     app.add_exception_handler(ApiError, on_api_error)
     app.add_exception_handler(DggsError, on_dggs_error)
     app.add_exception_handler(RequestValidationError, on_validation)
     app.add_exception_handler(StarletteHTTPException, on_http)
+    app.add_exception_handler(sqlite3.Error, on_sqlite)
+
+
+def head_as_get(app: Any) -> Any:
+    """ASGI middleware: answer HEAD on every route as GET, with the GET's headers and no body.
+
+    RFC 9110, section 9.3.2: a general-purpose server supports HEAD, the same answer as GET without
+    the content.  FastAPI's ``@app.get`` routes take GET alone (Starlette adds HEAD only to its own
+    routes), so HEAD is passed on as GET and the body dropped here.
+
+    Examples
+    --------
+    >>> async def inner(scope, receive, send):
+    ...     await send({"type": "http.response.start", "status": 200, "headers": []})
+    ...     await send({"type": "http.response.body", "body": scope["method"].encode()})
+    >>> sent = []
+    >>> async def send(message):
+    ...     sent.append(message)
+    >>> import asyncio
+    >>> asyncio.run(head_as_get(inner)({"type": "http", "method": "HEAD"}, None, send))
+    >>> sent[1]["body"]
+    b''
+    """
+
+    async def middleware(scope: Any, receive: Any, send: Any) -> None:
+        if scope.get("type") != "http" or scope.get("method") != "HEAD":
+            await app(scope, receive, send)
+            return
+
+        async def send_no_body(message: Any) -> None:
+            if message.get("type") == "http.response.body":
+                message = {**message, "body": b""}
+            await send(message)
+
+        await app({**scope, "method": "GET"}, receive, send_no_body)
+
+    return middleware

@@ -17,15 +17,17 @@ Examples
 
 from __future__ import annotations
 
+import html
 from pathlib import Path
 from typing import Any
 
 from fastapi import FastAPI, Query, Request
-from fastapi.responses import FileResponse, JSONResponse, PlainTextResponse, Response
+from fastapi.responses import FileResponse, HTMLResponse, JSONResponse, PlainTextResponse, Response
 
 from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
 from .dggrs import link as _link
 from .params import Context, base_url, check_collection, check_dggrs
+from .vendor import VENDOR_HELP, missing_vendor
 
 __all__ = ["register", "CONFORMANCE"]
 
@@ -118,6 +120,14 @@ def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> dic
     return {"links": links, "dggrs": [item(base, prefix)]}
 
 
+_NO_MAP = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>dggs: the web map is not installed</title></head>
+<body><h1>The web map is not installed</h1><p id="status" role="alert">{help}.</p>
+<p>The OGC API answers as usual: <a href="/?f=json">landing page</a>, <a href="/api.html">API</a>.</p>
+</body></html>
+"""
+
+
 def register(app: FastAPI, ctx: Context, static: Path) -> None:
     """Add the landing page, conformance, collections and DGGRS routes."""
     page = static / "index.html"
@@ -126,6 +136,8 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
     def root(request: Request, f: str | None = Query(None, description="json for the landing page")) -> Response:
         accept = request.headers.get("accept", "")
         if f is None and "text/html" in accept and page.is_file():
+            if missing_vendor(static):  # the page would stay at "Loading..." without MapLibre
+                return HTMLResponse(_NO_MAP.format(help=html.escape(VENDOR_HELP)), status_code=503)
             return FileResponse(page, media_type="text/html")
         return JSONResponse(landing(ctx, request))
 

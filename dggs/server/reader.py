@@ -40,6 +40,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import sqlite3
 import threading
 import time
 from collections import OrderedDict
@@ -51,43 +52,17 @@ from typing import Any
 import numpy as np
 
 import dggs
+from dggs.errors import StorageError
 from dggs.storage import CellStore
+from dggs.storage.connection import translate
+from dggs.storage.readonly import immutable_when_quiet
 
-__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox", "warm_kernels"]
+__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox"]
 
 #: At most this many roll-ups are kept (each is one level, column and statistic).
 CACHE_ENTRIES = 32
 #: At most this many cell geometries are kept (about 1 kB each).
 GEOMETRY_ENTRIES = 300_000
-
-
-def warm_kernels() -> None:
-    """Run once each grid kernel the server calls, so that the first request does not wait for it.
-
-    numba compiles a kernel on its first call in a fresh installation (2-7 s each) and caches it on
-    disk; later processes load it in milliseconds.  ``dggs serve`` calls this before it listens.
-
-    Examples
-    --------
-    >>> warm_kernels()
-    """
-    import shapely
-
-    ids = np.array(["A0", "C4012", "E", "R", "E0"])  # E and R have a pole on an edge: their own ring builder
-    many = np.asarray(dggs.uncompact_cells(["A"], 8))  # 13,122 cells: above the threshold of the threaded kernels
-    for cells in (ids, many):
-        dggs.cell_to_latlng(cells)
-        for densify in sorted({map_densify(level) for level in range(dggs.MAX_LEVEL + 1)}):
-            shapely.to_geojson(dggs.cell_to_polygon(cells, densify=densify))
-    dggs.cell_to_latlng("A0")
-    dggs.cell_to_polygon("A0")
-    dggs.cell_to_children("A0")
-    dggs.cell_to_children("A0", 3)
-    dggs.edge_neighbors("A0")
-    dggs.cell_to_parent("C4012", 1)
-    dggs.compact_cells(dggs.cell_to_children("A0", 2))
-    dggs.uncompact_cells(["A0"], 2)
-    dggs.str_to_int("A0")
 
 
 def map_densify(level: int) -> int:
@@ -165,8 +140,18 @@ class StoreReader:
     def store(self) -> CellStore:
         """Return this thread's read-only store (opened on first use)."""
         store = getattr(self._local, "store", None)
+        if store is not None and store._store.behind():
+            # an immutable reader (the store was quiet) and now a writer's -wal is there, or the file
+            # changed: open again, as a WAL reader beside the writer (see dggs.storage.readonly)
+            with self._lock:
+                if store in self._opened:
+                    self._opened.remove(store)
+            with contextlib.suppress(Exception):
+                store.close()
+            store = self._local.store = None
         if store is None:
-            store = CellStore(self.path, create=False, readonly=True)
+            with immutable_when_quiet():  # no -wal/-shm files made beside a store nobody writes
+                store = CellStore(self.path, create=False, readonly=True)
             self._local.store = store
             with self._lock:
                 self._opened.append(store)
@@ -183,17 +168,25 @@ class StoreReader:
 
     @contextlib.contextmanager
     def snapshot(self) -> Iterator[tuple[CellStore, tuple[Any, ...]]]:
-        """One read transaction: yield the store and its modification marker."""
+        """One read transaction: yield the store and its modification marker.
+
+        Raises
+        ------
+        StorageError
+            If the store file is gone, damaged, or changed under an immutable reader while it was read
+            (naming the file: the server answers 503).
+        """
         store = self.store()
-        conn = store.conn
-        own = not conn.in_transaction
-        if own:
-            conn.execute("BEGIN")
+        marker: tuple[Any, ...] | None = None
         try:
-            yield store, self._marker(store)
-        finally:
-            if own and conn.in_transaction:
-                conn.execute("COMMIT")
+            with store._store.snapshot():
+                marker = self._marker(store)
+                yield store, marker
+        except (sqlite3.Error, OSError, StorageError) as exc:
+            with self._lock:  # nothing computed in a failed read stays cached
+                for key in [k for k, entry in self._cache.items() if marker is not None and entry[0] == marker]:
+                    del self._cache[key]
+            raise translate(exc, str(self.path)) from exc
 
     @staticmethod
     def _marker(store: CellStore) -> tuple[Any, ...]:

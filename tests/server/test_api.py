@@ -140,6 +140,9 @@ def test_browser_gets_the_web_map_page_when_installed(store_path, tmp_path):
         assert c.get("/", headers={"accept": "text/html"}).json()["links"]
     (static / "index.html").write_text("<!doctype html><title>map</title>")
     (static / "app.js").write_text("// js")
+    (static / "vendor" / "maplibre-gl").mkdir(parents=True)
+    for name in ("maplibre-gl.mjs", "maplibre-gl.css"):
+        (static / "vendor" / "maplibre-gl" / name).write_text("/* vendor */")
     with make_client(store_path, static=static) as c:
         page = c.get("/", headers={"accept": "text/html,application/xhtml+xml,*/*;q=0.8"})
         assert page.headers["content-type"].startswith("text/html") and "<title>map</title>" in page.text
@@ -506,7 +509,7 @@ def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
 # -- docstring examples ---------------------------------------------------------------
 
 
-@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "zones"])
+@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "vendor", "warm", "zones"])
 def test_doctests(name):
     module = importlib.import_module(f"dggs.server.{name}")
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
