@@ -624,3 +624,33 @@ def test_distances_and_lines(a, b):
     assert (ok and np.isfinite(res)) or isinstance(res, dggs.CoordinateError), (a, b, res)
     ok, res = outcome(lambda: dggs.geodesic_to_cells(a, b, 1.0, 1.0, 3))
     assert ok or isinstance(res, dggs.DggsError), (a, b, res)
+
+
+# --------------------------------------------------------------------------
+# Issue 17: sizes, missing values, memory and time
+# --------------------------------------------------------------------------
+
+
+def test_grid_disk_max_cells_counts_the_real_disk():
+    """Item 11: max_cells counts the cells of the disk, not the padded row width of the kernel's bound."""
+    # 9 cells within 2 steps of a cell away from the icosahedron's vertices (docs/grid.md: 1 + 3 + 5)
+    row = dggs.grid_disk(["C401"], 2, max_cells=9)
+    assert sorted(c for c in row[0] if c) == dggs.grid_disk("C401", 2)
+    assert len(dggs.grid_disk("C401", 2)) == 9
+    for limit in range(12):  # the scalar and the list path agree at every limit
+        outcomes = []
+        for arg, first in (("C401", lambda r: r), (["C401"], lambda r: r[0])):
+            try:
+                outcomes.append(sorted(c for c in first(dggs.grid_disk(arg, 2, max_cells=limit)) if c))
+            except dggs.TooManyCellsError as e:
+                assert "C401" in str(e) and f"{limit:,}" in str(e)
+                outcomes.append("refused")
+        assert outcomes[0] == outcomes[1] == ("refused" if limit < 9 else dggs.grid_disk("C401", 2)), limit
+    # a disk is never larger than its level: level 1 has 120 cells (20 faces x 6), level 3 has 1,080
+    assert len(dggs.grid_disk("C4", 10**6)) == 120
+    assert {len([c for c in r if c]) for r in dggs.grid_disk(np.array(["C401"] * 100), 1000)} == {1080}
+    assert len(dggs.grid_disk("C401", 64, max_cells=1080)) == 1080
+    with pytest.raises(dggs.TooManyCellsError, match="over the limit of 5"):
+        dggs.grid_disk("C401", 64, max_cells=5)
+    with pytest.raises(dggs.TooManyCellsError, match="over the limit of 5"):
+        dggs.grid_disk(["C401"], 64, max_cells=5)
