@@ -654,3 +654,26 @@ def test_grid_disk_max_cells_counts_the_real_disk():
         dggs.grid_disk("C401", 64, max_cells=5)
     with pytest.raises(dggs.TooManyCellsError, match="over the limit of 5"):
         dggs.grid_disk(["C401"], 64, max_cells=5)
+
+
+def test_masked_entries_are_missing_values():
+    """Item 6: a numpy masked array's masked entries are missing values (as pandas NA), never their hidden data."""
+    strs = np.ma.masked_array(["C401", "C402", "A0"], mask=[0, 1, 0])
+    ints = np.ma.masked_array(dggs.str_to_int(["C401", "C402", "A0"]), mask=[0, 1, 0])
+    for ids in (strs, ints):
+        for call in (dggs.get_level, dggs.cell_to_parent, dggs.edge_neighbors, dggs.cell_to_latlng, dggs.cell_area):
+            with pytest.raises(dggs.InvalidCellError, match="at index 1 is not a valid cell id: a missing value"):
+                call(ids)
+        assert dggs.is_valid_cell(ids).tolist() == [True, False, True]
+    two_d = np.ma.masked_array([["C401", "C402"], ["A0", "B1"]], mask=[[0, 0], [0, 1]])
+    with pytest.raises(dggs.InvalidCellError, match=r"at index \(1, 1\) is not a valid cell id: a missing value"):
+        dggs.get_level(two_d)
+    with pytest.raises(dggs.InvalidCellError, match="missing"):
+        dggs.get_level([np.ma.masked])
+    # an array with a mask but nothing masked is an ordinary array
+    assert dggs.get_level(np.ma.masked_array(["C401", "A0"], mask=[0, 0])).tolist() == [3, 1]
+    lat = np.ma.masked_array([10.0, 20.0, 30.0], mask=[0, 1, 0])
+    for call in (lambda: dggs.latlng_to_cell(lat, 0.0, 5), lambda: dggs.latlng_to_cell(0.0, lat, 5)):
+        with pytest.raises(dggs.CoordinateError, match="at index 1 is a missing value"):
+            call()
+    assert dggs.latlng_to_cell(np.ma.masked_array([10.0], mask=[0]), 0.0, 5).tolist() == [dggs.latlng_to_cell(10.0, 0.0, 5)]
