@@ -677,3 +677,24 @@ def test_masked_entries_are_missing_values():
         with pytest.raises(dggs.CoordinateError, match="at index 1 is a missing value"):
             call()
     assert dggs.latlng_to_cell(np.ma.masked_array([10.0], mask=[0]), 0.0, 5).tolist() == [dggs.latlng_to_cell(10.0, 0.0, 5)]
+
+
+def test_boundary_points_are_checked_before_allocating():
+    """Item 9: cells x boundary points over a documented limit is refused before allocating (was numpy's MemoryError)."""
+    many = np.full(2000, "C401")
+    # 2,000 cells x 3 edges x 100,001 points = 600,006,000 points (8.9 GiB of float64 pairs)
+    for call in (
+        lambda: dggs.cell_to_boundary(many, densify=100_000),
+        lambda: dggs.cell_to_polygon(many, densify=100_000),
+        lambda: dggs.cells_to_geojson(many, densify=100_000),
+    ):
+        with pytest.raises(dggs.TooManyCellsError, match=r"2,000 cells .*600,00\d,\d{3} points.*over the limit of 50,000,000"):
+            call()
+    with pytest.raises(dggs.TooManyCellsError, match=r"2 cells .* 12 points.*limit of 11"):
+        dggs.cell_to_boundary(["C401", "C402"], densify=1, max_points=11)
+    assert np.asarray(dggs.cell_to_boundary(["C401", "C402"], densify=1, max_points=12)).shape == (2, 6, 2)
+    assert len(dggs.cells_to_geojson(["C401"], densify=2, max_points=10)["features"]) == 1  # a closed ring: 3 x 3 + 1
+    with pytest.raises(dggs.TooManyCellsError, match="limit of 9"):
+        dggs.cell_to_polygon("C401", densify=2, max_points=9)
+    with pytest.raises(dggs.DggsValueError, match="max_points -1"):
+        dggs.cell_to_boundary("C401", max_points=-1)
