@@ -16,13 +16,15 @@ from dggs.errors import DggsValueError, LevelError, TooManyCellsError
 
 from ._kernel.bits import MAX_LEVEL
 
-__all__ = ["MAX_CELLS", "K_LIMIT", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows"]
+__all__ = ["MAX_CELLS", "MAX_POINTS", "K_LIMIT", "check_point_count", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows"]
 
 #: Default limit on the cells one call may return (400 MB of integer ids).
 MAX_CELLS = 50_000_000
 #: Largest ``k`` (and ``max_steps``) the kernels take; a disk of this radius covers the globe at every level.
 K_LIMIT = 1 << 31
 _INT64_MAX = (1 << 63) - 1
+#: Default limit on the boundary points one call may build (800 MB of float64 pairs; more with shapely's copies).
+MAX_POINTS = 50_000_000
 #: Most points a caller may ask for along one edge.
 DENSIFY_LIMIT = 100_000
 
@@ -86,6 +88,29 @@ def check_size(total: int, max_cells: Any, what: str) -> None:
     if total > limit:
         raise TooManyCellsError(
             f"{what} would return {total:,} cells, over the limit of {limit:,} (raise max_cells to allow it)"
+        )
+
+
+def check_point_count(cells: int, per_cell: int, max_points: Any) -> None:
+    """Refuse, before allocating, to build more than ``max_points`` boundary points.
+
+    Raises
+    ------
+    TooManyCellsError
+        ``cells * per_cell`` is over the limit (the message names the cells, the points and the limit).
+    DggsValueError
+        ``max_points`` is not a non-negative integer or None.
+    """
+    if max_points is None:
+        limit = MAX_POINTS
+    elif not _is_int(max_points) or max_points < 0:
+        raise DggsValueError(f"max_points {max_points!r} must be a non-negative integer (or None for {MAX_POINTS:,})")
+    else:
+        limit = int(max_points)
+    if cells * per_cell > limit:
+        raise TooManyCellsError(
+            f"{cells:,} cells of {per_cell:,} boundary points would make {cells * per_cell:,} points, "
+            f"over the limit of {limit:,} (lower densify, or raise max_points to allow it)"
         )
 
 

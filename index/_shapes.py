@@ -23,7 +23,7 @@ import shapely
 from shapely.geometry import MultiPolygon, Polygon, box
 from shapely.geometry.polygon import orient
 
-from ._checks import check_densify
+from ._checks import check_densify, check_point_count
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 
@@ -31,8 +31,15 @@ _POLE_TOL = 1e-9  # degrees
 _WKB_POLYGON = 3
 
 
-def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False) -> np.ndarray:
-    """(N, 3 (densify + 1), 2) (lat, lng) points of valid ids, or closed (lng, lat) rings one point longer."""
+def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False, max_points: int | None = None) -> np.ndarray:
+    """(N, 3 (densify + 1), 2) (lat, lng) points of valid ids, or closed (lng, lat) rings one point longer.
+
+    Raises
+    ------
+    TooManyCellsError
+        More points than ``max_points`` (default :data:`dggs.index._checks.MAX_POINTS`), checked before allocating.
+    """
+    check_point_count(ids.shape[0], 3 * (densify + 1) + int(lnglat), max_points)
     out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
     kp.boundaries(ids.shape[0] * (densify + 1), ids, densify, out, lnglat)
     return out
@@ -213,13 +220,23 @@ def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: in
     return arr.cast(pa.binary()) if offsets[-1] < 2**31 - 1 else arr
 
 
-def wkb(ids: np.ndarray, densify: int | None) -> tuple[Any, np.ndarray, set[str]]:
+def _checked_groups(ids: np.ndarray, densify: int | None, max_points: int | None) -> list[tuple[np.ndarray, int]]:
+    """:func:`densify_groups`, after checking the points of all groups together against ``max_points``."""
+    groups = densify_groups(ids, densify)
+    if groups:
+        widest = max(3 * (d + 1) + 1 for _, d in groups)
+        total = sum(rows.shape[0] * (3 * (d + 1) + 1) for rows, d in groups)
+        check_point_count(ids.shape[0], widest, max_points) if len(groups) == 1 else check_point_count(1, total, max_points)
+    return groups
+
+
+def wkb(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> tuple[Any, np.ndarray, set[str]]:
     """WKB of each cell, its (N, 4) bounds and the geometry types present."""
     n = ids.shape[0]
     chunks = []
     bounds = np.empty((n, 4))
     types: set[str] = set()
-    for rows, d in densify_groups(ids, densify):
+    for rows, d in _checked_groups(ids, densify, max_points):
         coords = boundaries(ids[rows], d, lnglat=True)
         special = special_rings(coords)
         plain = rows[~special]
@@ -243,10 +260,10 @@ def wkb(ids: np.ndarray, densify: int | None) -> tuple[Any, np.ndarray, set[str]
     return _binary_array(chunks, n), bounds, types
 
 
-def geometries(ids: np.ndarray, densify: int | None) -> np.ndarray:
+def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> np.ndarray:
     """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call."""
     out = np.empty(ids.shape[0], dtype=object)
-    for rows, d in densify_groups(ids, densify):
+    for rows, d in _checked_groups(ids, densify, max_points):
         coords = boundaries(ids[rows], d, lnglat=True)
         special = special_rings(coords)
         out[rows[~special]] = shapely.polygons(coords[~special])
@@ -255,11 +272,11 @@ def geometries(ids: np.ndarray, densify: int | None) -> np.ndarray:
     return out
 
 
-def geoarrow(ids: np.ndarray, densify: int | None) -> tuple[Any, str]:
+def geoarrow(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> tuple[Any, str]:
     import pyarrow as pa
 
     """Native GeoArrow polygons (or multipolygons where any cell is split), separated x/y."""
-    geoms = geometries(ids, densify)
+    geoms = geometries(ids, densify, max_points)
     if geoms.size == 0:
         kind, coords, offsets = shapely.GeometryType.POLYGON, np.empty((0, 2)), (np.zeros(1, np.int64),) * 2
     else:

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from dggs.errors import DggsValueError, LevelMismatchError
+from dggs.errors import DggsValueError, LevelMismatchError, TooManyCellsError
 
 from ._checks import K_LIMIT, check_k, check_max_cells, check_radius, check_size
 from ._convert import ROWS, VALUE, Op, apply, apply_pair, id_name
@@ -36,16 +36,43 @@ def _are_neighbours(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return out
 
 
-def _rows(loop: Any, width: Callable[[int], int], what: str) -> Any:
-    """A kernel's padded rows of ``width`` cells per id, checked against ``max_cells`` before allocating."""
+def _rows(loop: Any, width: Callable[[int, int], int], what: str, count: Callable[..., int] | None = None) -> Any:
+    """A kernel's rows per id, padded with 0 to the largest real row, checked against ``max_cells`` before allocating.
+
+    ``width(k, level)`` bounds a row at the finest level present.  Where that
+    bound is over the limit, ``count`` (if any) counts the real rows first, with
+    the memory of two rings and work bounded by the limit.
+    """
 
     def rows(ids: np.ndarray, k: int, max_cells: int) -> np.ndarray:
-        check_size(ids.shape[0] * width(k), max_cells, f"{what} with k={k}")
-        out = np.empty((ids.shape[0], width(k)), dtype=np.uint64)
-        loop(ids.shape[0] * width(k), ids, k, out, np.empty(ids.shape[0], dtype=np.int64))
-        return out
+        n = ids.shape[0]
+        w = width(k, max(kh.level_bounds(ids)[1], 0))
+        if n * w > max_cells:
+            if count is None:
+                check_size(n * w, max_cells, f"{what} with k={k}")
+            else:
+                w = _counted(count, ids, k, max_cells, what)
+        out = np.empty((n, w), dtype=np.uint64)
+        counts = np.empty(n, dtype=np.int64)
+        loop(n * w, ids, k, out, counts)
+        m = int(counts.max()) if n else w
+        return out if m == w else np.ascontiguousarray(out[:, :m])
 
     return rows
+
+
+def _counted(count: Callable[..., int], ids: np.ndarray, k: int, max_cells: int, what: str) -> int:
+    """The largest real row, or :class:`TooManyCellsError` naming the first id whose row does not fit."""
+    n = ids.shape[0]
+    counts = np.zeros(n, dtype=np.int64)
+    bad = count(ids, k, max_cells // n, counts)
+    if bad >= 0:
+        cell, size = id_name(ids[bad]), int(counts[bad])
+        rows = f"at least {size:,} cells" if n == 1 else f"{n:,} rows, one of at least {size:,} cells ({n * size:,} with the padding)"
+        raise TooManyCellsError(
+            f"{what} of {cell!r} with k={k} would return {rows}, over the limit of {max_cells:,} (raise max_cells to allow it)"
+        )
+    return int(counts.max())
 
 
 def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
@@ -65,8 +92,8 @@ def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
 
 _NEIGHBOURS = Op(many=_neighbours, out=ROWS)
 _ARE_NEIGHBOURS = Op(many=_are_neighbours, out=VALUE)
-_DISK = Op(many=_rows(kg.disk, kg.disk_size_bound, "grid_disk"), out=ROWS, one=kg.disk_of)
-_RING = Op(many=_rows(kg.ring, kg.ring_size_bound, "grid_ring"), out=ROWS)
+_DISK = Op(many=_rows(kg.disk, kg.disk_width, "grid_disk", kg.disk_sizes), out=ROWS, one=kg.disk_of)
+_RING = Op(many=_rows(kg.ring, kg.ring_width, "grid_ring"), out=ROWS)
 _DISTANCE = Op(many=_distances, out=VALUE)
 
 
@@ -121,6 +148,9 @@ def grid_disk(cell: Any, k: int = 1, max_cells: int | None = None) -> Any:
     max_cells : int, optional
         Refuse outputs larger than this (default
         :data:`dggs.index.hierarchy.MAX_CELLS`); checked before allocating.
+        The output counts N rows of the largest real disk (no disk is larger
+        than its level); where the planar bound is over the limit, the disks
+        are counted first, with work bounded by the limit.
 
     Raises
     ------

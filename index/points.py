@@ -121,7 +121,7 @@ def cell_to_latlng(cell: Any) -> Any:
     return apply(_CENTRE, cell)
 
 
-def cell_to_boundary(cell: Any, densify: int = 0) -> Any:
+def cell_to_boundary(cell: Any, densify: int = 0, max_points: int | None = None) -> Any:
     """Corners of a cell as (lat, lng) pairs, counter-clockwise seen from outside.
 
     Parameters
@@ -130,6 +130,8 @@ def cell_to_boundary(cell: Any, densify: int = 0) -> Any:
         Cell id(s).
     densify : int
         Points to add along each (curved) edge; 0 gives the 3 corners.
+    max_points : int, optional
+        Refuse to build more boundary points than this in all (default 50 million).
 
     Returns
     -------
@@ -143,16 +145,19 @@ def cell_to_boundary(cell: Any, densify: int = 0) -> Any:
         A malformed id (the message names it).
     DggsValueError
         ``densify`` is not a non-negative integer, or is over the limit of points per edge.
+    TooManyCellsError
+        Cells x boundary points over ``max_points`` (default
+        :data:`dggs.index._checks.MAX_POINTS`, 50 million), checked before allocating.
 
     Examples
     --------
     >>> len(cell_to_boundary("C401")), len(cell_to_boundary("C401", densify=2))
     (3, 9)
     """
-    return apply(_BOUNDARY, cell, check_densify(densify))
+    return apply(_BOUNDARY, cell, check_densify(densify), False, max_points)
 
 
-def cell_to_polygon(cell: Any, densify: int | None = None) -> Any:
+def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | None = None) -> Any:
     """A cell as a shapely Polygon in (lng, lat), split at the antimeridian.
 
     Parameters
@@ -162,6 +167,8 @@ def cell_to_polygon(cell: Any, densify: int | None = None) -> Any:
     densify : int, optional
         Points added along each curved edge.  By default enough that the
         polygon's geodesic area on WGS84 is within 1e-6 of the cell's area.
+    max_points : int, optional
+        Refuse to build more boundary points than this in all (default 50 million).
 
     Returns
     -------
@@ -175,6 +182,9 @@ def cell_to_polygon(cell: Any, densify: int | None = None) -> Any:
         A malformed id (the message names it).
     DggsValueError
         ``densify`` is not None or a non-negative integer, or is over the limit of points per edge.
+    TooManyCellsError
+        Cells x boundary points over ``max_points`` (default
+        :data:`dggs.index._checks.MAX_POINTS`, 50 million), checked before allocating.
 
     Examples
     --------
@@ -182,10 +192,10 @@ def cell_to_polygon(cell: Any, densify: int | None = None) -> Any:
     >>> poly.geom_type, poly.is_valid
     ('Polygon', True)
     """
-    return apply(_POLYGON, cell, None if densify is None else check_densify(densify))
+    return apply(_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
 
 
-def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 16) -> dict[str, Any]:
+def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None) -> dict[str, Any]:
     """A GeoJSON FeatureCollection of cells (RFC 7946: lng/lat, CCW rings).
 
     Parameters
@@ -198,6 +208,8 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
     densify : int or None
         Points added along each curved edge (default 16, light files); None
         gives :func:`cell_to_polygon`'s area-exact default.
+    max_points : int, optional
+        Refuse to build more boundary points than this in all (default 50 million).
 
     Raises
     ------
@@ -206,6 +218,9 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
     DggsValueError
         ``properties`` do not give one row per cell, or ``densify`` is not None or a
         non-negative integer within the limit of points per edge.
+    TooManyCellsError
+        Cells x boundary points over ``max_points`` (default
+        :data:`dggs.index._checks.MAX_POINTS`, 50 million), checked before allocating.
 
     Examples
     --------
@@ -214,7 +229,7 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
     ('FeatureCollection', 2, {'cell': 'C402', 'level': 3, 'n': 2})
     """
     ids, kind = cells_in(cells)
-    polys = geometries(ids, None if densify is None else check_densify(densify))
+    polys = geometries(ids, None if densify is None else check_densify(densify), max_points)
     n = ids.shape[0]
     rows = property_rows(properties, n)
     lv = kh.levels(ids)

@@ -91,7 +91,7 @@ def _parse_sequence(seq: Any, container: str) -> _Parsed:
     parsed = _parse_strings(seq, kind)  # the common case: a flat list of str
     if parsed is not None:
         return parsed
-    if any(isinstance(x, bytearray) for x in seq):  # numpy would read its bytes as numbers
+    if any(isinstance(x, bytearray) or x is np.ma.masked for x in seq):  # numpy would read bytes as numbers, masked as NaN
         return _scan(seq, kind)
     try:
         arr = np.asarray(seq)
@@ -157,8 +157,21 @@ def _parse_pandas(s: Any, pd: Any) -> _Parsed:
     return p
 
 
+def _parse_masked(arr: np.ma.MaskedArray) -> _Parsed:
+    """A numpy masked array: its masked entries are missing values (None, as pandas NA), not their hidden data."""
+    kind = Kind("numpy", "str", arr.shape, dtype=arr.dtype)
+    data, mask = np.asarray(arr.data), np.ma.getmaskarray(arr)
+    if not mask.any():
+        return _parse_numpy(data, kind)
+    objs = data.astype(object)
+    objs[mask] = None
+    return _parse_numpy(objs, kind)
+
+
 def _parse_any(obj: Any) -> _Parsed:
     """Everything but the ``str``/``int`` fast paths of :func:`cells_in`."""
+    if isinstance(obj, np.ma.MaskedArray):
+        return _parse_masked(obj)
     if isinstance(obj, np.ndarray):
         return _parse_numpy(obj, Kind("numpy", "str", obj.shape, dtype=obj.dtype))
     if isinstance(obj, (list, tuple)):
@@ -213,7 +226,7 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
         v, kind = (obj if strings.valid_int(obj) else 0), SCALAR_INT
     else:
         p = _parse_any(obj)
-        if nulls and p.bad >= 0 and isinstance(obj, np.ndarray) and obj.dtype.kind in "iu":  # raw ints kept in place
+        if nulls and p.bad >= 0 and type(obj) is np.ndarray and obj.dtype.kind in "iu":  # raw ints kept in place
             p.bad = int(codec.max_level(p.ids)[1])  # the first bad id that is not the null id
         return p.check()
     if not v:

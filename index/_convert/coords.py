@@ -146,6 +146,13 @@ def _as_numbers(value: Any, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
     if (_container(value) or ("",))[0] == "arrow":
         return _from_arrow(value, name)
+    if isinstance(value, np.ma.MaskedArray):  # masked entries are missing values, not their hidden data
+        mask = np.ma.getmaskarray(value)
+        if mask.any():
+            i = int(np.flatnonzero(mask)[0])
+            at = i if mask.ndim <= 1 else tuple(int(j) for j in np.unravel_index(i, mask.shape))
+            raise CoordinateError(f"{name} at index {at} is a missing value (masked)")
+        value = np.asarray(value.data)
     if isinstance(value, (list, tuple)) and not set(map(type, value)) <= _PLAIN_NUMBERS:
         # numpy turns [1.0, True] into floats: judge the elements themselves
         try:

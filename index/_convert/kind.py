@@ -81,7 +81,7 @@ def fail(value: Any, index: int | None, form: str | None, shape: tuple[int, ...]
     value = value.item() if isinstance(value, np.generic) else value
     f = value_id(value)[1]
     if f is None:
-        missing = value is None or (isinstance(value, float) and math.isnan(value)) or type(value).__name__ == "NAType"
+        missing = value is None or value is np.ma.masked or (isinstance(value, float) and math.isnan(value)) or type(value).__name__ == "NAType"
         reason = _MISSING_REASON if missing else _NESTED_REASON if isinstance(value, _NESTED) else _TYPE_REASON
     else:
         reason = _MIX_REASON if form and f != form else _STR_REASON if f == "str" else _INT_REASON

@@ -16,8 +16,8 @@ Conventions
   corner ``i + 1`` of the cell's counter-clockwise corners (as
   ``edge_neighbors`` on string ids).
 * Disk and ring rows are sorted ascending and padded with 0; ``counts``
-  holds each row's length.  The caller allocates ``(N, disk_size_bound(k))``
-  (or ``ring_size_bound(k)``).
+  holds each row's length.  The caller allocates ``(N, disk_width(k, level))``
+  (or ``ring_width``), or the largest real disk (``disk_sizes``).
 * Distances are exact: a count of mirror lines in a planar chart where that is
   provably the distance on the sphere, else a bidirectional breadth-first search.
 """
@@ -35,15 +35,8 @@ from .bits import DIGIT_LOW_BITS, MARKER, MAX_LEVEL, level_of
 from .bits import is_valid as _bits_is_valid
 from .grid_tables import disk_size_bound, ring_size_bound
 
-__all__ = [
-    "are_neighbours",
-    "disk",
-    "disk_size_bound",
-    "neighbours",
-    "next_ring",
-    "ring",
-    "ring_size_bound",
-]
+__all__ = ["are_neighbours", "disk", "disk_of", "disk_size_bound", "disk_sizes", "disk_width", "level_cells",
+           "neighbours", "next_ring", "ring", "ring_size_bound", "ring_width"]
 
 # The orientation parity below counts digits 0 and 2 (codes 1 and 3: the low bit): it needs these mirror children.
 assert _t.CHILD_FLIP.tolist() == [True, False, True]
@@ -226,6 +219,8 @@ def _disk_row(cell: np.uint64, k: int, row: np.ndarray, table: np.ndarray) -> in
     head, tail = 0, 1
     for _ in range(k):
         end = tail  # ring j = row[head:end]
+        if head == end:
+            break  # the disk covers the level: later rings are empty
         while head < end:
             x = row[head]
             head += 1
@@ -260,7 +255,7 @@ def _disk_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
         Valid ids, any mix of levels.
     k : int
         Radius, >= 0.
-    out : (N, M) uint64, M >= disk_size_bound(k)
+    out : (N, M) uint64, M >= the largest disk (:func:`disk_width`, or :func:`disk_sizes`)
         Receives row i sorted ascending, padded with 0.
     counts : (N,) int64
         Receives the size of row i.
@@ -270,12 +265,10 @@ def _disk_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
     Breadth-first, ring after ring; a small hash set per origin holds the
     cells seen (1.5-2x faster here than sorting each ring's candidates against
     the last two rings, as :func:`ring` does).  Origins run in parallel chunks.
-    Raises ValueError if ``out`` is narrower than the bound.
+    Raises ValueError if a disk outgrows ``out``.
     """
     n = ids.shape[0]
-    width = disk_size_bound(k)
-    if out.shape[1] < width:
-        raise ValueError("out has fewer columns than disk_size_bound(k)")
+    width = out.shape[1]
     size = 64
     while size < 2 * width:
         size *= 2
@@ -292,15 +285,13 @@ def _disk_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
 
 
 def _ring_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> None:
-    """Cells exactly ``k`` steps from each id, as :func:`disk` with ``out`` (N, >= ring_size_bound(k)).
+    """Cells exactly ``k`` steps from each id, as :func:`disk` with ``out`` (N, >= :func:`ring_width`).
 
     Breadth-first rings deduplicated against the last two rings only (the
     neighbours of ring j lie in rings j - 1, j and j + 1): O(k) memory per origin.
     """
     n = ids.shape[0]
-    width = max(ring_size_bound(k), 6)
-    if out.shape[1] < ring_size_bound(k):
-        raise ValueError("out has fewer columns than ring_size_bound(k)")
+    width = max(out.shape[1], 6)  # no ring is wider than ring_size_bound(k) or its level (ring_width)
     chunk = 1024
     for c in prange((n + chunk - 1) // chunk):
         cand = np.empty(3 * width, dtype=np.uint64)
@@ -309,6 +300,8 @@ def _ring_impl(ids: np.ndarray, k: int, out: np.ndarray, counts: np.ndarray) -> 
             bufs[1, 0] = ids[i]
             a, b, nprev, ncur = 0, 1, 0, 1  # buffers of rings j - 1 and j
             for _ in range(k):
+                if ncur == 0:
+                    break  # past the far side of the level: every later ring is empty
                 d = 3 - a - b
                 nn = next_ring(bufs[b, :ncur], bufs[a, :nprev], bufs[d], cand)
                 if nn < 0 or nn > out.shape[1]:
@@ -330,16 +323,65 @@ _disk_serial = disk.serial  # for disk_of: compiled code calls a dispatcher, not
 
 
 @njit(cache=True, nogil=True)
+def level_cells(level: int) -> int:
+    """Cells at ``level``: 20 at level 0, ``120 * 3 ** (level - 1)`` after (docs/grid.md)."""
+    return 20 if level == 0 else 120 * 3 ** (level - 1)
+
+
+@njit(cache=True, nogil=True)
+def disk_width(k: int, level: int) -> int:
+    """Most cells within ``k`` steps of a cell at ``level``: the planar bound, or the whole level."""
+    cells = level_cells(level)
+    return cells if k >= cells else min(disk_size_bound(k), cells)
+
+
+@njit(cache=True, nogil=True)
+def ring_width(k: int, level: int) -> int:
+    """Most cells exactly ``k`` steps from a cell at ``level``."""
+    cells = level_cells(level)
+    return cells if k >= cells else min(ring_size_bound(k), cells)
+
+
+@njit(cache=True, nogil=True)
+def disk_sizes(ids: np.ndarray, k: int, cap: int, counts: np.ndarray) -> int:
+    """``counts[i]`` = the size of the disk of radius ``k`` around ``ids[i]``, without storing the disk.
+
+    Counts ring after ring (:func:`next_ring`: memory of two rings), and stops
+    at the first id whose disk passes ``cap`` cells: returns its index (its
+    count is then the first ring total over ``cap``), else -1.  The work is at
+    most ``cap`` cells per id.
+    """
+    for i in range(ids.shape[0]):
+        prev = np.empty(0, dtype=np.uint64)
+        cur = np.full(1, ids[i], dtype=np.uint64)
+        size = 1
+        for _ in range(k):
+            if cur.shape[0] == 0 or size > cap:
+                break
+            dest = np.empty(3 * cur.shape[0], dtype=np.uint64)  # three neighbours per cell
+            m = next_ring(cur, prev, dest, np.empty(3 * cur.shape[0], dtype=np.uint64))
+            prev, cur = cur, dest[:m]
+            size += m
+        counts[i] = size
+        if size > cap:
+            return i
+    return -1
+
+
+@njit(cache=True, nogil=True)
 def disk_of(cell: int, k: int, max_cells: int) -> np.ndarray:
     """The disk of one id (int64), sorted (the single-id entry).
 
     Empty (a miss, which the caller explains) if it is no id, if ``k`` is over
-    64 (the general path takes any k), or if the row the disk needs is over
-    ``max_cells`` (as the general path counts it).
+    64 (the general path takes any k), or if the row the disk may need
+    (:func:`disk_width`) is over ``max_cells``: the general path then counts the real disk.
     """
-    if k > 64 or disk_size_bound(k) > max_cells or not _bits_is_valid(np.uint64(cell)):
+    if k > 64 or not _bits_is_valid(np.uint64(cell)):
         return np.empty(0, dtype=np.uint64)
-    out = np.empty((1, disk_size_bound(k)), dtype=np.uint64)
+    width = disk_width(k, level_of(np.uint64(cell)))
+    if width > max_cells:
+        return np.empty(0, dtype=np.uint64)
+    out = np.empty((1, width), dtype=np.uint64)
     counts = np.empty(1, dtype=np.int64)
     ids = np.empty(1, dtype=np.uint64)
     ids[0] = np.uint64(cell)

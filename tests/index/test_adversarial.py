@@ -624,3 +624,77 @@ def test_distances_and_lines(a, b):
     assert (ok and np.isfinite(res)) or isinstance(res, dggs.CoordinateError), (a, b, res)
     ok, res = outcome(lambda: dggs.geodesic_to_cells(a, b, 1.0, 1.0, 3))
     assert ok or isinstance(res, dggs.DggsError), (a, b, res)
+
+
+# --------------------------------------------------------------------------
+# Issue 17: sizes, missing values, memory and time
+# --------------------------------------------------------------------------
+
+
+def test_grid_disk_max_cells_counts_the_real_disk():
+    """Item 11: max_cells counts the cells of the disk, not the padded row width of the kernel's bound."""
+    # 9 cells within 2 steps of a cell away from the icosahedron's vertices (docs/grid.md: 1 + 3 + 5)
+    row = dggs.grid_disk(["C401"], 2, max_cells=9)
+    assert sorted(c for c in row[0] if c) == dggs.grid_disk("C401", 2)
+    assert len(dggs.grid_disk("C401", 2)) == 9
+    for limit in range(12):  # the scalar and the list path agree at every limit
+        outcomes = []
+        for arg, first in (("C401", lambda r: r), (["C401"], lambda r: r[0])):
+            try:
+                outcomes.append(sorted(c for c in first(dggs.grid_disk(arg, 2, max_cells=limit)) if c))
+            except dggs.TooManyCellsError as e:
+                assert "C401" in str(e) and f"{limit:,}" in str(e)
+                outcomes.append("refused")
+        assert outcomes[0] == outcomes[1] == ("refused" if limit < 9 else dggs.grid_disk("C401", 2)), limit
+    # a disk is never larger than its level: level 1 has 120 cells (20 faces x 6), level 3 has 1,080
+    assert len(dggs.grid_disk("C4", 10**6)) == 120
+    assert {len([c for c in r if c]) for r in dggs.grid_disk(np.array(["C401"] * 100), 1000)} == {1080}
+    assert len(dggs.grid_disk("C401", 64, max_cells=1080)) == 1080
+    with pytest.raises(dggs.TooManyCellsError, match="over the limit of 5"):
+        dggs.grid_disk("C401", 64, max_cells=5)
+    with pytest.raises(dggs.TooManyCellsError, match="over the limit of 5"):
+        dggs.grid_disk(["C401"], 64, max_cells=5)
+
+
+def test_masked_entries_are_missing_values():
+    """Item 6: a numpy masked array's masked entries are missing values (as pandas NA), never their hidden data."""
+    strs = np.ma.masked_array(["C401", "C402", "A0"], mask=[0, 1, 0])
+    ints = np.ma.masked_array(dggs.str_to_int(["C401", "C402", "A0"]), mask=[0, 1, 0])
+    for ids in (strs, ints):
+        for call in (dggs.get_level, dggs.cell_to_parent, dggs.edge_neighbors, dggs.cell_to_latlng, dggs.cell_area):
+            with pytest.raises(dggs.InvalidCellError, match="at index 1 is not a valid cell id: a missing value"):
+                call(ids)
+        assert dggs.is_valid_cell(ids).tolist() == [True, False, True]
+    two_d = np.ma.masked_array([["C401", "C402"], ["A0", "B1"]], mask=[[0, 0], [0, 1]])
+    with pytest.raises(dggs.InvalidCellError, match=r"at index \(1, 1\) is not a valid cell id: a missing value"):
+        dggs.get_level(two_d)
+    with pytest.raises(dggs.InvalidCellError, match="missing"):
+        dggs.get_level([np.ma.masked])
+    # an array with a mask but nothing masked is an ordinary array
+    assert dggs.get_level(np.ma.masked_array(["C401", "A0"], mask=[0, 0])).tolist() == [3, 1]
+    lat = np.ma.masked_array([10.0, 20.0, 30.0], mask=[0, 1, 0])
+    for call in (lambda: dggs.latlng_to_cell(lat, 0.0, 5), lambda: dggs.latlng_to_cell(0.0, lat, 5)):
+        with pytest.raises(dggs.CoordinateError, match="at index 1 is a missing value"):
+            call()
+    assert dggs.latlng_to_cell(np.ma.masked_array([10.0], mask=[0]), 0.0, 5).tolist() == [dggs.latlng_to_cell(10.0, 0.0, 5)]
+
+
+def test_boundary_points_are_checked_before_allocating():
+    """Item 9: cells x boundary points over a documented limit is refused before allocating (was numpy's MemoryError)."""
+    many = np.full(2000, "C401")
+    # 2,000 cells x 3 edges x 100,001 points = 600,006,000 points (8.9 GiB of float64 pairs)
+    for call in (
+        lambda: dggs.cell_to_boundary(many, densify=100_000),
+        lambda: dggs.cell_to_polygon(many, densify=100_000),
+        lambda: dggs.cells_to_geojson(many, densify=100_000),
+    ):
+        with pytest.raises(dggs.TooManyCellsError, match=r"2,000 cells .*600,00\d,\d{3} points.*over the limit of 50,000,000"):
+            call()
+    with pytest.raises(dggs.TooManyCellsError, match=r"2 cells .* 12 points.*limit of 11"):
+        dggs.cell_to_boundary(["C401", "C402"], densify=1, max_points=11)
+    assert np.asarray(dggs.cell_to_boundary(["C401", "C402"], densify=1, max_points=12)).shape == (2, 6, 2)
+    assert len(dggs.cells_to_geojson(["C401"], densify=2, max_points=10)["features"]) == 1  # a closed ring: 3 x 3 + 1
+    with pytest.raises(dggs.TooManyCellsError, match="limit of 9"):
+        dggs.cell_to_polygon("C401", densify=2, max_points=9)
+    with pytest.raises(dggs.DggsValueError, match="max_points -1"):
+        dggs.cell_to_boundary("C401", max_points=-1)
