@@ -49,10 +49,12 @@ test-all: $(STAMP) static-if-npm
 	HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-ci} $(PY) -m pytest -q -m 'not browser'
 
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
-# needs root), driven by selenium against a `dggs serve` process on 127.0.0.1.
+# needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout
+# (no sandbox user), so a /tmp that only root may write to does not stop it.
 test-browser: $(STAMP) $(STATIC)
 	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
-		(apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q chromium chromium-driver)
+		(apt-get -o APT::Sandbox::User=root update -q && \
+		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q chromium chromium-driver)
 	$(PY) -m pytest -q -m browser tests/server
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.

@@ -51,7 +51,7 @@ def _pylist(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
     """Nested lists shaped ``kind.shape + trailing``; nulls dropped from the innermost trailing lists."""
     if not trailing:
         return _nest(_py_values(ids, kind.form), kind.shape)
-    rows = ids.reshape(-1, trailing[-1])
+    rows = ids.reshape(prod(kind.shape) * prod(trailing[:-1]), trailing[-1])  # explicit: rows may be empty
     keep = rows != 0
     vals = _py_values(rows[keep], kind.form)
     ends = np.cumsum(keep.sum(axis=1)).tolist()
@@ -98,7 +98,7 @@ def _arrow(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...]) -> Any:
     if not trailing:
         out = _arrow_values(ids, kind, pa)
     else:  # list arrays: nulls dropped from the innermost lists
-        rows = ids.reshape(-1, trailing[-1])
+        rows = ids.reshape(prod(kind.shape) * prod(trailing[:-1]), trailing[-1])  # explicit: rows may be empty
         keep = rows != 0
         offsets = np.zeros(rows.shape[0] + 1, dtype=np.int32)
         np.cumsum(keep.sum(axis=1), out=offsets[1:])
