@@ -28,9 +28,27 @@ import types
 from collections.abc import Callable
 from typing import Any
 
-import numba
-
 from dggs.errors import DggsValueError
+
+
+def _check_numba_threads() -> None:
+    # numba raises a bare ValueError while it is imported when NUMBA_NUM_THREADS < 1 (numba/np/ufunc/parallel.py)
+    env = os.environ.get("NUMBA_NUM_THREADS", "").strip()
+    try:
+        bad = int(env) < 1
+    except ValueError:
+        return  # not an integer: numba warns and takes the number of cores
+    if bad:
+        raise DggsValueError(f"NUMBA_NUM_THREADS {env!r} must be a positive integer")
+
+
+_check_numba_threads()
+
+import numba  # noqa: E402 - after the check above
+
+from ._cache import install  # noqa: E402 - the package's compiled cache, before any kernel is decorated
+
+install()
 
 #: Smallest input (in items of work) that runs on several threads.
 PARALLEL_MIN = 8192

@@ -11,3 +11,6 @@ The modules: :mod:`.bits` (the id layout), :mod:`.codec` (strings <-> ids),
 children, compaction), :mod:`.grid` and :mod:`.grid_tables` (neighbours,
 disks, rings, distances).
 """
+
+# First, before any kernel module imports numba: checks NUMBA_NUM_THREADS and installs the package's compiled cache
+from dggs.geometry import _parallel as _parallel
