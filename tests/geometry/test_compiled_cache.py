@@ -102,6 +102,7 @@ def pristine(tmp_path_factory, fresh) -> Path:
 # -- item 7: an edit of one kernel source is seen by the cached kernels of every module that inlined it -----
 
 
+@pytest.mark.slow  # fresh processes compiling every kernel into new caches: make test-all
 def test_an_edit_of_the_geometry_kernel_reaches_the_cached_index_kernels(tmp_path):
     pkg = _copy_package(tmp_path)
     env = _env(tmp_path, pkg)
@@ -131,6 +132,7 @@ def test_the_cache_directory_is_named_by_the_sources(tmp_path):
 # -- item 12: read-only installs -------------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # fresh processes compiling every kernel into new caches: make test-all
 def test_read_only_package_and_home_fall_back_to_a_temp_directory_with_one_warning(tmp_path, fresh):
     pkg = _copy_package(tmp_path / "ro")
     (tmp_path / "ro" / "home").mkdir()
@@ -144,6 +146,7 @@ def test_read_only_package_and_home_fall_back_to_a_temp_directory_with_one_warni
     assert _ok(again) == fresh
 
 
+@pytest.mark.slow  # fresh processes compiling every kernel into new caches: make test-all
 def test_nothing_writable_at_all_compiles_without_a_cache_and_one_warning(tmp_path, fresh):
     if os.geteuid() != 0:
         pytest.fail("needs a private mount namespace to make the system temp directories read-only")
@@ -155,6 +158,7 @@ def test_nothing_writable_at_all_compiles_without_a_cache_and_one_warning(tmp_pa
     assert proc.stderr.count("CacheWarning") == 1, proc.stderr
 
 
+@pytest.mark.slow  # fresh processes compiling every kernel into new caches: make test-all
 def test_a_read_only_install_with_a_writable_home_uses_its_shipped_cache(tmp_path, fresh):
     pkg = _copy_package(tmp_path / "ro")
     assert _ok(_run(CALL, _env(tmp_path, pkg))) == fresh  # the build step: fills the package's own cache
@@ -193,6 +197,7 @@ def _damage(files: list[Path], how: str) -> None:
             path.write_bytes(b"")
 
 
+@pytest.mark.slow  # ten fresh processes compiling again: make test-all
 @pytest.mark.parametrize("suffix", [".nbi", ".nbc"])
 @pytest.mark.parametrize("how", ["truncate", "zero", "random", "swap", "empty"])
 def test_a_damaged_cache_file_is_compiled_again(tmp_path, pristine, fresh, suffix, how):
