@@ -86,7 +86,8 @@ def test_two_cli_writers_at_two_levels(tmp_path):
     outs = [(p.wait(), p.communicate()) for p in procs]
     assert sorted(code for code, _ in outs) == [0, 1], outs
     _, (_, err) = next(o for o in outs if o[0] == 1)
-    assert "level" in err and "Traceback" not in err and len(err.strip().splitlines()) == 1
+    # the loser: a level mismatch, or, if the winner held the store past its lock timeout, a lock error
+    assert ("level" in err or "locked" in err) and "Traceback" not in err and len(err.strip().splitlines()) == 1
     with CellStore(db, readonly=True) as store:
         store.check()
         assert store.count() == 3000
