@@ -27,11 +27,13 @@ from typing import Any
 
 import numpy as np
 
-from dggs.errors import DggsValueError
+from dggs.errors import DggsValueError, TooManyCellsError
 
 from ._checks import check_max_cells, check_radius, check_size
 from ._convert import ROWS, VALUES, Op, apply, format_int
 from ._corners import MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
+from ._kernel import hierarchy as kh
+from ._kernel.grid_tables import disk_size_bound
 from ._shapes import boundaries
 
 __all__ = [
@@ -60,22 +62,54 @@ def _vertex_neighbours(ids: np.ndarray) -> np.ndarray:
     return out
 
 
+def _disk_bound(level: int, k: int) -> int:
+    """A proven upper bound of the cells within ``k`` corner-sharing steps of a cell at ``level``.
+
+    One corner-sharing step joins two cells of one corner's fan of at most 12 cells, at most
+    6 edge steps apart the shorter way around it, so the vertex disk of radius k lies in the
+    edge disk of radius 6k (:func:`dggs.index._kernel.grid_tables.disk_size_bound`), and in
+    the level.
+    """
+    return min(disk_size_bound(6 * k), 20 if level == 0 else 120 * 3 ** (level - 1))
+
+
+def _not_in(values: np.ndarray, sorted_ring: np.ndarray) -> np.ndarray:
+    """The entries of ``values`` not in the sorted array ``sorted_ring``."""
+    if sorted_ring.size == 0:
+        return values
+    at = np.minimum(np.searchsorted(sorted_ring, values), sorted_ring.size - 1)
+    kept: np.ndarray = values[sorted_ring[at] != values]
+    return kept
+
+
 def _disk_vertex(start: int, k: int, max_cells: int) -> np.ndarray:
-    seen = np.array([start], dtype=np.uint64)
-    frontier = seen
+    # Breadth-first rings: the neighbours of ring i lie in rings i - 1, i and i + 1, so a new
+    # ring is deduplicated against the last two rings only (work bounded by the output).
+    rings = [np.array([start], dtype=np.uint64)]
+    before = np.zeros(0, dtype=np.uint64)
+    total = 1
     for _ in range(k):
-        fan, _ = all_fans(frontier)
-        new = np.setdiff1d(np.unique(fan), seen, assume_unique=False)
-        new = new[new != 0]
+        fan, _ = all_fans(rings[-1])
+        new = np.unique(fan)
+        new = _not_in(_not_in(new[new != 0], rings[-1]), before)
         if new.size == 0:
             break
-        check_size(seen.size + new.size, max_cells, f"grid_disk_vertex with k={k}")
-        seen = np.union1d(seen, new)
-        frontier = new
-    return seen
+        total += int(new.size)
+        check_size(total, max_cells, f"grid_disk_vertex with k={k}")
+        before = rings[-1]
+        rings.append(new)
+    disk: np.ndarray = np.sort(np.concatenate(rings))
+    return disk
 
 
 def _disks_vertex(ids: np.ndarray, k: int, max_cells: int) -> np.ndarray:
+    levels = kh.levels(ids) if ids.size else np.zeros(0, dtype=np.int64)
+    bound = max((_disk_bound(int(lv), k) for lv in np.unique(levels)), default=1)
+    if bound > max_cells:
+        raise TooManyCellsError(
+            f"grid_disk_vertex with k={k} may return up to {bound:,} cells per disk, over the limit of "
+            f"{max_cells:,} (raise max_cells to allow it)"
+        )
     disks = [_disk_vertex(int(c), k, max_cells) for c in ids]
     width = max((d.size for d in disks), default=1)
     check_size(len(disks) * width, max_cells, f"grid_disk_vertex with k={k}")
@@ -237,6 +271,8 @@ def grid_disk_vertex(cell: Any, k: int = 1, max_cells: int | None = None) -> Any
         ``k`` is not a non-negative integer, or ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
         A disk would exceed ``max_cells``, or ``k`` is past :data:`dggs.index._checks.K_LIMIT`.
+        Refused before any work when a proven bound of the disk (the edge disk of radius
+        6k, capped by the cells of the level) exceeds ``max_cells``; the message names k and the bound.
 
     Examples
     --------

@@ -147,3 +147,42 @@ def test_errors():
         assert not is_valid_vertex(bad)
         with pytest.raises(DggsValueError):
             vertex_to_latlng(bad)
+
+
+def test_disk_refused_before_any_work(monkeypatch):
+    """Issue 17 item 10: a disk whose proven size bound is over max_cells is refused before the first ring.
+
+    The bound is the edge disk of radius 6k (a corner-sharing step crosses at most 6 edges, the
+    shorter way around a 12-cell corner), capped by the cells of the level.
+    """
+    import dggs.index.vertex as vx
+
+    calls = []
+    real = vx.all_fans
+    monkeypatch.setattr(vx, "all_fans", lambda ids: calls.append(ids.size) or real(ids))
+    with pytest.raises(dggs.TooManyCellsError, match=r"k=300.*\d"):
+        grid_disk_vertex("C4" + "0" * 27, 300, max_cells=1000)
+    assert calls == []
+
+
+def test_disk_rings_deduplicate_against_last_two_only(monkeypatch):
+    """Issue 17 item 10: growing a ring never compares against everything seen (no union over the whole disk)."""
+    import dggs.index.vertex as vx
+
+    class NoWholeDiskSets:
+        """numpy for vertex.py, without the set operations that would compare against the whole disk."""
+
+        def __getattr__(self, name):
+            if name in ("union1d", "setdiff1d", "isin", "in1d"):
+                raise AssertionError(f"np.{name} over the disk")
+            return getattr(np, name)
+
+    monkeypatch.setattr(vx, "np", NoWholeDiskSets())
+    got = grid_disk_vertex("C4012010", 6)
+    # expected: breadth-first search over vertex_neighbors, independently of the ring code
+    seen = {"C4012010"}
+    front = {"C4012010"}
+    for _ in range(6):
+        front = {n for c in front for n in vertex_neighbors(c)} - seen
+        seen |= front
+    assert got == sorted(seen)
