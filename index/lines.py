@@ -162,6 +162,17 @@ _SAMPLES_PER_EDGE = 4
 #: Bisection stops at this length (metres): two cells that still meet only at a corner there
 #: are joined around that corner.
 _CORNER_M = 1e-4
+#: Cells per short cell edge of line length in the size bound checked before sampling.  In the
+#: plane a segment crosses the six line families of the kisrhombille (spacings 3 and sqrt 3
+#: short edges, :func:`dggs.index._kernel.grid_tables.line_spacings`) at most
+#: 2 (1/3 + 1/sqrt 3) = 1.82 times per short edge (the |cos| of three directions 60 degrees
+#: apart sum to at most 2); the projection's distortion raised that to 1.98 on random lines at
+#: levels 3-10, so 3 leaves a margin of half.
+_CELLS_PER_EDGE = 3.0
+#: Cells the bound adds for the ends and the face crossings (up to 6 line families per face).
+_CELLS_EXTRA = 24
+#: Samples converted at once (bounds the memory of sampling by this, not by the line).
+_CHUNK = 1 << 20
 
 
 def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int) -> np.ndarray:
@@ -234,8 +245,9 @@ def geodesic_to_cells(
     as_int : bool
         Return uint64 ids instead of strings.
     max_cells : int, optional
-        Refuse lines longer than this many cells (estimated from the length
-        before any sampling; default :data:`dggs.index.hierarchy.MAX_CELLS`).
+        Refuse lines longer than this many cells (an upper estimate from the
+        length, 3 cells per short edge plus 24, checked before any sampling;
+        default :data:`dggs.index.hierarchy.MAX_CELLS`).
 
     Returns
     -------
@@ -250,7 +262,7 @@ def geodesic_to_cells(
     DggsValueError
         ``max_cells`` is not None or a non-negative integer.
     TooManyCellsError
-        The line would have more than ``max_cells`` cells.
+        The line could have more than ``max_cells`` cells (the upfront estimate, or the cells found).
 
     Examples
     --------
@@ -268,16 +280,30 @@ def geodesic_to_cells(
     _check_range(np.array([lat1, lat2]), np.array([lng1, lng2]), "a")
     az, _, dist = _geod().inv(lng1, lat1, lng2, lat2)
     edge = level_table(level)[level]["short_edge_m"]
-    check_size(int(math.ceil(2.0 * dist / edge)) + 1, max_cells, "geodesic_to_cells")
+    check_size(int(math.ceil(_CELLS_PER_EDGE * dist / edge)) + _CELLS_EXTRA, max_cells, "geodesic_to_cells")
     line = (lat1, lng1, az)
     n = max(int(math.ceil(dist * _SAMPLES_PER_EDGE / edge)), 1)
-    s = np.linspace(0.0, dist, n + 1)
-    ids = _cells_at(line, s, level)
-    ids[-1] = _cells_at((lat2, lng2, 0.0), np.zeros(1), level)[0]  # the end point itself
-    keep = np.ones(ids.shape[0], dtype=bool)
-    keep[1:] = ids[1:] != ids[:-1]
-    idx = np.flatnonzero(keep)
-    cells, starts = ids[idx], s[idx]
+    step = dist / n  # sample i at i * step, the last at dist, as np.linspace(0, dist, n + 1)
+    kept_ids: list[np.ndarray] = []
+    kept_at: list[np.ndarray] = []
+    last = None
+    for lo in range(0, n + 1, _CHUNK):
+        at = np.arange(lo, min(lo + _CHUNK, n + 1), dtype=np.int64)
+        s = at * step
+        if at[-1] == n:
+            s[-1] = dist
+        ids = _cells_at(line, s, level)
+        if at[-1] == n:
+            ids[-1] = _cells_at((lat2, lng2, 0.0), np.zeros(1), level)[0]  # the end point itself
+        keep = np.ones(ids.shape[0], dtype=bool)
+        keep[1:] = ids[1:] != ids[:-1]
+        if last is not None:
+            keep[0] = ids[0] != last
+        last = ids[-1]
+        kept_ids.append(ids[keep])
+        kept_at.append(at[keep])
+    cells, idx = np.concatenate(kept_ids), np.concatenate(kept_at)
+    starts = np.where(idx == n, dist, idx * step)
     gaps = np.flatnonzero(~_neighbours(cells[:-1], cells[1:])) if cells.size > 1 else np.zeros(0, dtype=np.int64)
     if gaps.size:
         parts: list[np.ndarray] = []
@@ -285,7 +311,7 @@ def geodesic_to_cells(
         for g in gaps.tolist():
             parts.append(cells[prev : g + 1])
             # the stretch runs from the last sample in cells[g] to the first in cells[g + 1]
-            last_a = s[idx[g + 1] - 1]
+            last_a = (idx[g + 1] - 1) * step
             fill = _between(line, level, float(last_a), int(cells[g]), float(starts[g + 1]), int(cells[g + 1]))
             parts.append(np.array(fill, dtype=np.uint64))
             prev = g + 1

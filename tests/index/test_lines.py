@@ -210,3 +210,20 @@ def test_features_doc_examples_run():
     namespace: dict = {}
     for block in blocks:
         exec(compile(block, "docs/features.md", "exec"), namespace)
+
+
+def test_long_line_refused_before_sampling(monkeypatch):
+    """Issue 17 item 10: a near-antipodal line at level 28 is refused by the upfront estimate, never sampled.
+
+    Its 2 dist / edge + 1 estimate (49.7 million) passed the 50 million default while the line
+    needs more cells (lines meet up to about 2 cells per short edge here, more under the
+    projection's distortion) and 99 million samples; the estimate must bound the output.
+    """
+    import dggs.index.lines as ln
+
+    def no_sampling(*args, **kwargs):
+        raise AssertionError("sampled before the size check")
+
+    monkeypatch.setattr(ln, "_cells_at", no_sampling)
+    with pytest.raises(dggs.TooManyCellsError, match="geodesic_to_cells"):
+        geodesic_to_cells(0, 0, 0.5, 179.9, 28)
