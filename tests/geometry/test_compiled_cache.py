@@ -52,6 +52,7 @@ def _run(code: str, env: dict[str, str], read_only: tuple[Path, ...] = (), cwd: 
     """Run ``code`` in a new interpreter (in HOME: the work tree's dggs/ would shadow the copy); ``read_only``
     directories are read-only for it."""
     cmd = [sys.executable, "-W", "default", "-c", (_PRELUDE if "PYTHONPATH" in env else "") + code]
+    chmodded = read_only and os.geteuid() != 0  # root: a read-only bind mount in a private namespace instead
     if read_only and os.geteuid() == 0:
         if shutil.which("unshare") is None:
             pytest.fail("running as root without unshare: cannot make a directory read-only")
@@ -64,8 +65,8 @@ def _run(code: str, env: dict[str, str], read_only: tuple[Path, ...] = (), cwd: 
                     path.chmod(stat.S_IRUSR | stat.S_IXUSR | stat.S_IRGRP | stat.S_IXGRP | stat.S_IROTH | stat.S_IXOTH)
     try:
         return subprocess.run(cmd, env=env, cwd=cwd or env["HOME"], capture_output=True, text=True, timeout=900)
-    finally:
-        for top in read_only:
+    finally:  # undo only what was done: as root nothing was chmodded (a restore here made /tmp 0755)
+        for top in read_only if chmodded else ():
             for path in [top, *top.rglob("*")]:
                 if path.is_dir():
                     path.chmod(stat.S_IRWXU | stat.S_IRGRP | stat.S_IXGRP | stat.S_IROTH | stat.S_IXOTH)
@@ -153,7 +154,9 @@ def test_nothing_writable_at_all_compiles_without_a_cache_and_one_warning(tmp_pa
     pkg = _copy_package(tmp_path / "ro")
     (tmp_path / "ro" / "home").mkdir()
     tops = tuple(Path(p) for p in ("/tmp", "/var/tmp") if Path(p).is_dir())
+    modes = [top.stat().st_mode for top in tops]
     proc = _run(CALL, _env(tmp_path / "ro" / "home", pkg), read_only=(tmp_path / "ro", *tops), cwd=tmp_path / "ro")
+    assert [top.stat().st_mode for top in tops] == modes, "the machine's temp directories lost their mode"
     assert _ok(proc) == fresh
     assert proc.stderr.count("CacheWarning") == 1, proc.stderr
 
