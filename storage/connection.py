@@ -1,10 +1,8 @@
 """The store's SQLite connection: opening, transactions, metadata, errors.
 
 :class:`Connection` opens (or creates) a store file, checks that it is a
-cell store, and runs transactions.  :func:`translate` turns the errors SQLite
-and the operating system raise (a corrupt file, a full disk, a lock held too
-long, read-only media) into a :class:`dggs.StorageError` naming the file and
-what to do; :func:`guarded` applies it to a function.
+cell store, and runs transactions.  The errors SQLite and the operating
+system raise become :class:`dggs.StorageError` in :mod:`.failures`.
 
 Read-only opens (immutable when no writer has the store open, and on
 read-only media) are in :mod:`.readonly`.
@@ -13,15 +11,15 @@ read-only media) are in :mod:`.readonly`.
 from __future__ import annotations
 
 import contextlib
-import functools
 import sqlite3
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any
 
 import dggs
-from dggs.errors import DggsError, LevelError, LevelMismatchError, StorageError
+from dggs.errors import LevelError, LevelMismatchError, StorageError
 
+from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
 from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
@@ -33,8 +31,6 @@ DEFAULT_LEVEL = 12
 
 _SQLITE_MAGIC = b"SQLite format 3\x00"
 
-F = TypeVar("F", bound=Callable[..., Any])
-
 
 def _dggs_version() -> str:
     try:
@@ -43,65 +39,6 @@ def _dggs_version() -> str:
         return version("dggs")
     except Exception:  # noqa: BLE001 - not installed: fall back to the module
         return str(getattr(dggs, "__version__", "unknown"))
-
-
-def translate(exc: BaseException, path: str, timeout: float | None = None) -> DggsError:
-    """Return the :class:`StorageError` (or :class:`DggsValueError`) for a raw error.
-
-    Examples
-    --------
-    >>> print(translate(sqlite3.OperationalError("database or disk is full"), "a.db"))
-    a.db: the disk is full; free space and run the same command again (an ingest resumes where it stopped)
-    """
-    if isinstance(exc, DggsError):
-        return exc
-    text = str(exc)
-    low = text.lower()
-    if isinstance(exc, (sqlite3.Error, OSError)):
-        if "full" in low or getattr(exc, "errno", None) == 28:
-            return StorageError(
-                f"{path}: the disk is full; free space and run the same command again "
-                "(an ingest resumes where it stopped)"
-            )
-        if "locked" in low or "busy" in low:
-            waited = f" (waited {timeout:g} s)" if timeout is not None else ""
-            return StorageError(
-                f"{path} is locked by another process{waited}; try again when it has "
-                "finished, or pass a longer timeout"
-            )
-        if "readonly" in low or "read-only" in low:
-            return StorageError(f"{path} is on read-only media or not writable; open it with readonly=True")
-        if "malformed" in low or "not a database" in low or "corrupt" in low:
-            return StorageError(
-                f"{path} is corrupt ({text}); restore it from a backup, "
-                "or ingest the inputs again into a new store"
-            )
-        if isinstance(exc, sqlite3.Error):
-            return StorageError(f"{path}: SQLite error: {text}")
-        if isinstance(exc, OSError) and exc.filename is not None:
-            return StorageError(f"cannot use {exc.filename}: {exc.strerror or text}")
-        return StorageError(f"{path}: {exc.strerror or text}" if isinstance(exc, OSError) else text)
-    if isinstance(exc, UnicodeDecodeError):  # text in the file that is not UTF-8: damaged
-        return StorageError(
-            f"{path} is corrupt (stored text is not UTF-8: {exc.reason}); restore it from a backup, "
-            "or ingest the inputs again into a new store"
-        )
-    if isinstance(exc, RecursionError):
-        return StorageError(f"{path}: input nested too deeply to process")
-    return StorageError(f"{path}: {type(exc).__name__}: {text}")
-
-
-def guarded(method: F) -> F:
-    """Decorate a method of an object with ``path`` (and ``timeout``): raw errors become StorageError."""
-
-    @functools.wraps(method)
-    def wrapper(self: Any, *args: Any, **kwargs: Any) -> Any:
-        try:
-            return method(self, *args, **kwargs)
-        except (sqlite3.Error, OSError, RecursionError, UnicodeDecodeError) as exc:
-            raise translate(exc, getattr(self, "path", "?"), getattr(self, "timeout", None)) from exc
-
-    return wrapper  # type: ignore[return-value]
 
 
 class Connection:
@@ -122,10 +59,15 @@ class Connection:
                             raise StorageError(f"{path} is not a SQLite database")
             except OSError as exc:
                 raise translate(exc, path) from exc
+        self._db: Any = None
+        self._open()
+
+    def _open(self) -> None:
+        path, readonly, timeout = self.path, self.readonly, self.timeout
         try:
             # the signature before the open: a change between the two is then seen as one
             before = signature(Path(path).resolve()) if readonly and path != ":memory:" else None
-            self.conn, self.immutable = _connect(path, readonly, timeout)
+            self._conn, self.immutable = _connect(path, readonly, timeout)
             self.signature = before
         except (sqlite3.DatabaseError, UnicodeDecodeError, OSError) as exc:
             raise translate(exc, path, timeout) from exc
@@ -134,12 +76,29 @@ class Connection:
         try:
             self._setup()
         except (sqlite3.Error, OSError, UnicodeDecodeError) as exc:
-            self.conn.close()
+            self._conn.close()
             raise translate(exc, path, timeout) from exc
         except BaseException:
-            self.conn.close()
+            self._conn.close()
             raise
-        self._db: Any = None
+        self._db = None
+
+    def _catch_up(self) -> None:
+        """An immutable reader whose store a writer has opened since (or replaced): open it again."""
+        if self.behind() and Path(self.path).exists():
+            self._conn.close()
+            self._open()
+
+    @property
+    def conn(self) -> sqlite3.Connection:
+        """The SQLite connection; an immutable reader catches up first when a writer has appeared.
+
+        Outside a transaction only: within one, the reader keeps its snapshot.
+        """
+        if self.immutable and not self._conn.in_transaction:
+            self._catch_up()
+            self._check_fresh()  # deleted under the reader: an error naming it, not the old rows
+        return self._conn
 
     def stale(self) -> bool:
         """Whether the file changed (written, replaced, truncated, deleted) since this immutable reader opened it.
@@ -164,8 +123,9 @@ class Connection:
         if self.stale():
             gone = not Path(self.path).exists()
             raise StorageError(
-                f"{self.path} was deleted while open read-only" if gone else
-                f"{self.path} changed while open read-only (written, replaced or truncated); open it again"
+                f"{self.path} was deleted while open read-only"
+                if gone
+                else f"{self.path} changed while it was read (written, replaced or truncated); read it again"
             )
 
     @property
@@ -185,7 +145,7 @@ class Connection:
             yield dict(zip(names, row, strict=True))
 
     def _setup(self) -> None:
-        conn = self.conn
+        conn = self._conn
         conn.execute("PRAGMA foreign_keys = ON")
         if not self.readonly:
             conn.execute("PRAGMA journal_mode = WAL")
@@ -207,7 +167,7 @@ class Connection:
 
     def close(self) -> None:
         """Close the SQLite connection."""
-        self.conn.close()
+        self._conn.close()
 
     @contextlib.contextmanager
     def transaction(self) -> Iterator[None]:
@@ -237,11 +197,16 @@ class Connection:
         """
         own = not self.conn.in_transaction
         if own:
+            self._catch_up()  # a writer appeared: read beside it, as a WAL reader
             self._check_fresh()  # an immutable reader: the file as it was opened, or an error
             self.conn.execute("BEGIN")
         try:
             pending = self.conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone()
             yield "all_points" if pending else "points"
+        except sqlite3.DatabaseError:
+            if own:
+                self._check_fresh()  # a page a writer changed under an immutable read: say so
+            raise
         finally:
             if own and self.conn.in_transaction:
                 self.conn.execute("COMMIT")
@@ -341,9 +306,7 @@ class Connection:
             # Ordered by cell alone: the inserts then walk the clustered key nearly in
             # order, and sorting one key costs 20 % less than the whole key (the
             # primary key places rows of one cell whatever order they come in).
-            self.conn.execute(
-                f"INSERT INTO points ({cols}) SELECT {cols} FROM points_pending ORDER BY cell"
-            )
+            self.conn.execute(f"INSERT INTO points ({cols}) SELECT {cols} FROM points_pending ORDER BY cell")
         except sqlite3.IntegrityError as exc:  # pragma: no cover - would be a bug
             raise StorageError(f"{self.path}: a row would be stored twice ({exc})") from exc
         self.conn.execute("DELETE FROM points_pending")

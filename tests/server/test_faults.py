@@ -23,7 +23,6 @@ import pytest
 
 from dggs.server.reader import StoreReader
 from dggs.storage import CellStore
-from dggs.storage.readonly import immutable_when_quiet
 
 from .conftest import DGGRS, LEVEL, make_client
 from .ogc_schemas import validate
@@ -142,7 +141,7 @@ def test_a_quiet_read_only_open_leaves_the_folder_untouched(tmp_path, store_path
     path = tmp_path / "quiet.db"
     shutil.copy(store_path, path)
     before = path.read_bytes()
-    with immutable_when_quiet(), CellStore(path, create=False, readonly=True) as store:
+    with CellStore(path, create=False, readonly=True) as store:
         assert store.count() > 0
         assert _side_files(tmp_path) == []
     assert _side_files(tmp_path) == [] and path.read_bytes() == before
