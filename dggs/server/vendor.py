@@ -1,8 +1,8 @@
 """The web map's MapLibre GL JS files: whether they are installed, and how to get them.
 
 They are an npm dependency (``dggs/server/package.json``) that ``make static`` copies into
-``static/vendor`` (git-ignored), so a wheel built without that step lacks them; the page would then wait
-for them forever.  ``dggs serve`` warns at start-up and ``/`` answers a page that says so.
+``static/vendor`` (git-ignored) and that building a wheel copies in (:mod:`dggs.server._build`); a wheel
+built where npm was missing lacks them, and the page would then wait for them forever.  ``dggs serve`` warns at start-up and ``/`` answers a page that says so.
 """
 
 from __future__ import annotations

@@ -1,0 +1,58 @@
+"""Build step: the web map's MapLibre GL JS files go into every wheel built from a clone.
+
+They are an npm dependency (``package.json`` and its lock file beside this module),
+never committed; ``make static`` copies them into ``static/vendor``.  A wheel built
+without that step would serve a map stuck at "Loading...", so building the package
+(``pip install .``, ``python -m build``, ``pip wheel``) copies them in first: from
+``node_modules`` if ``npm ci`` ran, else by running ``npm ci`` when npm is there.
+Without npm the build goes on with a warning (and ``dggs serve`` warns at start-up).
+Editable installs are left alone: they read the source folder, where ``make static``
+puts the files.
+
+Setuptools runs :class:`BuildPy` in place of its ``build_py`` (``tool.setuptools.cmdclass``
+in pyproject.toml); it needs nothing but the standard library and setuptools.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import warnings
+from pathlib import Path
+
+from setuptools.command.build_py import build_py
+
+__all__ = ["BuildPy", "vendor_maplibre"]
+
+_HERE = Path(__file__).parent
+_WANTED = ("maplibre-gl.mjs", "maplibre-gl.css")
+
+
+def vendor_maplibre(server: Path = _HERE) -> bool:
+    """Fill ``static/vendor/maplibre-gl`` from npm's ``node_modules`` (running ``npm ci`` if needed).
+
+    Returns whether the files are there afterwards.
+    """
+    target = server / "static" / "vendor" / "maplibre-gl"
+    if all((target / name).is_file() for name in _WANTED):
+        return True
+    dist = server / "node_modules" / "maplibre-gl" / "dist"
+    if not dist.is_dir() and shutil.which("npm") and (server / "package-lock.json").is_file():
+        command = ["npm", "ci", "--prefix", str(server), "--no-audit", "--no-fund", "--loglevel=error"]
+        if subprocess.run(command, check=False).returncode != 0:
+            warnings.warn("npm ci failed: the wheel's web map will lack MapLibre GL JS", stacklevel=2)
+    if not dist.is_dir():
+        warnings.warn("MapLibre GL JS not found (needs npm): the wheel's web map will not load", stacklevel=2)
+        return False
+    shutil.rmtree(target, ignore_errors=True)
+    shutil.copytree(dist, target)
+    return True
+
+
+class BuildPy(build_py):
+    """Setuptools' ``build_py``, with the web map's MapLibre files put in place first."""
+
+    def run(self) -> None:  # noqa: D102 - setuptools' own command
+        if not getattr(self, "editable_mode", False):
+            vendor_maplibre()
+        super().run()
