@@ -86,7 +86,10 @@ def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
     kd.distances(a.shape[0], a, b, max_steps, dist)
     if (dist < 0).any():
         i = int(np.flatnonzero(dist < 0)[0])
-        raise DggsValueError(f"cells {id_name(a[i])!r} and {id_name(b[i])!r} are more than {max_steps} steps apart")
+        pair = f"cells {id_name(a[i])!r} and {id_name(b[i])!r}"
+        if dist[i] == -2:  # no straight face strip serves the pair (none known) and the search gave up
+            raise DggsValueError(f"{pair}: no exact distance found within {kd.SEARCH_LIMIT} steps of search")
+        raise DggsValueError(f"{pair} are more than {max_steps} steps apart")
     return dist
 
 
@@ -193,11 +196,21 @@ def grid_ring(cell: Any, k: int = 1, max_cells: int | None = None) -> Any:
     return apply(_RING, cell, check_radius(k, "grid_ring"), check_max_cells(max_cells))
 
 
-def grid_distance(a: Any, b: Any, max_steps: int = 10_000) -> Any:
+def grid_distance(a: Any, b: Any, max_steps: int | None = None) -> Any:
     """Number of edge steps on the shortest path between cells of one level.
 
     Element-wise for arrays of the same shape, or shapes that broadcast as in
-    numpy (one cell against many).
+    numpy (one cell against many).  Exact at every distance, around the
+    icosahedron vertices too, in O(level) time a pair: the number of mirror
+    lines of the level's planar arrangement that separate the cells, over the
+    straight strips of faces between them (docs/grid.md, "Distances").
+
+    Parameters
+    ----------
+    a, b : cell ids
+        Any container of string or integer ids, or one id.
+    max_steps : int, optional
+        Refuse pairs farther apart than this (no limit by default).
 
     Raises
     ------
@@ -214,4 +227,5 @@ def grid_distance(a: Any, b: Any, max_steps: int = 10_000) -> Any:
     >>> grid_distance("C401", "C402"), grid_distance("C401", "C401")
     (1, 0)
     """
-    return apply_pair(_DISTANCE, a, b, min(check_k(max_steps, "max_steps"), K_LIMIT))
+    limit = K_LIMIT if max_steps is None else min(check_k(max_steps, "max_steps"), K_LIMIT)
+    return apply_pair(_DISTANCE, a, b, limit)

@@ -1,11 +1,14 @@
-"""Compiled grid distances between ids of one level: exact, by mirror lines or by search.
+"""Compiled grid distances between ids of one level: exact, by mirror lines, in O(level) time at any range.
 
 Within one face pair and away from the icosahedron vertices the distance is
-the count of separating mirror lines in a planar chart
-(:func:`dggs.index._kernel.grid_tables.chart_distance`), O(level) whatever
-the distance; elsewhere a bidirectional breadth-first search over the rings
-of :func:`dggs.index._kernel.grid.next_ring`.  Negative results mean "more than
-``max_steps`` apart".
+the count of separating mirror lines in a planar chart, which proves it
+(:func:`dggs.index._kernel.grid_tables.chart_distance`); elsewhere the fewest
+mirror lines over the straight face strips between the cells
+(:func:`dggs.index._kernel.strips.strip_distance`).  Level 0 (20 cells), and
+any pair no strip serves (none in the checks), take a bidirectional
+breadth-first search over the rings of :func:`dggs.index._kernel.grid.next_ring`,
+within :data:`SEARCH_LIMIT` steps.  Results: the distance; -1 for "more than
+``max_steps`` apart"; -2 for "no strip, and beyond the search limit".
 """
 
 from __future__ import annotations
@@ -18,8 +21,12 @@ from dggs.geometry._parallel import loops
 from .bits import level_of
 from .grid import next_ring
 from .grid_tables import chart_distance
+from .strips import strip_distance
 
-__all__ = ["distance", "distances"]
+__all__ = ["SEARCH_LIMIT", "distance", "distances"]
+
+#: Most steps the fallback search takes (O(d**2) cells: 4096 steps is about 20 M cells).
+SEARCH_LIMIT = 4096
 
 
 @njit(cache=True, nogil=True)
@@ -91,16 +98,17 @@ def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
     Returns
     -------
     int
-        The distance, or -1 if it exceeds ``max_steps``.
+        The distance; -1 if it exceeds ``max_steps``; -2 if no straight strip
+        serves the pair and the search gave up at :data:`SEARCH_LIMIT`.
 
     Notes
     -----
     Exact.  Where a planar chart proves it (both cells on one face or two
     adjacent faces, and the disk the count spans clear of the icosahedron
     vertices: most pairs at fine levels) it is the number of separating mirror
-    lines, in O(level) time whatever the distance
-    (:func:`dggs.index._kernel.grid_tables.chart_distance`); otherwise a bidirectional
-    breadth-first search, O(d**2) cells.
+    lines (:func:`dggs.index._kernel.grid_tables.chart_distance`); otherwise the
+    fewest over the straight face strips (:mod:`dggs.index._kernel.strips`).
+    Both take O(level) time whatever the distance.
     """
     if a == b:
         return 0
@@ -109,9 +117,12 @@ def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
         d = chart_distance(a, b, level)
         if d < 0:
             d = chart_distance(b, a, level)
+        if d < 0:
+            d = strip_distance(a, b, level)
         if d >= 0:
             return d if d <= max_steps else -1
-    return _bfs_distance(a, b, max_steps)
+    d = _bfs_distance(a, b, min(max_steps, SEARCH_LIMIT))
+    return -2 if d < 0 and max_steps > SEARCH_LIMIT else d
 
 
 def _distances_impl(a: np.ndarray, b: np.ndarray, max_steps: int, out: np.ndarray) -> None:
