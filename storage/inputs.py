@@ -313,7 +313,7 @@ def ingest_points(
     lat_a, lng_a, cols = readers_arrays.check_arrays(lat, lng, values)  # shapes, before registering
     declared: dict[str, Any] = {}
     for name, col in cols.items():
-        implied = dtype_type(col)
+        implied = dtype_type(values[name]) or dtype_type(col)  # a pandas Int64 column with NA comes as objects
         if implied is not None:
             declared[name] = implied
     declared.update(types or {})
@@ -363,10 +363,10 @@ def ingest_dataframe(
     declared = {**declared, **dict(types or {})}
     return ingest_points(
         store,
-        df[lat].to_numpy(),
-        df[lng].to_numpy(),
+        df[lat],
+        df[lng],
         level,
-        {name: df[name].to_numpy() for name in names},
+        {name: df[name] for name in names},  # columns, not to_numpy(): pandas NA and exact ints kept (as_column)
         declared,
         options,
         merge_rows=merge_rows,
