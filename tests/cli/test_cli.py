@@ -109,3 +109,25 @@ def test_a_failed_bin_of_a_vector_file_leaves_no_store(tmp_path, suffix, case):
         "lines": ([], "row 1: geometry is not a Point"),
     }[case]
     _bin_leaves_nothing(tmp_path, before, [str(path), "--level", "5", *extra], named)
+
+
+# -- boundary work is bounded before it starts --------------------------------------------
+
+
+@pytest.mark.parametrize("suffix", [".geojson", ".parquet"])
+def test_export_with_a_huge_densify_refuses_before_building_boundaries(tmp_path, suffix):
+    """1,013 level-3 cells of 300,004 points each: over MAX_POINTS (index/_checks.py), so refused, nothing written."""
+    import numpy as np
+
+    from dggs.storage import CellStore
+
+    rng = np.random.default_rng(5)
+    db = tmp_path / "s.db"
+    with CellStore(db) as store:
+        store.ingest_points(np.degrees(np.arcsin(rng.uniform(-1, 1, 3000))), rng.uniform(-180, 180, 3000), 8)
+    out = tmp_path / f"x{suffix}"
+    res = run("export", str(db), "--level", "3", "--densify", "100000", "-o", str(out))
+    assert res.exit_code == 1 and "Traceback" not in res.output, res.output
+    lines = res.output.strip().splitlines()
+    assert len(lines) == 1 and "boundary points" in lines[0] and "over the limit of 50,000,000" in lines[0], lines
+    assert [p.name for p in tmp_path.iterdir() if not p.name.startswith("s.db")] == []  # no output, no temp file
