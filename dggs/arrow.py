@@ -298,15 +298,20 @@ def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | Non
     StorageError
         The file cannot be written (``path`` is untouched).
     """
-    from dggs.storage.atomic import atomic_path
+    from dggs.storage.atomic import atomic_path, writer_error
 
     format = export_format(path, format)
     if format == "geoparquet":
         write_geoparquet(table, path)
         return format
+    from pyogrio.errors import DataLayerError, DataSourceError
+
     frame = to_geodataframe(table)
     layer = re.sub(r"\W", "_", os.path.splitext(os.path.basename(os.fspath(path)))[0]) or "cells"
     multi = format in ("gpkg", "fgb") and "MultiPolygon" in set(frame.geom_type)
     with atomic_path(path, keep_name=True) as tmp:
-        frame.to_file(tmp, driver=_DRIVERS[format], engine="pyogrio", layer=layer, promote_to_multi=multi)
+        try:
+            frame.to_file(tmp, driver=_DRIVERS[format], engine="pyogrio", layer=layer, promote_to_multi=multi)
+        except (DataSourceError, DataLayerError) as exc:  # GDAL's failures, a full disk among them
+            raise writer_error(path, tmp, exc) from exc
     return format

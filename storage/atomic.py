@@ -19,6 +19,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import shutil
 import stat
@@ -29,10 +30,13 @@ from typing import IO, Any
 
 from dggs.errors import StorageError
 
-__all__ = ["atomic_write", "atomic_path", "refuse_store", "remove_stale"]
+__all__ = ["atomic_write", "atomic_path", "refuse_store", "remove_stale", "writer_error"]
 
 #: The files of a SQLite store in WAL mode: the database, its log and its shared-memory index.
 STORE_FILES = ("", "-wal", "-shm")
+
+#: Free space below which a failed write is put down to a full disk (a writer's buffers, GDAL's included, are smaller).
+FULL_DISK_BYTES = 1024 * 1024
 
 
 def _same_file(a: Path, b: Path) -> bool:
@@ -121,6 +125,39 @@ def remove_stale(target: str | os.PathLike[str]) -> list[str]:
                 stale.unlink()
             removed.append(name)
     return removed
+
+
+def _free_bytes(folder: str | os.PathLike[str]) -> int | None:
+    """The bytes an unprivileged writer may still use in ``folder``'s file system, or None if unknown."""
+    try:
+        vfs = os.statvfs(folder)
+    except (OSError, AttributeError):  # AttributeError: no statvfs (Windows)
+        return None
+    return vfs.f_bavail * vfs.f_frsize
+
+
+def writer_error(path: str | os.PathLike[str], tmp: str, exc: BaseException) -> StorageError:
+    """The :class:`StorageError` for a library writer (GDAL through pyogrio) that failed on ``tmp``.
+
+    Such writers report a full disk in their own words, without errno: on
+    a full tmpfs GDAL 3.12.4 (pyogrio 0.13) says ``no such table:
+    gpkg_contents`` for a GeoPackage and ``Unexpected I/O failure`` for a
+    FlatGeobuf (pyogrio raises them as ``FeatureError``/``DataSourceError``).
+    So the file system is asked: with less than :data:`FULL_DISK_BYTES`
+    free, the message says what ``os.strerror(errno.ENOSPC)`` says, as the
+    other formats' messages do; otherwise it gives the writer's words, with
+    ``path`` in place of the temporary name.  Call it while ``tmp`` still
+    exists (inside :func:`atomic_path`), so the space it took is counted.
+    """
+    free = _free_bytes(Path(tmp).parent)
+    if free is not None and free < FULL_DISK_BYTES:
+        reason = f"{os.strerror(errno.ENOSPC)} ({free:,} bytes free)"
+    else:
+        reason = " ".join(str(exc).replace(tmp, os.fspath(path)).split()) or type(exc).__name__
+    return StorageError(
+        f"cannot write {path}: {reason}; nothing was written (an existing file is unchanged): "
+        "free space or choose another place"
+    )
 
 
 @contextlib.contextmanager

@@ -133,10 +133,13 @@ def bin_(
     show = sys.stderr.isatty() if progress is None else progress
     total = count_csv_rows(input_path) if (show and kind == "csv") else None
     bar = tqdm(total=total, unit=" rows", unit_scale=True, disable=not show, desc="binning", file=sys.stderr)
-    if kind == "csv":  # checked before the store is created: a typo leaves no empty store behind
-        from dggs.storage.inputs import check_csv
+    from dggs.storage.prechecks import check_bin_input
 
-        check_csv(input_path, lat, lng, declared, encoding=encoding)
+    # checked before the store is created: input that can only fail leaves no empty store behind
+    check_bin_input(
+        kind, input_path, new_store=not Path(db).exists(), lat=lat, lng=lng, values=declared, crs=crs,
+        encoding=encoding, layer=layer, level=level, batch_size=batch_size, on_error=on_error,
+    )
     with CellStore(db) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(

@@ -21,7 +21,7 @@ from dggs.errors import DggsValueError
 
 from .readers import RawBatch
 
-__all__ = ["Prepared", "prepare", "make_transformer", "value_types", "infer_type", "INT64"]
+__all__ = ["Prepared", "prepare", "make_transformer", "value_types", "infer_type", "is_missing", "INT64"]
 
 #: The range of an SQLite INTEGER.
 INT64 = (-(2**63), 2**63 - 1)
@@ -68,6 +68,24 @@ def make_transformer(crs: Any) -> Any:
     return Transformer.from_crs(source, CRS.from_epsg(4326), always_xy=True)
 
 
+def is_missing(value: Any) -> bool:
+    """Whether ``value`` is a missing value (stored as NULL): None, NaN or pandas' ``pd.NA``.
+
+    ``pd.NA`` is told by its type's name, as :func:`dggs.index._convert.kind.fail`
+    does, so pandas need not be imported.
+
+    Examples
+    --------
+    >>> [is_missing(v) for v in (None, float("nan"), 0.0, "")]
+    [True, True, False, False]
+    """
+    if value is None:
+        return True
+    if isinstance(value, (float, np.floating)):
+        return bool(value != value)
+    return type(value).__name__ == "NAType"
+
+
 def _floats(raw: Sequence[Any], name: str, bad: _Bad, text: bool) -> np.ndarray:
     """Parse coordinates to float64; mark unparsable or non-finite entries bad."""
     try:
@@ -77,6 +95,9 @@ def _floats(raw: Sequence[Any], name: str, bad: _Bad, text: bool) -> np.ndarray:
     except (ValueError, TypeError):
         arr = np.empty(len(raw), dtype=np.float64)
         for i, value in enumerate(raw):
+            if is_missing(value):  # named "is missing" below
+                arr[i] = np.nan
+                continue
             try:
                 if isinstance(value, (str, bytes)) and not value.strip():
                     raise ValueError
@@ -125,10 +146,8 @@ def infer_type(values: list[Any], from_text: bool) -> str:
     kind = "INTEGER"
     numbers = texts = 0
     for value in values:
-        if value is None or (isinstance(value, str) and from_text and not value.strip()):
-            continue
-        if isinstance(value, float) and value != value:  # NaN: NULL
-            continue
+        if is_missing(value) or (isinstance(value, str) and from_text and not value.strip()):
+            continue  # None, NaN, pd.NA: NULL
         if hasattr(value, "item") and not isinstance(value, (str, bytes)):
             value = value.item()  # numpy scalar
         if not _is_number(value, from_text):
@@ -152,7 +171,7 @@ def _is_int_text(value: str) -> bool:
 
 def _integer(value: Any) -> int | float | None:
     """An exact int for an integer-like value (float for a fractional number); raises if not a number."""
-    if value is None:
+    if is_missing(value):
         return None
     if isinstance(value, (bool, np.bool_)):
         return int(value)
@@ -187,7 +206,7 @@ def _convert(raw: Sequence[Any], kind: str, name: str, bad: _Bad, text: bool) ->
             return [value if value != "" else None for value in raw]
         texts: list[Any] = []
         for value in (raw.tolist() if isinstance(raw, np.ndarray) else raw):
-            if value is None or (isinstance(value, float) and math.isnan(value)):
+            if is_missing(value):
                 texts.append(None)
             else:
                 texts.append(value if isinstance(value, str) else str(value))
@@ -220,7 +239,7 @@ def _convert(raw: Sequence[Any], kind: str, name: str, bad: _Bad, text: bool) ->
                     number = None
                 out.append(number)
                 continue
-            if value is None or (isinstance(value, (str, bytes)) and not value.strip()):
+            if is_missing(value) or (isinstance(value, (str, bytes)) and not value.strip()):
                 out.append(None)
                 continue
             number_f = float(value)

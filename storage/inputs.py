@@ -7,24 +7,25 @@ hands batches to :func:`dggs.storage.ingest.run_ingest`.
 
 from __future__ import annotations
 
-import codecs
 import os
 import uuid
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from dggs.errors import DggsValueError, StorageError
+from dggs.errors import DggsValueError
 
-from . import readers, readers_arrays, readers_csv, readers_geojson, readers_vector
+from . import prechecks, readers_arrays, readers_csv, readers_geojson, readers_vector
 from .connection import Connection
 from .ingest import IngestOptions, IngestResult, run_ingest
-from .schema import BASE_COLUMNS, check_column_name
 from .sources import file_info, find_earlier_version
 
 __all__ = ["ingest_csv", "ingest_geojson", "ingest_vector", "ingest_records", "ingest_points", "ingest_dataframe"]
 
 Values = Sequence[str] | Mapping[str, Any] | None
+
+# checked before the store is touched; the CLI's `dggs bin` runs them before it creates the store
+check_csv, value_spec = prechecks.check_csv, prechecks.value_spec
 
 
 def dtype_type(column: Any) -> str | None:
@@ -34,70 +35,9 @@ def dtype_type(column: Any) -> str | None:
     return {"i": "INTEGER", "u": "INTEGER", "b": "INTEGER", "f": "REAL", "U": "TEXT", "S": "TEXT"}.get(kind or "")
 
 
-def value_spec(values: Values) -> tuple[list[str], dict[str, Any]]:
-    """Split ``values`` into names (validated, distinct ignoring case) and declared types.
-
-    Raises
-    ------
-    DggsValueError
-        If a name or type is not valid, or two names are the same column to SQLite
-        (names ignore case).
-    """
-    if values is None:
-        return [], {}
-    if isinstance(values, str):
-        values = [values]
-    names = [check_column_name(n) for n in values]
-    seen: dict[str, str] = {}
-    for n in names:
-        if n.lower() in seen:
-            raise DggsValueError(
-                f"value columns {seen[n.lower()]!r} and {n!r} are the same column to SQLite "
-                "(names ignore case); keep one"
-            )
-        seen[n.lower()] = n
-    declared = {k: v for k, v in values.items() if v is not None} if isinstance(values, Mapping) else {}
-    return names, declared  # a None type in a dict: guess it, as for a list
-
-
-def _source_file(path: str | os.PathLike[str]) -> Path:
-    file = Path(path)
-    if not file.is_file():
-        raise StorageError(f"no such file: {path}")
-    return file
-
-
 def _identity(store: Connection, kind: str, file: Path, name: str, replace: bool) -> dict[str, Any]:
     info = file_info(file)
     return find_earlier_version(store, kind, name, file, info, replace)
-
-
-def check_csv(
-    path: str | os.PathLike[str], lat: str, lng: str, values: Values, delimiter: str = ",", encoding: str = "utf-8"
-) -> tuple[Path, list[str], dict[str, Any]]:
-    """Check a CSV input without a store: encoding, delimiter, header; return the file and value spec.
-
-    ``dggs bin`` calls it before it creates the store, so a typo in ``--lat``
-    leaves no empty store file behind.
-
-    Raises
-    ------
-    DggsValueError
-        If ``encoding`` is unknown or ``delimiter`` is not one plain character, or a column is missing.
-    StorageError
-        If ``path`` does not exist.
-    """
-    file = _source_file(path)
-    try:
-        codecs.lookup(encoding)
-    except (LookupError, TypeError):
-        raise DggsValueError(f"unknown text encoding {encoding!r} (e.g. utf-8, latin-1, cp1252)") from None
-    if not isinstance(delimiter, str) or len(delimiter) != 1 or delimiter in '"\r\n':
-        raise DggsValueError(f"delimiter must be one character (not a quote or newline), not {delimiter!r}")
-    names, declared = value_spec(values)
-    header = readers_csv.csv_header(file, delimiter, encoding)
-    readers.check_columns(file, header, [lat, lng, *names])
-    return file, names, declared
 
 
 def ingest_csv(
@@ -161,16 +101,9 @@ def ingest_geojson(
     StorageError
         If ``path`` does not exist.
     """
-    file = _source_file(path)
-    if options.crs is not None:
-        raise DggsValueError("GeoJSON is WGS84 lng/lat by definition (RFC 7946): crs cannot be set")
-    level = store.resolve_level(level)
-    features = readers_geojson.load_geojson(file)
     batch_size = options.batch_size
-    if values is None:  # the properties seen in the first batch
-        props = (f.get("properties") if isinstance(f, dict) else None for f in features[:batch_size])
-        values = _default_values(path, (key for p in props if isinstance(p, dict) for key in p))
-    names, declared = value_spec(values)
+    file, features, names, declared = prechecks.check_geojson(path, values, options.crs, batch_size)
+    level = store.resolve_level(level)
     info = _identity(store, "geojson", file, str(path), options.replace)
     return run_ingest(
         store,
@@ -185,20 +118,6 @@ def ingest_geojson(
         merge_rows=merge_rows,
         file_info=info,
     )
-
-
-def _default_values(path: Any, keys: Iterable[Any]) -> list[str]:
-    """Every property name except the built-in columns; refuse names differing only in case."""
-    seen: dict[str, str] = {}
-    for key in keys:
-        if isinstance(key, str) and key.lower() not in BASE_COLUMNS:
-            if key.lower() in seen and seen[key.lower()] != key:
-                raise DggsValueError(
-                    f"{path}: properties {seen[key.lower()]!r} and {key!r} differ only in case "
-                    "(SQLite column names ignore case); pass values= to choose"
-                )
-            seen.setdefault(key.lower(), key)
-    return list(seen.values())
 
 
 def ingest_vector(
@@ -220,15 +139,8 @@ def ingest_vector(
     StorageError
         If ``path`` does not exist.
     """
-    file = _source_file(path)
+    file, names, declared, crs = prechecks.check_vector(path, layer, values, options.crs)  # before registering
     level = store.resolve_level(level)
-    fields, file_crs = readers_vector.layer_fields(file, layer)
-    if values is None:
-        values = _default_values(path, fields)
-    names, declared = value_spec(values)
-    readers.check_columns(file, fields, names)  # before the source is registered
-    crs = options.crs if options.crs is not None else file_crs
-    readers_vector._to_wgs84(crs)  # an unknown CRS fails here
     name = str(path) if layer is None else f"{path}:{layer}"
     info = _identity(store, "vector", file, name, options.replace)
     batch_size = options.batch_size
@@ -313,7 +225,7 @@ def ingest_points(
     lat_a, lng_a, cols = readers_arrays.check_arrays(lat, lng, values)  # shapes, before registering
     declared: dict[str, Any] = {}
     for name, col in cols.items():
-        implied = dtype_type(col)
+        implied = dtype_type(values[name]) or dtype_type(col)  # a pandas Int64 column with NA comes as objects
         if implied is not None:
             declared[name] = implied
     declared.update(types or {})
@@ -363,10 +275,10 @@ def ingest_dataframe(
     declared = {**declared, **dict(types or {})}
     return ingest_points(
         store,
-        df[lat].to_numpy(),
-        df[lng].to_numpy(),
+        df[lat],
+        df[lng],
         level,
-        {name: df[name].to_numpy() for name in names},
+        {name: df[name] for name in names},  # columns, not to_numpy(): pandas NA and exact ints kept (as_column)
         declared,
         options,
         merge_rows=merge_rows,

@@ -66,6 +66,20 @@ def records_batches(
         done += len(chunk)
 
 
+def as_column(col: Any) -> np.ndarray:
+    """``col`` as a numpy array; a pandas nullable column holding NA as objects, its NA kept.
+
+    numpy reads ``pd.array([2**53 + 1, pd.NA], dtype="Int64")`` as float64
+    (the int rounded, the NA a NaN); as objects the ints stay exact and the
+    NA is named as ``<NA>`` (:func:`dggs.storage.convert.is_missing` makes it NULL).
+    """
+    dtype = getattr(col, "dtype", None)
+    if dtype is not None and not isinstance(dtype, np.dtype) and hasattr(col, "isna") and bool(col.isna().any()):
+        objs: np.ndarray = col.to_numpy(dtype=object)  # a pandas Series or ExtensionArray
+        return objs
+    return np.asarray(col)
+
+
 def check_arrays(lat: Any, lng: Any, values: Mapping[str, Any]) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
     """Return lat, lng and value columns as 1-d arrays of one length.
 
@@ -78,7 +92,7 @@ def check_arrays(lat: Any, lng: Any, values: Mapping[str, Any]) -> tuple[np.ndar
     out = {}
     for name, col in {"lat": lat, "lng": lng, **values}.items():
         try:
-            arr = np.asarray(col)
+            arr = as_column(col)
         except ValueError as exc:  # ragged nested lists
             raise DggsValueError(f"column {name!r} is not a flat sequence of values ({exc})") from None
         if arr.ndim > 1:

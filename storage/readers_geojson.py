@@ -19,7 +19,7 @@ from dggs.errors import DggsValueError
 
 from .readers import RawBatch
 
-__all__ = ["load_geojson", "geojson_batches"]
+__all__ = ["load_geojson", "geojson_batches", "feature_problem"]
 
 
 #: How deep each geometry's coordinates nest to reach a position (RFC 7946, sections 3.1.2-3.1.7).
@@ -107,6 +107,22 @@ def load_geojson(path: str | Path) -> list[dict[str, Any]]:
     raise DggsValueError(f"{path} is not GeoJSON (no FeatureCollection, Feature or geometry)")
 
 
+def feature_problem(feature: Any) -> tuple[Any, str] | None:
+    """(value, reason) if ``feature`` cannot be stored whatever its coordinates, else None.
+
+    Its properties are no JSON object, or its geometry is none of Point,
+    MultiPoint, Polygon and MultiPolygon (RFC 7946, section 3.1): a bad row.
+    """
+    geometry: Any = feature.get("geometry") if isinstance(feature, dict) else None
+    prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
+    if not isinstance(prop, dict):
+        return prop, "feature properties are not a JSON object"
+    kind = geometry.get("type") if isinstance(geometry, dict) else None
+    if kind not in _DEPTH:
+        return kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon"
+    return None
+
+
 def _add_cells(add: Any, row: int, prop: dict[str, Any], polygon: Any, level: int, bad: dict, at: int) -> None:
     """One entry per cell whose centre ``polygon`` holds, at its centre; a bad entry if it holds none."""
     found = dggs.polygon_to_cells(polygon, level)
@@ -168,15 +184,12 @@ def geojson_batches(
             row = start + offset + 1
             geometry: Any = feature.get("geometry") if isinstance(feature, dict) else None
             prop = (feature.get("properties") or {}) if isinstance(feature, dict) else {}
-            if not isinstance(prop, dict):
-                bad[len(rows)] = (None, prop, "feature properties are not a JSON object")
-                add(row, None, None, "", {})
+            problem = feature_problem(feature)
+            if problem is not None:
+                bad[len(rows)] = (None, *problem)
+                add(row, None, None, "", prop if isinstance(prop, dict) else {})
                 continue
-            kind = geometry.get("type") if isinstance(geometry, dict) else None
-            if kind not in _DEPTH:
-                bad[len(rows)] = (None, kind, "geometry is not a Point, MultiPoint, Polygon or MultiPolygon")
-                add(row, None, None, "", prop)
-                continue
+            kind: str = geometry["type"]  # one of _DEPTH's
             try:
                 coords = _checked(kind, geometry.get("coordinates"))
                 if kind == "Point":

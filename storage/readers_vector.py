@@ -19,7 +19,7 @@ from dggs.errors import DggsValueError, StorageError
 from .readers import RawBatch
 from .readers_geojson import geojson_batches
 
-__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "vector_batches"]
+__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "first_features", "to_wgs84", "vector_batches"]
 
 #: File name endings read through pyogrio.
 VECTOR_SUFFIXES = (".gpkg", ".shp", ".fgb", ".parquet", ".geoparquet")
@@ -48,6 +48,11 @@ def _errors() -> tuple[type[BaseException], ...]:
     return (pyogrio.errors.DataSourceError, pyogrio.errors.DataLayerError, pyogrio.errors.FieldError)
 
 
+def _layer(layer: str | int | None) -> str:
+    """A layer for a message: ``layer 'roads'``, or ``its first layer`` when none was chosen."""
+    return "its first layer" if layer is None else f"layer {layer!r}"
+
+
 def layer_fields(path: str | Path, layer: str | int | None) -> tuple[list[str], Any]:
     """Return the attribute field names of a layer and its CRS (or None).
 
@@ -63,7 +68,7 @@ def layer_fields(path: str | Path, layer: str | int | None) -> tuple[list[str], 
     try:
         info = pyogrio.read_info(path, layer=layer)
     except _errors() as exc:
-        raise DggsValueError(f"{path}: cannot read layer {layer!r}: {exc}") from exc
+        raise DggsValueError(f"{path}: cannot read {_layer(layer)}: {exc}") from exc
     return [str(f) for f in info["fields"]], info.get("crs")
 
 
@@ -129,19 +134,66 @@ def _ogr_batches(
                 wkb = batch.column(names.index(geometry)) if geometry in names else None
                 yield wkb, {name: batch.column(names.index(name)).to_pylist() for name in values}
     except _errors() as exc:
-        raise DggsValueError(f"{path}: cannot read layer {layer!r}: {exc}") from exc
+        raise DggsValueError(f"{path}: cannot read {_layer(layer)}: {exc}") from exc
 
 
-def _to_wgs84(crs: Any) -> Any:
-    """A pyproj transformer from ``crs`` to WGS84 lng/lat, or None if there is nothing to do."""
+def to_wgs84(crs: Any) -> Any:
+    """A pyproj transformer from ``crs`` to WGS84 lng/lat, or None if there is nothing to do.
+
+    Raises
+    ------
+    DggsValueError
+        If pyproj does not know ``crs`` (as :func:`dggs.storage.convert.make_transformer`).
+    """
     if crs is None:
         return None
     from pyproj import CRS, Transformer
+    from pyproj.exceptions import CRSError
 
-    source = CRS.from_user_input(crs)
+    try:
+        source = CRS.from_user_input(crs)
+    except CRSError as exc:
+        raise DggsValueError(f"unknown CRS {crs!r}: {exc}") from exc
     if source == CRS.from_epsg(4326) or source == CRS.from_user_input("OGC:CRS84"):
         return None
     return Transformer.from_crs(source, CRS.from_epsg(4326), always_xy=True)
+
+
+def _features(geoms: Any, values: Sequence[str], props: dict) -> list[dict[str, Any]]:
+    """GeoJSON-like features of shapely geometries (None: no geometry) and their properties."""
+    import shapely.geometry
+
+    return [
+        {
+            "type": "Feature",
+            "geometry": None if g is None else shapely.geometry.mapping(g),
+            "properties": {name: props[name][i] for name in values},
+        }
+        for i, g in enumerate(geoms)
+    ]
+
+
+def _source(path: str | Path, layer: str | int | None, values: Sequence[str], batch_size: int, skip: int) -> Any:
+    if _is_parquet(path):
+        return _parquet_batches(path, values, batch_size, skip)
+    return _ogr_batches(path, layer, values, batch_size, skip)
+
+
+def first_features(path: str | Path, layer: str | int | None, n: int) -> list[dict[str, Any]]:
+    """The first ``n`` features of a layer (geometries as read, no properties): for a check before ingest.
+
+    Raises
+    ------
+    DggsValueError
+        If the layer cannot be read.
+    """
+    import shapely
+
+    for wkb, _ in _source(path, layer, [], n, 0):
+        count = len(wkb) if wkb is not None else 0
+        geoms = shapely.from_wkb(wkb.to_numpy(zero_copy_only=False)) if count else []
+        return _features(geoms, [], {})
+    return []
 
 
 def vector_batches(
@@ -159,29 +211,17 @@ def vector_batches(
     says nothing).  Records are features, numbered from 1 in layer order.
     """
     import shapely
-    import shapely.geometry
 
-    transformer = _to_wgs84(crs)
+    transformer = to_wgs84(crs)
     done = skip
-    if _is_parquet(path):
-        source = _parquet_batches(path, values, batch_size, skip)
-    else:
-        source = _ogr_batches(path, layer, values, batch_size, skip)
-    for wkb, props in source:
+    for wkb, props in _source(path, layer, values, batch_size, skip):
         n = len(wkb) if wkb is not None else len(next(iter(props.values()), []))
         if not n:
             continue
         geoms = shapely.from_wkb(wkb.to_numpy(zero_copy_only=False)) if wkb is not None else [None] * n
         if transformer is not None:
             geoms = shapely.transform(geoms, lambda xy: _apply(transformer, xy))
-        features = [
-            {
-                "type": "Feature",
-                "geometry": None if g is None else shapely.geometry.mapping(g),
-                "properties": {name: props[name][i] for name in values},
-            }
-            for i, g in enumerate(geoms)
-        ]
+        features = _features(geoms, values, props)
         for raw in geojson_batches(features, values, level, n):
             raw.rows = [r + done for r in raw.rows]
             yield raw

@@ -94,8 +94,11 @@ def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, st
     data = ctx.reader.level_data(level, column, stat)
     found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_features)
     if found is None:
-        raise TooManyZones(f"more than {ctx.max_features} cells of level {level} hold data in bbox {bbox_raw!r}; "
-                           "use a coarser level or a smaller bbox")
+        where, smaller = (
+            (f"in bbox {bbox_raw!r}", "a smaller bbox") if bbox_raw is not None else ("in the whole store", "give a bbox")
+        )
+        raise TooManyZones(f"more than {ctx.max_features} cells of level {level} hold data {where}; "
+                           f"use a coarser level or {smaller}")
     index, _, texts = found
     area = float(dggs.cell_area(level, "km^2"))
     ids = data.ids[index].tolist()

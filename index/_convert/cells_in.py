@@ -188,6 +188,10 @@ def _parse_any(obj: Any) -> _Parsed:
         return p
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _parse_arrow(obj, pa)
+    if pd is not None and isinstance(obj, pd.api.extensions.ExtensionArray) and obj.isna().any():
+        # numpy reads pd.array([id, <NA>], dtype="Int64") as float64 (NaN, and every id a float): keep the NA, as a Series does
+        objs = obj.to_numpy(dtype=object)
+        return _parse_numpy(objs, Kind("numpy", "str", objs.shape, dtype=objs.dtype))
     if hasattr(obj, "__array__"):
         arr = np.asarray(obj)
         return _parse_numpy(arr, Kind("numpy", "str", arr.shape, dtype=arr.dtype))

@@ -130,6 +130,13 @@ def test_too_many_zones_is_413_before_any_geometry(small_client):
     assert small_client.get(f"{ROOT}/zones/C4/data", params={"zone-depth": "2"}).status_code == 200
 
 
+def test_too_many_cells_without_a_bbox_says_the_whole_store_not_bbox_none(small_client):
+    body = check(small_client.get("/map/cells", params={"level": 4}), 413, "10", "in the whole store", "give a bbox")
+    assert "None" not in body["detail"]
+    body = check(small_client.get("/map/cells", params={"level": 4, "bbox": "-180,-90,180,90"}), 413, "in bbox '-180")
+    assert "smaller bbox" in body["detail"]
+
+
 def test_bad_limits_of_the_factory(store_path):
     from dggs.errors import DggsValueError
     from dggs.server.app import create_app

@@ -204,6 +204,38 @@ def test_full_disk_export_leaves_the_old_file_whole(good_db, tmp_path, tmpfs):
     assert not (where / "m.png").exists()
 
 
+@pytest.mark.parametrize("fmt", ["gpkg", "fgb"])
+def test_full_disk_gdal_export_is_one_line_and_leaves_the_old_file(good_db, tmpfs, fmt):
+    """GDAL's own messages ("no such table: gpkg_contents", "Unexpected I/O failure") do not say the disk is full."""
+    pytest.importorskip("pyogrio")
+    where, _ = tmpfs
+    out = where / f"cells.{fmt}"
+    out.write_bytes(b"old")
+    (where / "filler").write_bytes(b"\0" * (1024 * 1024 - 64 * 1024))
+    result = CliRunner().invoke(main, ["export", str(good_db), "--level", "4", "-o", str(out)])
+    assert result.exit_code == 1 and result.output.count("\n") == 1, result.output
+    assert "Traceback" not in result.output and f"cannot write {out}: no space left" in result.output.lower()
+    with CellStore(good_db, readonly=True) as store, pytest.raises(StorageError, match=f"(?i){out}: no space left"):
+        store.export(out, 4)
+    assert out.read_bytes() == b"old"
+    assert sorted(p.name for p in where.iterdir()) == [out.name, "filler"]  # no temp file or folder left
+
+
+def test_other_gdal_write_failures_name_the_target_not_the_temp_file(good_db, tmp_path, monkeypatch):
+    errors = pytest.importorskip("pyogrio.errors")
+    geopandas = pytest.importorskip("geopandas")
+
+    def broken(self, filename, **kwargs):
+        raise errors.DataSourceError(f"Failed to write features to dataset {filename}; simulated")
+
+    monkeypatch.setattr(geopandas.GeoDataFrame, "to_file", broken)
+    out = tmp_path / "cells.gpkg"
+    with CellStore(good_db, readonly=True) as store, pytest.raises(StorageError) as info:
+        store.export(out, 2)
+    assert f"cannot write {out}: Failed to write features to dataset {out}; simulated" in str(info.value)
+    assert "space" not in str(info.value).split(";")[0] and not out.exists()
+
+
 def test_atomic_write_never_leaves_a_truncated_file(tmp_path):
     out = tmp_path / "x.json"
     out.write_text("old")

@@ -219,6 +219,26 @@ def test_dataframe(store):
     assert _rows_by_number(store)[2]["name"] is None
 
 
+def test_pandas_na_is_a_missing_value_and_nullable_columns_keep_their_type(store):
+    """pd.NA is NULL (as NaN is); an Int64 column stays exact INTEGER, not float64 with NaN; <NA> coordinates are named."""
+    pd = pytest.importorskip("pandas")
+    big = 2**53 + 1  # a float64 would round it to 2**53
+    df = pd.DataFrame({"lat": [10.0, 20.0, 30.0], "lng": [5.0, 6.0, 7.0],
+                       "v": pd.array([pd.NA, big, 3], dtype="Int64"), "s": pd.array(["a", pd.NA, "c"], dtype="string"),
+                       "f": pd.array([0.5, pd.NA, 1.0], dtype="Float64"), "b": pd.array([True, pd.NA, False], dtype="boolean")})
+    store.ingest_dataframe(df, level=4, batch_size=1)  # the first batch holds only <NA> for v: its dtype tells
+    assert store.columns == {"v": "INTEGER", "s": "TEXT", "f": "REAL", "b": "INTEGER"}
+    rows = _rows_by_number(store)
+    assert [(rows[i]["v"], rows[i]["s"], rows[i]["f"], rows[i]["b"]) for i in (1, 2, 3)] == [
+        (None, "a", 0.5, 1), (big, None, None, None), (3, "c", 1.0, 0)]
+    store.ingest_points([1.0], [2.0], 4, {"v": pd.array([pd.NA], dtype="Int64")}, source="p")
+    store.ingest_records([{"lat": 1.0, "lng": 2.0, "s": pd.NA}], values=["s"], source="r")
+    assert [r["s"] for r in store.db.query("SELECT s FROM all_points WHERE row = 1 AND s IS NOT 'a'")] == [None, None]
+    bad = pd.DataFrame({"lat": pd.array([10.0, pd.NA], dtype="Float64"), "lng": [5.0, 6.0]})
+    with pytest.raises(BadRowError, match=r"row 2: column 'lat': <NA> is missing"):
+        store.ingest_dataframe(bad, source="bad")
+
+
 def test_crs_conversion(store):
     from pyproj import Transformer
 

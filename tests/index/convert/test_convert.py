@@ -14,6 +14,7 @@ import pytest
 from hypothesis import example, given
 from hypothesis import strategies as st
 
+import dggs
 from dggs.errors import InvalidCellError
 from dggs.index import ids as _ids
 from dggs.index._convert import Kind, cells_in, cells_out, cells_out_flat, is_valid_any
@@ -437,6 +438,18 @@ def test_invalid_ints_in_arrays():
         with pytest.raises(InvalidCellError, match="at index 1 is not a valid cell id"):
             cells_in(obj)
         assert _values(is_valid_any(obj)) == [True, False]
+
+
+@pytest.mark.parametrize("dtype", ["Int64", "UInt64", "int64[pyarrow]"])
+@pytest.mark.parametrize("at", [0, 1])
+def test_pandas_na_in_a_bare_pandas_array_of_int_ids_is_named_at_its_index(dtype, at):
+    """pd.array's <NA> is named (as in a Series), not its valid neighbour as a float (numpy's reading of it)."""
+    good = ref_int("C401")
+    obj = pd.array([good, pd.NA] if at == 1 else [pd.NA, good], dtype=dtype)
+    with pytest.raises(InvalidCellError) as err:
+        dggs.get_level(obj)
+    assert str(err.value) == f"<NA> at index {at} is not a valid cell id: a missing value is not a cell id"
+    assert _values(is_valid_any(obj)) == [i != at for i in range(2)]
 
 
 def test_invalid_multi_dim_index_and_types():
