@@ -81,7 +81,9 @@ def _polar_target(target: Any, hemi: float, buffers: dict[Any, Any]) -> Any:
 
         plane = shapely.make_valid(shapely.transform(part, to_plane))
         # the two sides of a target split at +-180 meet again on the plane
-        buffers[key] = shapely.buffer(plane, 1e-12, quad_segs=2)
+        plane = shapely.buffer(plane, 1e-12, quad_segs=2)
+        shapely.prepare(plane)
+        buffers[key] = plane
     return buffers[key]
 
 
@@ -89,16 +91,17 @@ def _classify(target: Any, cells: np.ndarray, level: int, buffers: dict[Any, Any
     """Which cells may hold a centre in ``target`` (hit), and which lie wholly inside it.
 
     Each cell's lng/lat footprint lies in a circle around its centre whose
-    radius is 1.5x its largest centre-to-corner distance, rounded up to a
-    power of :data:`_RADIUS_STEP`.  A centre inside the target grown by that
-    radius is a hit; one inside the target shrunk by it lies wholly inside.
-    Point-in-polygon tests on the prepared grown and shrunk targets (one pair
-    per radius class, kept in ``buffers``) replace a geometry per cell.  A
-    circle across the antimeridian is also tested 360 degrees over.  Cells
-    more than :data:`_POLAR_LAT` from the equator (a pole on a corner among
-    them) take the same test in a polar azimuthal equidistant plane, where
-    their footprints are not stretched over the longitudes; coarse levels
-    are hits, never inside.
+    radius is 1.5x its largest centre-to-corner distance.  A cell whose centre
+    is inside the target, or within that radius of its boundary, is a hit; one
+    whose centre is inside and farther than the radius from the boundary lies
+    wholly inside.  The tests are a prepared point-in-polygon test and the
+    exact distance to the nearest boundary segment from an R-tree of them
+    (:func:`_boundary_distance`): O(log V) a cell for a target of V vertices,
+    however jagged.  A circle across the antimeridian is also tested 360
+    degrees over.  Cells more than :data:`_POLAR_LAT` from the equator (a pole
+    on a corner among them) take the same test in a polar azimuthal
+    equidistant plane, where their footprints are not stretched over the
+    longitudes; coarse levels are hits, never inside.
     """
     n = cells.shape[0]
     if level < _COARSE:
@@ -124,45 +127,48 @@ def _classify(target: Any, cells: np.ndarray, level: int, buffers: dict[Any, Any
             polar_plane[sel] = False
             continue
         plane = _polar_target(target, hemi, buffers)
-        rclass = np.ceil(np.log(r) / np.log(_RADIUS_STEP)).astype(np.int64)
-        for rc in np.unique(rclass):
-            part = sel[rclass == rc]
-            grown, shrunk = _buffers(plane, int(rc), buffers, ("polar", hemi))
-            hit[part] = shapely.contains_xy(grown, x[rclass == rc], y[rclass == rc])
-            inside[part] = shapely.contains_xy(shrunk, x[rclass == rc], y[rclass == rc])
+        hit[sel], inside[sel] = _near(plane, x, y, r, buffers, ("polar", hemi))
     flat = ~polar_plane
-    rclass = np.ceil(np.log(radius) / np.log(_RADIUS_STEP)).astype(np.int64)
     polar = flat & (np.abs(lat) + radius >= 90.0)
     across = flat & ~polar & (np.abs(lng) + radius > 180.0)
-    for rc in np.unique(rclass[flat & ~polar]):
-        sel = np.flatnonzero((rclass == rc) & flat & ~polar)
-        grown, shrunk = _buffers(target, int(rc), buffers)
-        hit[sel] = shapely.contains_xy(grown, lng[sel], lat[sel])
-        inside[sel] = shapely.contains_xy(shrunk, lng[sel], lat[sel]) & ~across[sel]
+    sel = np.flatnonzero(flat & ~polar)
+    if sel.size:
+        hit[sel], inside[sel] = _near(target, lng[sel], lat[sel], radius[sel], buffers, "flat")
+        inside[sel] &= ~across[sel]
         over = sel[across[sel]]
         if over.size:
-            hit[over] |= shapely.contains_xy(grown, lng[over] - np.copysign(360.0, lng[over]), lat[over])
+            shifted = lng[over] - np.copysign(360.0, lng[over])
+            hit[over] |= _near(target, shifted, lat[over], radius[over], buffers, "flat")[0]
     if polar.any():
         _, miny, _, maxy = target.bounds
         hit[polar] = np.where(lat[polar] > 0, maxy >= lat[polar] - radius[polar], miny <= lat[polar] + radius[polar])
     return hit, inside
 
 
-_RADIUS_STEP = 1.25
+def _near(
+    target: Any, x: np.ndarray, y: np.ndarray, r: np.ndarray, trees: dict[Any, Any], key: Any
+) -> tuple[np.ndarray, np.ndarray]:
+    """(hit, inside) for circles of radius ``r`` around (x, y): meeting the target, and wholly in it."""
+    centre_in = shapely.contains_xy(target, x, y)
+    near = _boundary_distance(target, x, y, trees, key) <= r
+    return centre_in | near, centre_in & ~near
 
 
-def _buffers(target: Any, rclass: int, buffers: dict[Any, Any], plane: Any = None) -> tuple[Any, Any]:
-    """The target grown and shrunk by the radius of class ``rclass`` (prepared, computed once)."""
-    key = (plane, rclass)
-    if key not in buffers:
-        r = _RADIUS_STEP**rclass
-        grown = shapely.buffer(target, r, quad_segs=4)
-        shrunk = shapely.buffer(target, -r, quad_segs=4)
-        shapely.prepare(grown)
-        shapely.prepare(shrunk)
-        buffers[key] = grown, shrunk
-    pair: tuple[Any, Any] = buffers[key]
-    return pair
+def _boundary_distance(target: Any, x: np.ndarray, y: np.ndarray, trees: dict[Any, Any], key: Any) -> np.ndarray:
+    """Distance from each point to the target's boundary: the nearest of its segments in an R-tree (built once)."""
+    if ("tree", key) not in trees:
+        rings = shapely.get_rings(shapely.get_parts(target))
+        segments = []
+        for ring in rings:
+            xy = shapely.get_coordinates(ring)
+            segments.append(shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1)))
+        trees[("tree", key)] = shapely.STRtree(np.concatenate(segments) if segments else np.zeros(0, dtype=object))
+    tree = trees[("tree", key)]
+    if len(tree) == 0:
+        return np.full(x.shape[0], np.inf)
+    _, dist = tree.query_nearest(shapely.points(x, y), return_distance=True, all_matches=False)
+    out: np.ndarray = dist
+    return out
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
