@@ -150,12 +150,12 @@ def _near(
 ) -> tuple[np.ndarray, np.ndarray]:
     """(hit, inside) for circles of radius ``r`` around (x, y): meeting the target, and wholly in it."""
     centre_in = shapely.contains_xy(target, x, y)
-    near = _boundary_distance(target, x, y, trees, key) <= r
+    near = _near_boundary(target, x, y, r, trees, key)
     return centre_in | near, centre_in & ~near
 
 
-def _boundary_distance(target: Any, x: np.ndarray, y: np.ndarray, trees: dict[Any, Any], key: Any) -> np.ndarray:
-    """Distance from each point to the target's boundary: the nearest of its segments in an R-tree (built once)."""
+def _near_boundary(target: Any, x: np.ndarray, y: np.ndarray, r: np.ndarray, trees: dict[Any, Any], key: Any) -> np.ndarray:
+    """Whether each point lies within ``r`` of the target's boundary: an R-tree of its segments (built once)."""
     if ("tree", key) not in trees:
         rings = shapely.get_rings(shapely.get_parts(target))
         segments = []
@@ -164,11 +164,11 @@ def _boundary_distance(target: Any, x: np.ndarray, y: np.ndarray, trees: dict[An
             segments.append(shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1)))
         trees[("tree", key)] = shapely.STRtree(np.concatenate(segments) if segments else np.zeros(0, dtype=object))
     tree = trees[("tree", key)]
-    if len(tree) == 0:
-        return np.full(x.shape[0], np.inf)
-    _, dist = tree.query_nearest(shapely.points(x, y), return_distance=True, all_matches=False)
-    out: np.ndarray = dist
-    return out
+    near = np.zeros(x.shape[0], dtype=bool)
+    if len(tree) and x.shape[0]:
+        found = tree.query(shapely.points(x, y), predicate="dwithin", distance=r)
+        near[found[0]] = True
+    return near
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
