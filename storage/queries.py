@@ -315,7 +315,9 @@ def aggregate(
         the stats, or ``limit`` is not a whole number >= 0.
     """
     stored = check_query_level(store, level)
-    stats = tuple(stats)
+    if column is not None and not isinstance(column, str):
+        raise DggsValueError(f"column must be the name of a value column (str), not {column!r}")
+    stats = (stats,) if isinstance(stats, str) else tuple(stats)
     unknown = [s for s in stats if s not in STATS]
     if unknown or not stats:
         raise DggsValueError(f"unknown stat(s) {unknown or stats!r}; choose from {', '.join(STATS)}")

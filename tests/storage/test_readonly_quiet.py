@@ -79,3 +79,4 @@ def test_a_store_copied_over_with_a_writer_open_still_reads_the_latest(tmp_path)
     with CellStore(tmp_path / "copy.db", readonly=True) as reader, CellStore(tmp_path / "copy.db") as writer:
         writer.ingest_records([{"lat": 1.0, "lng": 2.0}], level=6)
         assert reader.count() == 2
+

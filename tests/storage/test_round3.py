@@ -284,3 +284,14 @@ def test_a_failed_bin_leaves_no_empty_store(tmp_path):
     result = CliRunner().invoke(main, ["bin", str(path), "--db", str(db), "--lat", "nope", "--no-progress"])
     assert result.exit_code == 1 and "'nope'" in result.output, result.output
     assert not db.exists() and list(tmp_path.iterdir()) == [path]
+
+
+def test_aggregate_arguments_of_the_wrong_kind_are_named(tmp_path):
+    """A dict for the column (as pandas' agg takes) was a raw TypeError; one stat as a string is one stat."""
+    path = tmp_path / "a.db"
+    with CellStore(path) as store:
+        store.ingest_records([{"lat": 1.0, "lng": 2.0, "v": 3}, {"lat": 1.0, "lng": 2.0, "v": 4}], level=6, values=["v"])
+        with pytest.raises(DggsValueError, match=r"column must be .* not \{'v': 'sum'\}"):
+            store.aggregate(3, {"v": "sum"})
+        (row,) = store.aggregate(3, "v", "sum")
+        assert row["sum"] == 7 and set(row) == {"cell", "sum"}
