@@ -286,8 +286,33 @@ def table_polyfill(k: Kernel, mods: dict[str, Any], box_deg: float, circle_km: f
             impl = "h3ronpy `geometry_to_cells` (centroid containment)"
             cases[(op, impl)] = (lambda poly=poly, lv=lv: hv.geometry_to_cells(poly, H3_RES[lv]), len)
             ref[(op, impl)] = prim
+    countries = natural_earth_countries()
+    if countries is not None:  # real shapes: 177 countries, thousands of vertices, islands and holes
+        import pyarrow as pa
+
+        op = f"the {len(countries)} Natural Earth countries, level 10 / res 5"
+        cases[(op, prim)] = (lambda: [k.polyfill(g, 10, k.primary) for g in countries], lambda r: sum(map(len, r)))
+        if hv is not None:
+            impl = "h3ronpy `wkb_to_cells` (centroid containment)"
+            wkb = pa.array(shapely.to_wkb(countries))
+            cases[(op, impl)] = (lambda: hv.wkb_to_cells(wkb, H3_RES[10]), lambda r: sum(len(x) for x in r.to_pylist()))
+            ref[(op, impl)] = prim
     secs = interleaved(cases, repeat, budget)
     return {"title": "Polygon to cells (per output cell)", "unit": "output cell", "rows": _rows(secs, ref)}
+
+
+def natural_earth_countries() -> Any:
+    """Natural Earth's 1:110m countries as shapely geometries, from the copy the pyogrio package ships (or None)."""
+    try:
+        import pyogrio
+    except ImportError:
+        return None
+    from pathlib import Path
+
+    path = Path(pyogrio.__file__).parent / "tests" / "fixtures" / "naturalearth_lowres" / "naturalearth_lowres.shp"
+    if not path.is_file():
+        return None
+    return pyogrio.read_dataframe(path).geometry.values
 
 
 # --------------------------------------------------------------------------- single calls

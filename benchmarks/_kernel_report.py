@@ -240,7 +240,7 @@ def targets(res: dict[str, Any]) -> list[dict[str, str]]:
     both("compact_cells >= 1x h3ronpy `compact` (per input cell), level 15 vs res 8", 1, "compact", "compact", "h3ronpy")
     both("uncompact_cells >= 1x h3ronpy `uncompact` (per output cell), level 15 vs res 8", 1, "compact", "uncompact",
          "h3ronpy")
-    for shape in ("box", "circle"):
+    for shape in ("box", "circle", "countries"):
         op = next((r["op"] for m, _ in MODES for r in _rows(res, m, "polyfill") if shape in r["op"]), shape)
         both(f"polygon_to_cells >= 1x h3ronpy (per output cell): {op}", 1, "polyfill", op, "h3ronpy")
     for op in ("latlng_to_cell", "cell_to_latlng", "cell_to_parent", "grid_disk(c, 1)"):

@@ -15,6 +15,7 @@ from ._checks import check_level, check_size
 from ._convert import ids_array
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
+from ._kernel import polygon as kpoly
 from ._shapes import boundaries, default_densify, rings_to_geometries
 from .hierarchy import get_base_cells
 
@@ -146,29 +147,34 @@ def _classify(target: Any, cells: np.ndarray, level: int, buffers: dict[Any, Any
 
 
 def _near(
-    target: Any, x: np.ndarray, y: np.ndarray, r: np.ndarray, trees: dict[Any, Any], key: Any
+    target: Any, x: np.ndarray, y: np.ndarray, r: np.ndarray, indexes: dict[Any, Any], key: Any
 ) -> tuple[np.ndarray, np.ndarray]:
     """(hit, inside) for circles of radius ``r`` around (x, y): meeting the target, and wholly in it."""
-    centre_in = shapely.contains_xy(target, x, y)
-    near = _near_boundary(target, x, y, r, trees, key)
-    return centre_in | near, centre_in & ~near
+    if ("edges", key) not in indexes:
+        indexes[("edges", key)] = _edge_index(target)
+    edges = indexes[("edges", key)]
+    hit = np.zeros(x.shape[0], dtype=bool)
+    inside = np.zeros(x.shape[0], dtype=bool)
+    if edges is not None and x.shape[0]:
+        kpoly.classify(x.shape[0], np.ascontiguousarray(x, dtype=np.float64), np.ascontiguousarray(y, dtype=np.float64),
+                       np.ascontiguousarray(r, dtype=np.float64), *edges, hit, inside)
+    return hit, inside
 
 
-def _near_boundary(target: Any, x: np.ndarray, y: np.ndarray, r: np.ndarray, trees: dict[Any, Any], key: Any) -> np.ndarray:
-    """Whether each point lies within ``r`` of the target's boundary: an R-tree of its segments (built once)."""
-    if ("tree", key) not in trees:
-        rings = shapely.get_rings(shapely.get_parts(target))
-        segments = []
-        for ring in rings:
-            xy = shapely.get_coordinates(ring)
-            segments.append(shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1)))
-        trees[("tree", key)] = shapely.STRtree(np.concatenate(segments) if segments else np.zeros(0, dtype=object))
-    tree = trees[("tree", key)]
-    near = np.zeros(x.shape[0], dtype=bool)
-    if len(tree) and x.shape[0]:
-        found = tree.query(shapely.points(x, y), predicate="dwithin", distance=r)
-        near[found[0]] = True
-    return near
+def _edge_index(target: Any) -> tuple[np.ndarray, ...] | None:
+    """The target's edges (x0, y0, x1, y1) and their bucket grid (:func:`dggs.index._kernel.polygon.build`)."""
+    ends = []
+    for ring in shapely.get_rings(shapely.get_parts(target)):
+        xy = shapely.get_coordinates(ring)
+        if xy.shape[0] >= 2:
+            ends.append(np.concatenate([xy[:-1], xy[1:]], axis=1))
+    if not ends:
+        return None
+    seg = np.ascontiguousarray(np.concatenate(ends))
+    x0, y0, x1, y1 = (np.ascontiguousarray(seg[:, i]) for i in range(4))
+    side = int(min(1024, max(1, math.sqrt(seg.shape[0]))))
+    frame, start, items = kpoly.build(x0, y0, x1, y1, side)
+    return x0, y0, x1, y1, frame, start, items
 
 
 def _children(ids: np.ndarray, level: int) -> np.ndarray:
