@@ -1,6 +1,7 @@
 """Run every benchmark and write BENCHMARKS.md at the repository root.
 
-Runs ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py``, ``bench_ingest.py`` and ``bench_serve.py`` (each
+Runs ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py``, ``bench_ingest.py``, ``bench_serve.py`` and
+``bench_workflow.py`` (each
 skipped with a note if it is missing or fails) as subprocesses with this
 interpreter, collects the markdown each prints, and writes BENCHMARKS.md: the
 machine, the command, the date, the code state (commit, dirty or clean), the
@@ -30,7 +31,8 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300}  # seconds
+TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300,
+           "bench_workflow.py": 900}  # seconds
 
 
 def run_script(name: str, args: list[str], env: dict[str, str]) -> tuple[str, str | None, float]:
@@ -80,6 +82,7 @@ def main() -> None:
             ("bench_storage.py", ["--rows", "100000"] if args.quick else [], thread_env(False)),
             ("bench_ingest.py", ["--rows", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
             ("bench_serve.py", ["--clients", "4", "--seconds", "5"] if args.quick else [], thread_env(False)),
+            ("bench_workflow.py", ["--points", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
         ]
         results = [(name, *run_script(name, a, env)) for name, a, env in runs if name not in skip]
         kernel = json.loads(kjson.read_text()) if kjson.exists() else None
