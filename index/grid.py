@@ -84,12 +84,16 @@ def _distances(a: np.ndarray, b: np.ndarray, max_steps: int) -> np.ndarray:
         )
     dist = np.empty(a.shape[0], dtype=np.int64)
     kd.distances(a.shape[0], a, b, max_steps, dist)
+    for j in np.flatnonzero(dist == kd.NEEDS_SEARCH):  # no straight face strip serves the pair (none known)
+        dist[j] = kd.search(a[j], b[j], max_steps)
+        if dist[j] < 0 and max_steps > kd.SEARCH_LIMIT:
+            raise DggsValueError(
+                f"cells {id_name(a[j])!r} and {id_name(b[j])!r}: no exact distance found within "
+                f"{kd.SEARCH_LIMIT} steps of search"
+            )
     if (dist < 0).any():
         i = int(np.flatnonzero(dist < 0)[0])
-        pair = f"cells {id_name(a[i])!r} and {id_name(b[i])!r}"
-        if dist[i] == -2:  # no straight face strip serves the pair (none known) and the search gave up
-            raise DggsValueError(f"{pair}: no exact distance found within {kd.SEARCH_LIMIT} steps of search")
-        raise DggsValueError(f"{pair} are more than {max_steps} steps apart")
+        raise DggsValueError(f"cells {id_name(a[i])!r} and {id_name(b[i])!r} are more than {max_steps} steps apart")
     return dist
 
 

@@ -4,11 +4,14 @@ Within one face pair and away from the icosahedron vertices the distance is
 the count of separating mirror lines in a planar chart, which proves it
 (:func:`dggs.index._kernel.grid_tables.chart_distance`); elsewhere the fewest
 mirror lines over the straight face strips between the cells
-(:func:`dggs.index._kernel.strips.strip_distance`).  Level 0 (20 cells), and
-any pair no strip serves (none in the checks), take a bidirectional
+(:func:`dggs.index._kernel.strips.strip_distance`).  Level 0 (20 cells) reads
+the faces' distances (:data:`grid_tables.FACE_DISTANCE`); any pair no strip
+serves (none in the checks) takes a bidirectional
 breadth-first search over the rings of :func:`dggs.index._kernel.grid.next_ring`,
-within :data:`SEARCH_LIMIT` steps.  Results: the distance; -1 for "more than
-``max_steps`` apart"; -2 for "no strip, and beyond the search limit".
+within :data:`SEARCH_LIMIT` steps, compiled on its own (:func:`search`, called
+by the verb for the pairs :func:`distance` marks :data:`NEEDS_SEARCH`) so that
+the common path compiles in a third of the time.  Results of :func:`distance`:
+the distance; -1 for "more than ``max_steps`` apart"; :data:`NEEDS_SEARCH`.
 """
 
 from __future__ import annotations
@@ -20,10 +23,14 @@ from dggs.geometry._parallel import loops
 
 from .bits import level_of
 from .grid import next_ring
-from .grid_tables import chart_distance
+from .grid_tables import FACE_DISTANCE, chart_distance
 from .strips import strip_distance
 
-__all__ = ["SEARCH_LIMIT", "distance", "distances"]
+__all__ = ["NEEDS_SEARCH", "SEARCH_LIMIT", "distance", "distances", "search"]
+
+#: What :func:`distance` returns for a pair only a search can settle.
+NEEDS_SEARCH = -3
+_FACE_DISTANCE = FACE_DISTANCE.copy()
 
 #: Most steps the fallback search takes (O(d**2) cells: 4096 steps is about 20 M cells).
 SEARCH_LIMIT = 4096
@@ -98,8 +105,8 @@ def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
     Returns
     -------
     int
-        The distance; -1 if it exceeds ``max_steps``; -2 if no straight strip
-        serves the pair and the search gave up at :data:`SEARCH_LIMIT`.
+        The distance; -1 if it exceeds ``max_steps``; :data:`NEEDS_SEARCH` if no
+        straight strip serves the pair (then :func:`search`).
 
     Notes
     -----
@@ -113,16 +120,23 @@ def distance(a: np.uint64, b: np.uint64, max_steps: int) -> int:
     if a == b:
         return 0
     level = level_of(a)
-    if level >= 1:
+    if level == 0:
+        d = _FACE_DISTANCE[np.int64((a >> np.uint64(57)) & np.uint64(31)), np.int64((b >> np.uint64(57)) & np.uint64(31))]
+    else:
         d = chart_distance(a, b, level)
         if d < 0:
             d = chart_distance(b, a, level)
         if d < 0:
             d = strip_distance(a, b, level)
-        if d >= 0:
-            return d if d <= max_steps else -1
-    d = _bfs_distance(a, b, min(max_steps, SEARCH_LIMIT))
-    return -2 if d < 0 and max_steps > SEARCH_LIMIT else d
+        if d < 0:
+            return NEEDS_SEARCH
+    return d if d <= max_steps else -1
+
+
+@njit(cache=True, nogil=True)
+def search(a: np.uint64, b: np.uint64, max_steps: int) -> int:
+    """The distance by breadth-first search, or -1 beyond ``min(max_steps, SEARCH_LIMIT)`` steps."""
+    return _bfs_distance(a, b, min(max_steps, SEARCH_LIMIT))
 
 
 def _distances_impl(a: np.ndarray, b: np.ndarray, max_steps: int, out: np.ndarray) -> None:

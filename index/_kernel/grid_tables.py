@@ -227,7 +227,29 @@ LINE_NORMALS = _line_families()
 LEVEL1_CORNERS = np.ascontiguousarray(split26.LEVEL1)
 #: Index of the face across edge k of face g that is g itself seen from there: FACE_BACK[g, k] = k' with FACE_ADJ[FACE_ADJ[g, k], k'] == g.
 FACE_BACK = np.array([[list(FACE_ADJ[FACE_ADJ[g, k]]).index(g) for k in range(3)] for g in range(20)], dtype=np.int64)
-for _arr in (STEP, BLOCK, CHILD_FLIP, L1_CCW, L1_TABLE, FACE_ADJ, CHART_ROT, CHART_OFF, BASE_ADJ, COLUMN_LABEL, LINE_NORMALS, FACE_BACK):
+
+
+def _face_distances(adj: np.ndarray) -> np.ndarray:
+    """(20, 20) steps between faces across their edges: the level-0 grid distance (breadth-first search)."""
+    out = np.full((20, 20), -1, dtype=np.int64)
+    for source in range(20):
+        out[source, source] = 0
+        front = [source]
+        while front:
+            nxt = []
+            for f in front:
+                for g in adj[f]:
+                    if out[source, g] < 0:
+                        out[source, g] = out[source, f] + 1
+                        nxt.append(int(g))
+            front = nxt
+    return out
+
+
+#: Steps between the 20 faces (level-0 cells): the dodecahedron graph's distances, 0..5.
+FACE_DISTANCE = _face_distances(FACE_ADJ)
+for _arr in (STEP, BLOCK, CHILD_FLIP, L1_CCW, L1_TABLE, FACE_ADJ, CHART_ROT, CHART_OFF, BASE_ADJ, COLUMN_LABEL, LINE_NORMALS, FACE_BACK,
+             FACE_DISTANCE):
     _arr.setflags(write=False)
 
 

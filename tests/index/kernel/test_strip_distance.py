@@ -168,3 +168,34 @@ def test_half_the_globe_apart_at_level_28_is_a_number_not_a_refusal():
     with pytest.raises(dggs.DggsValueError, match=f"more than {d - 1} steps"):
         dggs.grid_distance(a, b, max_steps=d - 1)
     assert dggs.grid_distance(a, b, max_steps=d) == [d]
+
+
+def test_level_0_reads_the_face_graph():
+    """The 20 base cells: distances of the dodecahedron graph (the search over the whole level agrees)."""
+    base = np.sort(np.array([s2i(f) for f in FACES], dtype=np.uint64))
+    out = np.zeros((20, 3), dtype=np.uint64)
+    K.neighbours(base, out)
+    adj = np.searchsorted(base, out).astype(np.int64)
+    for i in range(20):
+        truth = _bfs(adj, i)
+        assert [KD.distance(base[i], base[j], 99) for j in range(20)] == truth.tolist()
+    assert max(KD.distance(base[0], base[j], 99) for j in range(20)) == 5  # the graph's diameter
+
+
+def test_pairs_no_strip_serves_go_to_the_search(monkeypatch):
+    """The fallback (never needed in the checks) gives the same distances, or the named refusal."""
+    import dggs.index.grid as grid
+
+    cells = level_cells(3)
+    adj = adjacency(cells)
+    truth = _bfs(adj, 0)
+    picks = np.arange(0, cells.shape[0], 37)
+
+    def only_search(n, a, b, max_steps, out):
+        out[:] = KD.NEEDS_SEARCH
+
+    monkeypatch.setattr(grid.kd, "distances", only_search)
+    got = dggs.grid_distance(np.full(picks.size, cells[0]), cells[picks])
+    assert np.asarray(got).tolist() == truth[picks].tolist()
+    with pytest.raises(dggs.DggsValueError, match="more than 3 steps"):
+        dggs.grid_distance(cells[0], cells[picks[-1]], max_steps=3)
