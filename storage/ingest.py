@@ -31,6 +31,7 @@ from .connection import Connection
 from .convert import Prepared, jsonable, make_transformer
 from .errors import BadRowError, RejectedRowsWarning
 from .producer import Producer
+from .progress import RowsBar
 from .readers import RawBatch
 from .schema import add_columns, column_types, now, quote, sql_type
 from .sources import open_source
@@ -79,7 +80,7 @@ class IngestOptions:
     on_error: str = "fail"
     replace: bool = False
     crs: Any = None
-    progress: Callable[[int], Any] | None = None
+    progress: Callable[[int], Any] | bool | None = None
     source: str | None = None
 
     def __post_init__(self) -> None:
@@ -92,8 +93,12 @@ class IngestOptions:
             raise DggsValueError(f"on_error must be 'fail' or 'skip', not {self.on_error!r}")
         if not isinstance(self.replace, bool):
             raise DggsValueError(f"replace must be True or False, not {self.replace!r}")
-        if self.progress is not None and not callable(self.progress):
-            raise DggsValueError(f"progress must be callable, not {self.progress!r}")
+        if self.progress is True:
+            object.__setattr__(self, "progress", RowsBar())
+        elif self.progress is False:
+            object.__setattr__(self, "progress", None)
+        elif self.progress is not None and not callable(self.progress):
+            raise DggsValueError(f"progress must be True, False, None or a callable taking a row count, not {self.progress!r}")
         if self.source is not None and not isinstance(self.source, str):
             raise DggsValueError(f"source must be a name (str), not {self.source!r}")
 
@@ -189,7 +194,8 @@ def run_ingest(
     _check_case(store, name, [*declared, *params.get("values", ())])
     transformer = make_transformer(options.crs)
     crs = options.crs
-    on_error, progress = options.on_error, options.progress
+    on_error = options.on_error
+    progress = options.progress if callable(options.progress) else None  # True became a RowsBar
     params = {**params, "level": level, "crs": None if crs is None else str(crs)}
     start = time.perf_counter()
     source = open_source(store, key, kind, name, params, file_info or {}, options.replace)
@@ -239,6 +245,8 @@ def run_ingest(
                 pending = 0
     finally:
         work.stop()
+        if isinstance(progress, RowsBar):
+            progress.close()
     with store.transaction():
         store.merge_pending()
         conn.execute("UPDATE sources SET complete = 1, updated = ? WHERE id = ?", (now(), source_id))

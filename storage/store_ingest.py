@@ -19,7 +19,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["IngestMethods"]
 
-Progress = Callable[[int], Any]
+Progress = Callable[[int], Any] | bool
 Values = Sequence[str] | Mapping[str, Any]
 
 
@@ -119,8 +119,9 @@ class IngestMethods:
             Field separator.
         encoding : str, default "utf-8"
             Text encoding of the file (a UTF-8 byte-order mark is skipped).
-        progress : callable, optional
-            Called with the number of input rows after each batch.
+        progress : bool or callable, optional
+            ``True`` for a progress bar on stderr (tqdm); or called with the
+            number of input rows after each batch.
 
         Returns
         -------

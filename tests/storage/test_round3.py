@@ -295,3 +295,18 @@ def test_aggregate_arguments_of_the_wrong_kind_are_named(tmp_path):
             store.aggregate(3, {"v": "sum"})
         (row,) = store.aggregate(3, "v", "sum")
         assert row["sum"] == 7 and set(row) == {"cell", "sum"}
+
+
+def test_progress_true_draws_a_bar_and_false_none(tmp_path, capsys):
+    """progress=False was refused ("must be callable"), as tqdm's users would not expect."""
+    import pandas as pd
+
+    frame = pd.DataFrame({"lat": [1.0, 2.0, 3.0], "lng": [4.0, 5.0, 6.0]})
+    with CellStore(tmp_path / "p.db") as store:
+        store.ingest_dataframe(frame, level=5, progress=True, source="a")
+        assert "3.00 rows" in capsys.readouterr().err
+        store.ingest_dataframe(frame, level=5, progress=False, source="b")
+        assert capsys.readouterr().err == ""
+        with pytest.raises(DggsValueError, match="progress must be True, False, None or a callable"):
+            store.ingest_dataframe(frame, level=5, progress="yes", source="c")
+        assert store.count() == 6
