@@ -57,10 +57,8 @@ def ingest_csv(
 
     Raises
     ------
-    DggsValueError
-        If ``encoding`` is unknown or ``delimiter`` is not one plain character, or a column is missing.
-    StorageError
-        If ``path`` does not exist.
+    DggsValueError, StorageError
+        As :func:`dggs.storage.prechecks.check_csv` says, before anything is stored.
     """
     file, names, declared = check_csv(path, lat, lng, values, delimiter, encoding)  # before the source is registered
     level = store.resolve_level(level)
