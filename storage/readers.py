@@ -88,10 +88,8 @@ def check_columns(path: str | Path, header: Sequence[str], wanted: Sequence[str]
     """
     missing = [name for name in wanted if name not in header]
     if missing:
-        raise DggsValueError(
-            f"{path} has no column(s) {', '.join(map(repr, missing))}; "
-            f"its header is {', '.join(map(repr, header))}"
-        )
+        have = f"its header is {', '.join(map(repr, header))}" if len(header) else "it has no columns at all"
+        raise DggsValueError(f"{path} has no column(s) {', '.join(map(repr, missing))}; {have}")
 
 
 #: Lines a quoted CSV field may span before it is taken for an unclosed quote.

@@ -310,3 +310,17 @@ def test_progress_true_draws_a_bar_and_false_none(tmp_path, capsys):
         with pytest.raises(DggsValueError, match="progress must be True, False, None or a callable"):
             store.ingest_dataframe(frame, level=5, progress="yes", source="c")
         assert store.count() == 6
+
+
+def test_a_shapefile_without_its_dbf_says_it_has_no_columns(tmp_path):
+    """Its header was printed as nothing: "its header is " and the line ended."""
+    import geopandas as gpd
+    from shapely.geometry import Point
+
+    shp = tmp_path / "s.shp"
+    gpd.GeoDataFrame({"pop": [1, 2]}, geometry=[Point(1, 2), Point(3, 4)], crs=4326).to_file(shp)
+    (tmp_path / "s.dbf").unlink()
+    result = CliRunner().invoke(main, ["bin", str(shp), "--db", str(tmp_path / "n.db"), "--level", "5", "--value", "pop"])
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    assert "has no column(s) 'pop'; it has no columns at all" in result.output
+    assert not (tmp_path / "n.db").exists()
