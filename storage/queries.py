@@ -367,8 +367,8 @@ def aggregate(
         if limit is not None:
             sql += " LIMIT :limit"
             params["limit"] = limit
-        for row in store.query(sql, params):
-            out.append({"cell": row.pop("cell_"), **row})
+        keys = ("cell", *stats)  # the columns in order: cell_, then one per stat
+        out = [dict(zip(keys, row)) for row in store.conn.execute(sql, params)]
     return out
 
 
