@@ -368,7 +368,7 @@ def aggregate(
             sql += " LIMIT :limit"
             params["limit"] = limit
         keys = ("cell", *stats)  # the columns in order: cell_, then one per stat
-        out = [dict(zip(keys, row)) for row in store.conn.execute(sql, params)]
+        out = [dict(zip(keys, row, strict=True)) for row in store.conn.execute(sql, params)]
     return out
 
 
