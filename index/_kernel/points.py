@@ -184,7 +184,8 @@ def _pole_table() -> np.ndarray:
         for k in range(3):
             mx = 0.5 * (_FACE_CORNERS[k, 0] + _FACE_CORNERS[(k + 1) % 3, 0])
             my = 0.5 * (_FACE_CORNERS[k, 1] + _FACE_CORNERS[(k + 1) % 3, 1])
-            px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, mx, my)
+            # the plain-Python body of the compiled function: 60 calls at import need no compiled code loaded
+            px, py, pz = gk.inverse_unit.py_func(_ISEA_FRAMES, face, mx, my)
             if abs(pz) > 1.0 - 1e-12:
                 table[face] = mx, my, math.copysign(1.0, pz)
     return table
