@@ -84,10 +84,17 @@ class Connection:
         self._db = None
 
     def _catch_up(self) -> None:
-        """An immutable reader whose store a writer has opened since (or replaced): open it again."""
-        if self.behind() and Path(self.path).exists():
-            self._conn.close()
-            self._open()
+        """An immutable reader whose store a writer has opened since (or replaced): open it again.
+
+        Raises
+        ------
+        StorageError
+            If the store was deleted: an error naming it, never its old rows.
+        """
+        if not Path(self.path).exists():
+            self._check_fresh()
+        self._conn.close()
+        self._open()
 
     @property
     def conn(self) -> sqlite3.Connection:
@@ -95,9 +102,8 @@ class Connection:
 
         Outside a transaction only: within one, the reader keeps its snapshot.
         """
-        if self.immutable and not self._conn.in_transaction:
+        if self.immutable and not self._conn.in_transaction and self.behind():
             self._catch_up()
-            self._check_fresh()  # deleted under the reader: an error naming it, not the old rows
         return self._conn
 
     def stale(self) -> bool:
@@ -115,7 +121,7 @@ class Connection:
     def behind(self) -> bool:
         """Whether an immutable reader may miss commits: the file changed, or a writer's ``-wal`` is there now.
 
-        A long-lived reader (the server) opens the store again then.
+        :attr:`conn` opens the store again then.
         """
         return self.immutable and (self.stale() or not quiet(Path(self.path).resolve()))
 
@@ -131,10 +137,11 @@ class Connection:
     @property
     def db(self) -> Any:
         """A :class:`sqlite_utils.Database` on the connection (imported on first use: it loads pandas)."""
-        if self._db is None:
+        conn = self.conn  # an immutable reader may open the store again here
+        if self._db is None or self._db.conn is not conn:
             import sqlite_utils
 
-            self._db = sqlite_utils.Database(self.conn)
+            self._db = sqlite_utils.Database(conn)
         return self._db
 
     def query(self, sql: str, params: Any = ()) -> Iterator[dict[str, Any]]:
@@ -195,10 +202,8 @@ class Connection:
         StorageError
             If an immutable reader's file changed since it was opened, or while it was read.
         """
-        own = not self.conn.in_transaction
+        own = not self.conn.in_transaction  # an immutable reader caught up here (the conn property)
         if own:
-            self._catch_up()  # a writer appeared: read beside it, as a WAL reader
-            self._check_fresh()  # an immutable reader: the file as it was opened, or an error
             self.conn.execute("BEGIN")
         try:
             pending = self.conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone()

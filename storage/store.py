@@ -21,6 +21,7 @@ Examples
 from __future__ import annotations
 
 import os
+import sqlite3
 from collections.abc import Sequence
 from typing import Any
 
@@ -89,7 +90,11 @@ class CellStore(IngestMethods, ExportMethods):
         self.readonly = readonly
         self.timeout = float(timeout)
         self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout)
-        self.conn = self._store.conn
+
+    @property
+    def conn(self) -> sqlite3.Connection:
+        """The store's SQLite connection (a read-only store's, opened again when a writer appeared)."""
+        return self._store.conn
 
     @property
     def db(self) -> Any:

@@ -138,16 +138,9 @@ class StoreReader:
 
     def store(self) -> CellStore:
         """Return this thread's read-only store (opened on first use)."""
+        # an immutable reader (the store was quiet) opens itself again before a read once a writer's -wal
+        # is there or the file changed (dggs.storage.connection.Connection.conn)
         store = getattr(self._local, "store", None)
-        if store is not None and store._store.behind():
-            # an immutable reader (the store was quiet) and now a writer's -wal is there, or the file
-            # changed: open again, as a WAL reader beside the writer (see dggs.storage.readonly)
-            with self._lock:
-                if store in self._opened:
-                    self._opened.remove(store)
-            with contextlib.suppress(Exception):
-                store.close()
-            store = self._local.store = None
         if store is None:
             store = CellStore(self.path, create=False, readonly=True)  # immutable while nobody writes
             self._local.store = store

@@ -80,3 +80,15 @@ def test_a_store_copied_over_with_a_writer_open_still_reads_the_latest(tmp_path)
         writer.ingest_records([{"lat": 1.0, "lng": 2.0}], level=6)
         assert reader.count() == 2
 
+
+
+def test_the_public_connection_follows_the_reader_when_it_opens_the_store_again(tmp_path):
+    """``store.conn`` and ``store.db`` were the first connection's: closed once a writer appeared."""
+    path = tmp_path / "c.db"
+    _store(path, [(10.0, 20.0)])
+    with CellStore(path, readonly=True) as reader:
+        assert reader.conn.execute("SELECT count(*) FROM points").fetchone()[0] == 1
+        with CellStore(path) as writer:
+            writer.ingest_records([{"lat": 1.0, "lng": 2.0}], level=6)
+            assert reader.conn.execute("SELECT count(*) FROM all_points").fetchone()[0] == 2
+            assert reader.db.execute("SELECT count(*) FROM all_points").fetchone()[0] == 2
