@@ -82,9 +82,7 @@ def _polar_target(target: Any, hemi: float, buffers: dict[Any, Any]) -> Any:
 
         plane = shapely.make_valid(shapely.transform(part, to_plane))
         # the two sides of a target split at +-180 meet again on the plane
-        plane = shapely.buffer(plane, 1e-12, quad_segs=2)
-        shapely.prepare(plane)
-        buffers[key] = plane
+        buffers[key] = shapely.buffer(plane, 1e-12, quad_segs=2)
     return buffers[key]
 
 
@@ -95,10 +93,9 @@ def _classify(target: Any, cells: np.ndarray, level: int, buffers: dict[Any, Any
     radius is 1.5x its largest centre-to-corner distance.  A cell whose centre
     is inside the target, or within that radius of its boundary, is a hit; one
     whose centre is inside and farther than the radius from the boundary lies
-    wholly inside.  The tests are a prepared point-in-polygon test and the
-    exact distance to the nearest boundary segment from an R-tree of them
-    (:func:`_boundary_distance`): O(log V) a cell for a target of V vertices,
-    however jagged.  A circle across the antimeridian is also tested 360
+    wholly inside.  Both are decided against a compiled bucket grid of the
+    target's edges (:func:`_near`): O(edges near the circle) a cell, however
+    jagged the target.  A circle across the antimeridian is also tested 360
     degrees over.  Cells more than :data:`_POLAR_LAT` from the equator (a pole
     on a corner among them) take the same test in a polar azimuthal
     equidistant plane, where their footprints are not stretched over the
