@@ -345,11 +345,13 @@ COUNT_FUNCS = {
 @settings(max_examples=EXAMPLES)
 @given(value=st.one_of(st.sampled_from(COUNT_ARGS), st.integers(-(1 << 70), 1 << 70)), func=st.sampled_from(sorted(COUNT_FUNCS)))
 @example(value=46, func="grid_ring k")  # a ring past the level's extent: rows of width 0 (reshape(-1, 0) failed)
+@example(value=None, func="grid_distance max_steps")  # no limit, the default since distances are exact at any range
 def test_counts(value, func):
     """k, max_steps, densify and max_cells: non-negative ints, else a DggsValueError naming the value."""
     ok, res = outcome(COUNT_FUNCS[func], value)
     good = isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 0
-    good = good or (value is None and ("max_cells" in func or func in ("cell_to_polygon densify", "cells_to_geojson densify")))  # defaults
+    defaults = ("cell_to_polygon densify", "cells_to_geojson densify", "grid_distance max_steps")  # None: the default
+    good = good or (value is None and ("max_cells" in func or func in defaults))
     if ok:
         assert good, f"{func} accepted {value!r}"
     elif not good:
