@@ -17,11 +17,10 @@ from typing import Any
 import numpy as np
 
 import dggs
-from dggs.errors import DggsValueError
 
 from .readers import RawBatch
 
-__all__ = ["Prepared", "prepare", "make_transformer", "value_types", "infer_type", "is_missing", "INT64"]
+__all__ = ["Prepared", "prepare", "value_types", "infer_type", "is_missing", "INT64"]
 
 #: The range of an SQLite INTEGER.
 INT64 = (-(2**63), 2**63 - 1)
@@ -31,41 +30,21 @@ _Bad = dict[int, tuple[str | None, Any, str]]
 
 @dataclass
 class Prepared:
-    """Checked rows of one batch, ready for ``executemany``."""
+    """Checked rows of one batch, ready to insert.
 
-    rows: list[tuple]
+    ``values`` holds the rows' parameters one after the other, ``width`` to
+    a row: one flat list, as a multi-row ``INSERT`` binds them, built in the
+    reader thread with slice assignments instead of a tuple per row.
+    """
+
+    values: list[Any]
+    width: int
     rejects: list[dict[str, Any]]
     with_parts: bool = False
 
-
-def make_transformer(crs: Any) -> Any:
-    """Return a pyproj transformer from ``crs`` to WGS84 (x, y order), or None.
-
-    Raises
-    ------
-    DggsValueError
-        If pyproj does not know the CRS.
-
-    Examples
-    --------
-    >>> make_transformer("EPSG:4326") is None
-    True
-    >>> t = make_transformer("EPSG:3857")
-    >>> [round(v, 6) for v in t.transform(0.0, 0.0)]
-    [0.0, 0.0]
-    """
-    if crs is None:
-        return None
-    from pyproj import CRS, Transformer
-    from pyproj.exceptions import CRSError
-
-    try:
-        source = CRS.from_user_input(crs)
-    except CRSError as exc:
-        raise DggsValueError(f"unknown CRS {crs!r}: {exc}") from exc
-    if source == CRS.from_epsg(4326):
-        return None
-    return Transformer.from_crs(source, CRS.from_epsg(4326), always_xy=True)
+    def __len__(self) -> int:
+        """The number of rows."""
+        return len(self.values) // self.width
 
 
 def is_missing(value: Any) -> bool:
@@ -367,7 +346,10 @@ def prepare(
         ]
         if with_parts:
             parts.insert(4, [batch.parts[i] for i in idx])  # type: ignore[index]
-    rows = list(zip(*parts, strict=True))
+    width = len(parts)
+    flat: list[Any] = [None] * (width * len(parts[0]))
+    for k, part in enumerate(parts):
+        flat[k::width] = part
     rejects = []
     for i in sorted(bad):
         column, value, reason = bad[i]
@@ -381,7 +363,7 @@ def prepare(
                 "index": i,
             }
         )
-    return Prepared(rows=rows, rejects=rejects, with_parts=with_parts)
+    return Prepared(values=flat, width=width, rejects=rejects, with_parts=with_parts)
 
 
 def jsonable(value: Any) -> Any:

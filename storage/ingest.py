@@ -15,10 +15,8 @@ The ingest loop guarantees:
 
 from __future__ import annotations
 
-import itertools
 import json
 import sqlite3
-import sys
 import time
 import warnings
 from collections.abc import Callable, Iterator, Mapping
@@ -27,8 +25,10 @@ from typing import Any
 
 from dggs.errors import DggsValueError, StorageError
 
+from .bulk import insert_many, max_variables
 from .connection import Connection
-from .convert import Prepared, jsonable, make_transformer
+from .convert import Prepared, jsonable
+from .crs import make_transformer
 from .errors import BadRowError, RejectedRowsWarning
 from .producer import Producer
 from .progress import RowsBar
@@ -173,6 +173,7 @@ def run_ingest(
     merge_rows: int = 250_000,
     file_info: Mapping[str, Any] | None = None,
     threaded: bool = True,
+    ordered: bool = False,
 ) -> IngestResult:
     """Ingest batches into ``store`` with per-batch transactions and resume.
 
@@ -181,6 +182,10 @@ def run_ingest(
     mapping of value column types, filled in as they become known.  With
     ``threaded``, batches are read in a background thread (not for user
     iterables, which may be tied to their thread, like sqlite3 cursors).
+    With ``ordered``, the batches come in cell id order, as one sorted run:
+    their rows go straight into the clustered ``points`` table, each batch
+    touching only its own key range, instead of through ``points_pending``
+    and a merge that sorts in SQLite.
 
     Raises
     ------
@@ -228,14 +233,14 @@ def run_ingest(
                     name, first["row"], first["line"], first["column"],
                     jsonable(first["value"]), first["reason"],
                 )
-            _write_batch(store, source_id, level, batch, prepared, types, new, done, name)
+            _write_batch(store, source_id, level, batch, prepared, types, new, done, name, ordered)
             done += batch.consumed
             result.rows_read += batch.consumed
-            result.rows_inserted += len(prepared.rows)
+            result.rows_inserted += len(prepared)
             result.rows_rejected += len(prepared.rejects)
             for r in prepared.rejects[: max(0, 5 - len(result.rejects))]:
                 result.rejects.append({k: jsonable(v) for k, v in r.items() if k != "index"})
-            pending += len(prepared.rows)
+            pending += len(prepared)
             if progress is not None:
                 progress(batch.consumed)
             if pending >= max(merge_rows, merged // 4):
@@ -290,8 +295,12 @@ def _write_batch(
     new: Mapping[str, str],
     done: int,
     name: str,
+    ordered: bool = False,
 ) -> None:
     """Commit one batch: its rows, its rejects and the source's progress, atomically.
+
+    The rows go to ``points_pending``, or with ``ordered`` (rows in key
+    order) straight into ``points``.
 
     The progress update is a compare-and-set on ``rows_done``: if another
     process is ingesting the same source, this one stops instead of storing
@@ -300,14 +309,14 @@ def _write_batch(
     conn = store.conn
     part = "?" if prepared.with_parts else "0"
     head = (
-        f"INSERT INTO points_pending (cell, lat, lng, source_id, row, part"
+        f"INSERT INTO {'points' if ordered else 'points_pending'} (cell, lat, lng, source_id, row, part"
         f"{''.join(', ' + quote(c) for c in types)}) VALUES "
     )
     one = f"(?, ?, ?, {int(source_id)}, ?, {part}{', ?' * len(types)})"
     with store.transaction():
         _claim_columns(conn, {**types, **new}, store.path)
         store.set_level(level)
-        _insert_many(conn, head, one, prepared.rows, _max_variables(conn))
+        insert_many(conn, head, one, prepared.values, prepared.width, max_variables(conn))
         if prepared.rejects:
             conn.executemany(
                 'INSERT INTO rejects (source_id, row, line, "column", value, reason, record) '
@@ -330,7 +339,7 @@ def _write_batch(
         updated = conn.execute(
             "UPDATE sources SET rows_done = rows_done + ?, rows_inserted = rows_inserted + ?, "
             "rows_rejected = rows_rejected + ?, updated = ? WHERE id = ? AND rows_done = ?",
-            (batch.consumed, len(prepared.rows), len(prepared.rejects), now(), source_id, done),
+            (batch.consumed, len(prepared), len(prepared.rejects), now(), source_id, done),
         ).rowcount
         if updated != 1:
             raise StorageError(
@@ -360,35 +369,3 @@ def _claim_columns(conn: sqlite3.Connection, wanted: Mapping[str, str], path: st
                 "(another ingest created it meanwhile); declare its type to match, or use another store"
             )
     add_columns(conn, {k: v for k, v in wanted.items() if k not in have})
-
-
-def _max_variables(conn: sqlite3.Connection) -> int:
-    """Return how many ``?`` parameters one statement may hold."""
-    if sys.version_info < (3, 11):  # no Connection.getlimit: SQLite's historical default
-        return 999
-    try:
-        return int(conn.getlimit(sqlite3.SQLITE_LIMIT_VARIABLE_NUMBER))
-    except sqlite3.Error:
-        return 999
-
-
-def _insert_many(conn: sqlite3.Connection, head: str, one: str, rows: list[tuple], limit: int) -> None:
-    """Insert ``rows`` with multi-row ``VALUES`` statements, as few as the limit allows.
-
-    Twice as fast as ``executemany`` (one statement step per few thousand
-    rows), and the GIL is released for the whole step, so the reader thread
-    can work meanwhile.
-    """
-    if not rows:
-        return
-    width = len(rows[0])
-    per = max(1, limit // max(width, 1))
-    full = None
-    for start in range(0, len(rows), per):
-        chunk = rows[start : start + per]
-        if len(chunk) == per:
-            full = full or head + ",".join([one] * per)
-            sql = full
-        else:
-            sql = head + ",".join([one] * len(chunk))
-        conn.execute(sql, list(itertools.chain.from_iterable(chunk)))

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import uuid
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -17,7 +17,9 @@ from dggs.errors import DggsValueError
 
 from . import prechecks, readers_arrays, readers_csv, readers_geojson, readers_vector
 from .connection import Connection
+from .crs import make_transformer
 from .ingest import IngestOptions, IngestResult, run_ingest
+from .readers import RawBatch
 from .sources import file_info, find_earlier_version
 
 __all__ = ["ingest_csv", "ingest_geojson", "ingest_vector", "ingest_records", "ingest_points", "ingest_dataframe"]
@@ -228,17 +230,27 @@ def ingest_points(
             declared[name] = implied
     declared.update(types or {})
     source, batch_size = options.source, options.batch_size
+    ordered = readers_arrays.orderable(lat_a, lng_a)
+
+    def batches(skip: int, types: Mapping[str, str]) -> Iterator[RawBatch]:
+        # In cell order when the coordinates are numbers, so that the rows go straight into the clustered
+        # table in key order (no pending table, no sort in SQLite); computed after the source is known
+        # to be incomplete, the same way on a resume.
+        order = readers_arrays.cell_order(lat_a, lng_a, level, make_transformer(options.crs)) if ordered else None
+        return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order)
+
     return run_ingest(
         store,
         key=f"arrays:{source}" if source is not None else f"arrays:{uuid.uuid4().hex}",
         kind="arrays",
         name=source if source is not None else "<arrays>",
         params={"format": "arrays", "values": list(values)},
-        batches=lambda skip, types: readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip),
+        batches=batches,
         level=level,
         declared=declared,
         options=options,
         merge_rows=merge_rows,
+        ordered=ordered,
     )
 
 

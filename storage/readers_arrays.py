@@ -17,7 +17,7 @@ from dggs.errors import DggsValueError
 
 from .readers import RawBatch, _skip
 
-__all__ = ["records_batches", "array_batches", "check_arrays"]
+__all__ = ["records_batches", "array_batches", "check_arrays", "cell_order", "orderable"]
 
 
 def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict[str, Any]:
@@ -108,14 +108,57 @@ def check_arrays(lat: Any, lng: Any, values: Mapping[str, Any]) -> tuple[np.ndar
     return lat_a, lng_a, out
 
 
+def orderable(lat: np.ndarray, lng: np.ndarray) -> bool:
+    """True if :func:`cell_order` can sort these coordinates (numeric arrays of two or more points)."""
+    return lat.dtype.kind in "fiu" and lng.dtype.kind in "fiu" and len(lat) > 1
+
+
+def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any) -> np.ndarray:
+    """The permutation that puts the points in cell id order (the arrays must be :func:`orderable`).
+
+    Only speed depends on it: rows inserted in key order walk the clustered
+    table once instead of sorting in SQLite (three times slower than numpy's
+    sort).  Points that cannot be binned go first; ties keep input order.
+    The order is a pure function of the input, so a resumed ingest skips the
+    same rows it committed before.  Integer ids sort as their strings do.
+    """
+    import dggs
+
+    y, x = lat.astype(np.float64), lng.astype(np.float64)
+    with np.errstate(invalid="ignore"):
+        ok = np.isfinite(y) & np.isfinite(x)
+        if transformer is not None:  # the round trip that prepare() checks, so both find the same bad rows
+            x0, y0 = np.where(ok, x, 0.0), np.where(ok, y, 0.0)
+            x, y = (np.asarray(v, dtype=np.float64) for v in transformer.transform(x0, y0))
+            bx, by = transformer.transform(x, y, direction="INVERSE")
+            ok &= np.isclose(bx, x0, rtol=1e-9, atol=1e-6) & np.isclose(by, y0, rtol=1e-9, atol=1e-6)
+            ok &= np.isfinite(y) & np.isfinite(x)
+        ok &= (np.abs(y) <= 90) & (np.abs(x) <= 180)
+    good = np.flatnonzero(ok)
+    keys = np.asarray(dggs.latlng_to_cell(y[good], x[good], level, as_int=True), dtype=np.uint64)
+    # An id of level L leaves its low 2 * (28 - L) bits zero: with the position in them, a plain sort
+    # (8x faster than argsort) gives the stable order.
+    free = 2 * (dggs.MAX_LEVEL - level)
+    low = np.uint64((1 << free) - 1) if free < 64 else np.uint64(2**64 - 1)
+    if len(good) <= (1 << free) and not (keys & low).any():
+        packed = np.sort(keys | np.arange(len(good), dtype=np.uint64))
+        ranked = good[(packed & low).astype(np.intp)]
+    else:
+        ranked = good[np.argsort(keys, kind="stable")]
+    # The points that cannot be binned first: with on_error="fail" the first batch fails and nothing is
+    # stored, so that fixing them (which would change the order) and ingesting again resumes from row 0.
+    return np.concatenate([np.flatnonzero(~ok), ranked])
+
+
 def array_batches(
     lat: Any,
     lng: Any,
     values: Mapping[str, Any],
     batch_size: int,
     skip: int = 0,
+    order: np.ndarray | None = None,
 ) -> Iterator[RawBatch]:
-    """Slice equal-length arrays (numpy, lists, pandas columns) into batches.
+    """Slice equal-length arrays (numpy, lists, pandas columns) into batches, in ``order`` if given.
 
     Raises
     ------
@@ -126,9 +169,9 @@ def array_batches(
     n = len(lat_a)
     for start in range(skip, n, batch_size):
         stop = min(start + batch_size, n)
-        sl = slice(start, stop)
-        batch_cols = {name: col[sl] for name, col in cols.items()}
-        batch_lat, batch_lng = lat_a[sl], lng_a[sl]
+        take: Any = slice(start, stop) if order is None else order[start:stop]
+        batch_cols = {name: col[take] for name, col in cols.items()}
+        batch_lat, batch_lng = lat_a[take], lng_a[take]
 
         def record(
             i: int, _lat: np.ndarray = batch_lat, _lng: np.ndarray = batch_lng, _cols: dict[str, np.ndarray] = batch_cols
@@ -138,7 +181,7 @@ def array_batches(
 
         yield RawBatch(
             consumed=stop - start,
-            rows=range(start + 1, stop + 1),
+            rows=range(start + 1, stop + 1) if order is None else (take + 1).tolist(),
             lines=None,
             lat=batch_lat,
             lng=batch_lng,

@@ -143,7 +143,7 @@ def to_wgs84(crs: Any) -> Any:
     Raises
     ------
     DggsValueError
-        If pyproj does not know ``crs`` (as :func:`dggs.storage.convert.make_transformer`).
+        If pyproj does not know ``crs`` (as :func:`dggs.storage.crs.make_transformer`).
     """
     if crs is None:
         return None

@@ -1,0 +1,119 @@
+"""Arrays and DataFrames are ingested in cell order, straight into the clustered table (issue 18).
+
+The order only changes speed: the stored rows must be exactly those of the
+input, each under its own row number, and a resumed ingest must skip exactly
+the rows it committed.  Oracles: each point binned alone, as a string id, and
+Python's own sort.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import example, given
+from hypothesis import strategies as st
+
+import dggs
+from dggs.storage import CellStore
+from dggs.storage.crs import make_transformer
+from dggs.storage.readers_arrays import cell_order
+
+# Poles, the antimeridian, an icosahedron vertex (26.565 N, 0 E is one of the 12), NaN and off-range values.
+SPECIAL_LAT = [90.0, -90.0, 0.0, 26.565051177077986, -26.565051177077986, 45.0, math.nan, 91.0, -1e300]
+SPECIAL_LNG = [180.0, -180.0, 0.0, 36.0, -144.0, 179.999999, math.nan, 181.0, 1e300]
+
+coords = st.lists(
+    st.tuples(
+        st.one_of(st.sampled_from(SPECIAL_LAT), st.floats(-90, 90)),
+        st.one_of(st.sampled_from(SPECIAL_LNG), st.floats(-180, 180)),
+    ),
+    min_size=2,
+    max_size=60,
+)
+
+
+def _oracle(points: list[tuple[float, float]], level: int) -> list[int]:
+    """Positions sorted by (can be binned, string id, position), each point binned alone."""
+
+    def key(i: int) -> tuple[bool, str, int]:
+        lat, lng = points[i]
+        ok = math.isfinite(lat) and math.isfinite(lng) and abs(lat) <= 90 and abs(lng) <= 180
+        return (ok, dggs.latlng_to_cell(lat, lng, level) if ok else "", i)
+
+    return sorted(range(len(points)), key=key)
+
+
+@given(coords, st.sampled_from([0, 1, 9, 17, 27, 28]))
+@example([(90.0, 0.0), (90.0, 180.0), (-90.0, -180.0), (math.nan, 0.0)], 28)  # level 28: no spare bits, argsort
+@example([(0.0, 180.0), (0.0, -180.0), (0.0, 180.0), (91.0, 0.0)], 0)  # ties keep input order
+@example([(26.565051177077986, 36.0), (26.565051177077986, 36.0 - 1e-12), (math.nan, math.nan)], 17)
+def test_cell_order_is_the_stable_order_of_the_string_ids(points, level):
+    lat = np.array([p[0] for p in points])
+    lng = np.array([p[1] for p in points])
+    assert cell_order(lat, lng, level, None).tolist() == _oracle(points, level)
+
+
+def test_cell_order_in_a_projected_crs_sorts_the_transformed_points():
+    rng = np.random.default_rng(3)
+    x, y = rng.uniform(-2e7, 2e7, 500), rng.uniform(-1.9e7, 1.9e7, 500)
+    transformer = make_transformer("EPSG:3857")
+    lng, lat = transformer.transform(x, y)
+    expected = _oracle(list(zip(lat.tolist(), lng.tolist(), strict=True)), 12)
+    assert cell_order(y, x, 12, transformer).tolist() == expected
+
+
+def _stored(store: CellStore) -> list[tuple]:
+    return store.conn.execute("SELECT cell, row, lat, lng, v FROM all_points ORDER BY row").fetchall()
+
+
+@pytest.mark.parametrize("batch_size", [7, 1000])
+def test_an_ordered_ingest_stores_every_row_once_and_never_uses_the_pending_table(tmp_path, batch_size):
+    rng = np.random.default_rng(11)
+    n = 300
+    lat = np.concatenate([[90.0, -90.0, math.nan, 0.0], np.degrees(np.arcsin(rng.uniform(-1, 1, n - 4)))])
+    lng = np.concatenate([[0.0, 180.0, 0.0, -180.0], rng.uniform(-180, 180, n - 4)])
+    v = rng.integers(-(2**62), 2**62, n)
+    statements: list[str] = []
+    with CellStore(tmp_path / "s.db") as store:
+        store.conn.set_trace_callback(statements.append)
+        with pytest.warns(dggs.storage.RejectedRowsWarning):
+            store.ingest_points(lat, lng, 10, {"v": v}, batch_size=batch_size, on_error="skip")
+        store.conn.set_trace_callback(None)
+        got = _stored(store)
+        assert store.info()["pending"] == 0
+    assert not [s for s in statements if "INSERT INTO points_pending" in s]
+    assert [s for s in statements if s.startswith("INSERT INTO points ")]
+    expected = [
+        (dggs.latlng_to_cell(float(lat[i]), float(lng[i]), 10), i + 1, float(lat[i]), float(lng[i]), int(v[i]))
+        for i in range(n)
+        if i != 2  # the NaN row is rejected
+    ]
+    assert got == expected
+
+
+def test_ordered_and_unordered_inputs_store_the_same_rows(tmp_path):
+    rng = np.random.default_rng(12)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 200)))
+    lng = rng.uniform(-180, 180, 200)
+    v = rng.normal(size=200)
+    with CellStore(tmp_path / "a.db") as a, CellStore(tmp_path / "b.db") as b:
+        a.ingest_points(lat, lng, 15, {"v": v}, batch_size=16)
+        # As Python objects the coordinates are not orderable: the rows take the pending table and a merge.
+        b.ingest_points(lat.astype(object), lng.astype(object), 15, {"v": v}, batch_size=16)
+        assert _stored(a) == _stored(b)
+        assert len(_stored(a)) == 200
+
+
+def test_a_bad_coordinate_fails_before_any_row_is_stored(tmp_path):
+    """Unbinnable points come first: fixing one and ingesting again resumes from the start, not mid-order."""
+    lat = np.array([10.0, 20.0, 30.0, math.nan, 40.0] * 10)
+    lng = np.array([1.0, 2.0, 3.0, 4.0, 5.0] * 10)
+    with CellStore(tmp_path / "f.db") as store:
+        with pytest.raises(dggs.storage.BadRowError, match="row 4"):
+            store.ingest_points(lat, lng, 8, batch_size=5, source="s")
+        assert store.count() == 0
+        lat[3::5] = 50.0
+        result = store.ingest_points(lat, lng, 8, batch_size=5, source="s")
+        assert result.rows_resumed == 0 and store.count() == 50
