@@ -22,6 +22,7 @@ from dggs.errors import LevelError, LevelMismatchError, StorageError
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
+from .rollup_memo import Memo
 from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
 
 __all__ = ["Connection", "translate", "guarded", "DEFAULT_LEVEL", "connect_immutable"]
@@ -60,6 +61,7 @@ class Connection:
             except OSError as exc:
                 raise translate(exc, path) from exc
         self._db: Any = None
+        self.memo = Memo()  # roll-up partials of the current file state (rollup_memo)
         self._open()
 
     def _open(self) -> None:

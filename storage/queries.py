@@ -16,6 +16,8 @@ import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
 
 from .connection import Connection
+from .rollup import add_partials, remembered, streamed
+from .rollup_memo import state
 from .schema import quote
 
 __all__ = ["STATS", "normalise_cells", "count", "get", "descendants", "aggregate", "rows_under"]
@@ -263,24 +265,12 @@ def _rollup_by_ranges(
         row = tuple(cursor.execute(sql, (cell,)).fetchone())
         if cell in extra:
             try:
-                row = _add_partials(row, extra[cell])
+                row = add_partials(row, extra[cell])
             except TypeError:  # values of unlike types: leave the comparison to SQL
                 return None
         if row[0]:  # only non-empty cells, as GROUP BY gives
             out.append({"cell": cell, **_stats_of(row, stats)})
     return out
-
-
-def _add_partials(a: tuple, b: tuple) -> tuple:
-    """Combine (count, [sum, min, max, non-NULL count]) of two disjoint sets of rows."""
-    if len(a) == 1:
-        return (a[0] + b[0],)
-
-    def pick(f: Any, x: Any, y: Any) -> Any:
-        return y if x is None else x if y is None else f(x, y)
-
-    return (a[0] + b[0], pick(lambda x, y: x + y, a[1], b[1]), pick(min, a[2], b[2]), pick(max, a[3], b[3]),
-            a[4] + b[4])
 
 
 def _stats_of(row: tuple, stats: tuple[str, ...]) -> dict[str, Any]:
@@ -357,12 +347,19 @@ def aggregate(
     exprs = ", ".join(f"{STATS[s].format(c=quote(column) if column else '')} AS {quote(s)}" for s in stats)
     order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
     out = []
+    whole = cell is None and order_by is None  # a whole-store roll-up in cell order: remembered (rollup_memo)
+    before = state(store.conn) if whole else None
+    if before is not None and (answer := remembered(store, before, level, column, stats, limit)) is not None:
+        return answer
     with store.snapshot() as table:
         if order_by is None:
             under = found if cell is not None else None
             ranged = _rollup_by_ranges(store, level, under, column, stats, limit, table != "points")
             if ranged is not None:
                 return ranged
+        if before is not None and table == "points":  # stream the groups instead of sorting every row
+            if (answer := streamed(store, before, level, column, stats, limit)) is not None:
+                return answer
         sql = f"SELECT substr(cell, 1, :n) AS cell_, {exprs} FROM {table} {where} GROUP BY cell_ ORDER BY {order}"
         if limit is not None:
             sql += " LIMIT :limit"
