@@ -24,7 +24,7 @@ from shapely.geometry import MultiPolygon, Polygon, box
 from shapely.geometry.polygon import orient
 
 from ._checks import check_densify, check_point_count
-from ._kernel import hierarchy as kh
+from ._densify import needed_densify
 from ._kernel import points as kp
 
 _POLE_TOL = 1e-9  # degrees
@@ -43,21 +43,6 @@ def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False, max_points: 
     out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
     kp.boundaries(ids.shape[0] * (densify + 1), ids, densify, out, lnglat)
     return out
-
-
-def default_densify(level: int) -> int:
-    """Edge points that keep a polygon's geodesic area within 1e-6 of the cell's.
-
-    Measured with pyproj.Geod on WGS84 over random cells (tests/test_area.py):
-    level-0 and level-1 edges are nearly geodesics; cells touching an
-    icosahedron vertex bend the same at every level (the projection is
-    self-similar there), which sets the need at levels 2-12.
-    """
-    if level <= 1:
-        return 32
-    if level <= 12:
-        return 256
-    return 64 if level <= 16 else 32
 
 
 def special_rings(coords: np.ndarray) -> np.ndarray:
@@ -170,14 +155,15 @@ def ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygon
 
 
 def densify_groups(ids: np.ndarray, densify: int | None) -> list[tuple[np.ndarray, int]]:
-    """(row indices, densify) per group of rows built alike: one group, or one per level's default."""
+    """(row indices, densify) per group of rows built alike: one group, or one per count cells need.
+
+    With ``densify=None`` each cell gets the points per edge that keep its
+    geodesic area within 1e-6 of the cell's (:func:`dggs.index._densify.needed_densify`).
+    """
     if densify is not None:
         return [(np.arange(ids.shape[0]), check_densify(densify))]
-    lv = kh.levels(ids)
-    groups: dict[int, list[np.ndarray]] = {}
-    for level in np.unique(lv):
-        groups.setdefault(default_densify(int(level)), []).append(np.flatnonzero(lv == level))
-    return [(np.sort(np.concatenate(parts)), n) for n, parts in groups.items()]
+    need = needed_densify(ids)
+    return [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
 
 
 def special_geometries(ids: np.ndarray, densify: int) -> np.ndarray:
@@ -241,12 +227,13 @@ def wkb(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> 
         special = special_rings(coords)
         plain = rows[~special]
         if plain.size:
-            block = _wkb_records(coords[~special])
+            xy = coords[~special] if plain.size < rows.size else coords
+            block = _wkb_records(xy)
             offsets = np.arange(plain.size + 1, dtype=np.int64) * block.shape[1]
             chunks.append((plain, offsets, block.reshape(-1)))
-            xy = coords[~special]
-            bounds[plain, :2] = xy.min(axis=1)
-            bounds[plain, 2:] = xy.max(axis=1)
+            for k in (0, 1):  # one coordinate at a time: 8x faster than reducing (N, M, 2) over axis 1
+                bounds[plain, k] = xy[..., k].min(axis=1)
+                bounds[plain, k + 2] = xy[..., k].max(axis=1)
             types.add("Polygon")
         if special.any():
             sel = rows[special]

@@ -18,7 +18,7 @@ from ._convert import CELL as _CELL
 from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
-from ._shapes import boundaries, default_densify, geometries
+from ._shapes import boundaries, geometries
 
 __all__ = [
     "latlng_to_cell",
@@ -26,7 +26,6 @@ __all__ = [
     "cell_to_boundary",
     "cell_to_polygon",
     "cells_to_geojson",
-    "default_densify",
 ]
 
 

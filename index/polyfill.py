@@ -16,7 +16,7 @@ from ._convert import ids_array
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 from ._kernel import polygon as kpoly
-from ._shapes import boundaries, default_densify, rings_to_geometries
+from ._shapes import boundaries, geometries
 from .hierarchy import get_base_cells
 
 __all__ = ["polygon_to_cells", "FILL_MODES"]
@@ -211,7 +211,7 @@ def polygon_to_cells(
 
     Cells have curved edges.  ``"contains"`` and ``"overlaps"`` judge each
     boundary cell by its densified polygon, exactly the one
-    :func:`dggs.cell_to_polygon` gives (256 points per edge at levels 2-12,
+    :func:`dggs.cell_to_polygon` gives (points per edge chosen cell by cell,
     see docs/grid.md), with shapely's planar predicates in lng/lat
     (``contains`` and ``intersects``), the same plane in which the polygon's
     own edges are straight: a cell with an edge on the polygon's boundary is
@@ -268,9 +268,8 @@ def polygon_to_cells(
 
 
 def _cell_geometries(ids: np.ndarray, level: int) -> np.ndarray:
-    """The cells' polygons as :func:`dggs.cell_to_polygon` draws them (default densification)."""
-    n = default_densify(level)
-    return rings_to_geometries(boundaries(ids, n, lnglat=True), ids, n)
+    """The cells' polygons as :func:`dggs.cell_to_polygon` draws them (default densification, cell by cell)."""
+    return geometries(ids, None)
 
 
 def _edge_test(target: Any, ids: np.ndarray, level: int, mode: str) -> np.ndarray:

@@ -58,18 +58,51 @@ def test_geodesic_area_equals_cell_area(level):
     assert np.abs(areas / expected - 1).max() <= 2e-6
 
 
-def test_polygon_default_densify_is_within_1e6():
-    for level in (1, 2, 4, 9, 14):
-        rng = np.random.default_rng(100 + level)
-        lat = np.degrees(np.arcsin(rng.uniform(-1, 1, 12)))
-        lng = rng.uniform(-170, 170, 12)
-        cells = dggs.latlng_to_cell(lat, lng, level)
-        for c, poly in zip(cells, dggs.cell_to_polygon(cells), strict=True):
-            if poly.geom_type != "Polygon":
-                continue
-            xs, ys = poly.exterior.coords.xy
-            area = abs(GEOD.polygon_area_perimeter(np.array(xs), np.array(ys))[0])
-            assert area == pytest.approx(dggs.cell_area(c), rel=1e-6)
+def _vertex_cells(level, per_vertex=4, seed=0):
+    """Cells a few cell-widths from each icosahedron vertex and face centre, where the projection bends most."""
+    from dggs.geometry.icosahedron import ISEA, xyz_to_latlng
+
+    geo = ISEA.geometry
+    beta, lng = xyz_to_latlng(np.concatenate([geo.vertices, geo.centres]))
+    lat = WGS84.authalic_to_geodetic_deg(np.degrees(beta))
+    rng = np.random.default_rng(seed)
+    step = 3 * math.sqrt(dggs.cell_area(level)) / 111_000.0  # about three cell widths, in degrees
+    lat = np.repeat(lat, per_vertex) + rng.normal(0.0, step, lat.size * per_vertex)
+    lng = np.repeat(np.degrees(lng), per_vertex) + rng.normal(0.0, step, lng.size * per_vertex)
+    keep = np.abs(lat) < 89.0  # pole cells: pyproj.Geod's own area error is the larger there at fine levels
+    return dggs.latlng_to_cell(lat[keep], (lng[keep] + 180.0) % 360.0 - 180.0, level)
+
+
+@pytest.mark.parametrize("level", [1, 2, 4, 7, 9, 12, 14, 17, 19])
+def test_polygon_default_densify_is_within_1e6(level):
+    """Each cell gets its own point count (index/_densify.py); pyproj.Geod measures the result."""
+    rng = np.random.default_rng(100 + level)
+    lat = np.degrees(np.arcsin(rng.uniform(-0.99, 0.99, 40)))
+    lng = rng.uniform(-170, 170, 40)
+    cells = np.concatenate([dggs.latlng_to_cell(lat, lng, level), _vertex_cells(level)])
+    for c, poly in zip(cells, dggs.cell_to_polygon(cells), strict=True):
+        if poly.geom_type != "Polygon":
+            continue
+        xs, ys = poly.exterior.coords.xy
+        area = abs(GEOD.polygon_area_perimeter(np.array(xs), np.array(ys))[0])
+        assert area == pytest.approx(dggs.cell_area(c), rel=1e-6), c
+
+
+def test_the_default_puts_few_points_on_fine_cells_and_many_only_where_edges_bend():
+    from dggs.index._densify import needed_densify
+    from dggs.index.ids import str_to_int
+
+    rng = np.random.default_rng(5)
+    lat = np.degrees(np.arcsin(rng.uniform(-0.99, 0.99, 500)))
+    lng = rng.uniform(-180, 180, 500)
+    medians = []
+    for level in (8, 12, 17, 22):
+        ids = np.asarray(dggs.latlng_to_cell(lat, lng, level, as_int=True), dtype=np.uint64)
+        medians.append(float(np.median(needed_densify(ids))))
+        vertex = np.asarray(str_to_int(list(_vertex_cells(level))), dtype=np.uint64)
+        assert np.median(needed_densify(vertex)) >= medians[-1]  # bends more near the vertices
+    assert medians == sorted(medians, reverse=True)  # fewer points the finer the level
+    assert medians[-2] <= 8 and medians[-1] <= 1  # against 32 for every cell before
 
 
 @pytest.mark.parametrize("level", [0, 1, 2, 3])
