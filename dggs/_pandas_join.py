@@ -141,5 +141,13 @@ def sjoin_cells(
     )
     out = left.iloc[pairs.pop(row).to_numpy()]  # the points' index, columns (and geometry) kept
     extra = {c: pairs[c].to_numpy() for c in pairs.columns if c != key}
-    text = np.asarray(int_to_str(out[key].to_numpy(dtype=np.uint64)), dtype=object)
-    return out.assign(**extra, **{key: pd.array(text, dtype="str")})
+    return out.assign(**extra, **{key: _text(out[key].to_numpy(dtype=np.uint64))})
+
+
+def _text(ids: np.ndarray) -> Any:
+    """String ids as a pandas ``str`` column: from a pyarrow string array on pandas 3 (no Python strings)."""
+    if int(pd.__version__.split(".")[0]) >= 3:
+        import pyarrow as pa
+
+        return pd.array(int_to_str(pa.array(ids)), dtype="str")
+    return pd.array(np.asarray(int_to_str(ids), dtype=object), dtype="str")
