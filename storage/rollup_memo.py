@@ -4,7 +4,7 @@ A roll-up of a million rows reads every row; an analyst then rolls up to a
 coarser level and exports that, reading every row again each time.  The
 partials of a roll-up (per cell: rows, and the column's sum, min, max and
 non-NULL count) are kept with the state of the file they were read from,
-and answer later calls while that state holds:
+and answer later calls while that state holds (up to :data:`MEMO_CELLS` cells):
 
 * the same level: the very values SQL computed;
 * a coarser level: the partials of the finest remembered level regrouped,
@@ -26,9 +26,13 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Partials", "Memo", "State", "state"]
+__all__ = ["Partials", "Memo", "State", "state", "MEMO_CELLS"]
 
 _EXACT = 2**53
+
+#: The most cells a connection remembers partials of, all levels and columns together (about 150 bytes
+#: a cell): a server thread rolling up fine levels must not hold millions of them.
+MEMO_CELLS = 300_000
 
 #: A file state: the connection object, ``PRAGMA data_version`` and ``total_changes``.
 State = tuple[Any, int, int]
@@ -157,7 +161,11 @@ class Memo:
         return regrouped
 
     def keep(self, now: State, column: str | None, level: int, partials: Partials) -> None:
-        """Remember ``partials``, read in a snapshot no newer than ``now`` described."""
+        """Remember ``partials``, read in a snapshot no newer than ``now`` described (within :data:`MEMO_CELLS`)."""
+        if len(partials.cells) > MEMO_CELLS:
+            return
         if not self._valid(now):
             self._state = now
+        if sum(len(p.cells) for p in self._kept.values()) + len(partials.cells) > MEMO_CELLS:
+            self._kept.clear()
         self._kept[(column, level)] = partials

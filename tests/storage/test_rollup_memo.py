@@ -131,3 +131,18 @@ def test_streamed_and_sorted_partials_agree_at_every_level(tmp_path, column):
                 assert all(a == pytest.approx(b, rel=1e-12, abs=1e-300) for a, b in pairs)
             elif column != "t":
                 assert streamed.total == sorted_.total
+
+
+def test_the_memory_held_is_bounded(tmp_path, monkeypatch):
+    from dggs.storage import rollup_memo
+
+    monkeypatch.setattr(rollup_memo, "MEMO_CELLS", 150)
+    store, path = _store(tmp_path, 11)
+    with store:
+        memo = store._store.memo
+        fine = store.aggregate(12, "i", STATS)  # about 350 cells: over the bound, not kept
+        assert len(fine) > 150 and not memo._kept
+        assert store.aggregate(3, "i", STATS) == _oracle(path, 3, "i", STATS)
+        assert store.aggregate(4, "i", STATS) == _oracle(path, 4, "i", STATS)
+        assert sum(len(p.cells) for p in memo._kept.values()) <= 150
+        assert store.aggregate(2, "i", STATS) == _oracle(path, 2, "i", STATS)
