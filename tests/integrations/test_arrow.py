@@ -196,6 +196,31 @@ def test_gdal_formats_through_pyogrio(tmp_path, fmt):
         assert (frame.geom_type == "MultiPolygon").all()
 
 
+@pytest.mark.parametrize("fmt", ["gpkg", "fgb"])
+def test_polygon_only_tables_go_to_gdal_as_arrow_and_read_back_as_geopandas_writes_them(tmp_path, fmt):
+    """Without an antimeridian cell the WKB goes straight to pyogrio.write_arrow; geopandas' own file is the oracle."""
+    pyogrio = pytest.importorskip("pyogrio")
+    geopandas = pytest.importorskip("geopandas")
+    lat, lng = np.linspace(-60, 60, 400), np.linspace(-170, 170, 400)
+    cells = np.unique(dggs.latlng_to_cell(lat, lng, 6))
+    props = {"n": np.arange(len(cells)), "x": np.linspace(0.0, 1.0, len(cells)), "s": [f"v{i}" for i in range(len(cells))]}
+    table = cells_to_table(cells, props, densify=4)
+    fast, slow = tmp_path / f"fast.{fmt}", tmp_path / f"slow.{fmt}"
+    write_cells(table, fast)
+    frame = geopandas.GeoDataFrame(
+        table.drop_columns(["bbox", "geometry"]).to_pandas(),
+        geometry=shapely.from_wkb(table.column("geometry").to_numpy(zero_copy_only=False)), crs="OGC:CRS84",
+    )
+    frame.to_file(slow, driver={"gpkg": "GPKG", "fgb": "FlatGeobuf"}[fmt], engine="pyogrio", layer="fast")
+    a = pyogrio.read_dataframe(slow).sort_values("cell_id", ignore_index=True)
+    b = pyogrio.read_dataframe(fast).sort_values("cell_id", ignore_index=True)
+    assert pyogrio.read_info(fast)["geometry_type"] == pyogrio.read_info(slow)["geometry_type"] == "Polygon"
+    assert list(b.columns) == list(a.columns) and b.dtypes.to_dict() == a.dtypes.to_dict() and b.crs == a.crs
+    assert b.drop(columns="geometry").equals(a.drop(columns="geometry"))
+    assert b.geometry.geom_equals_exact(a.geometry, 0).all()
+    assert (shapely.hausdorff_distance(b.geometry.values, dggs.cell_to_polygon(cells, 4)) == 0).all()
+
+
 def test_gdal_write_failure_leaves_nothing(tmp_path):
     pytest.importorskip("pyogrio")
     with pytest.raises(dggs.StorageError):

@@ -225,10 +225,14 @@ def test_other_gdal_write_failures_name_the_target_not_the_temp_file(good_db, tm
     errors = pytest.importorskip("pyogrio.errors")
     geopandas = pytest.importorskip("geopandas")
 
+    pyogrio = pytest.importorskip("pyogrio")
+
     def broken(self, filename, **kwargs):
         raise errors.DataSourceError(f"Failed to write features to dataset {filename}; simulated")
 
     monkeypatch.setattr(geopandas.GeoDataFrame, "to_file", broken)
+    # polygons only go to GDAL as an arrow table (dggs.arrow.write_cells): that path fails alike
+    monkeypatch.setattr(pyogrio, "write_arrow", lambda table, filename, **kwargs: broken(table, filename))
     out = tmp_path / "cells.gpkg"
     with CellStore(good_db, readonly=True) as store, pytest.raises(StorageError) as info:
         store.export(out, 2)
