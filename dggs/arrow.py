@@ -308,14 +308,20 @@ def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | Non
     from pyogrio.errors import DataLayerError, DataSourceError
 
     layer = re.sub(r"\W", "_", os.path.splitext(os.path.basename(os.fspath(path)))[0]) or "cells"
-    if format in ("gpkg", "fgb") and _geometry_types(table) <= {"Polygon"}:
-        # Polygons only (no cell split at the antimeridian): the WKB column goes to GDAL as it is,
-        # 3x faster than through shapely geometries and a GeoDataFrame.
+    kinds = _geometry_types(table)
+    if format in ("gpkg", "fgb") and kinds <= {"Polygon", "MultiPolygon"}:
+        # The WKB column goes to GDAL as it is, 3x faster than through shapely geometries and a
+        # GeoDataFrame; one layer type, so with a cell split at the antimeridian every cell becomes a
+        # MultiPolygon (as geopandas' promote_to_multi does).
+        out = table.drop_columns(["bbox"]) if "bbox" in table.column_names else table
+        kind = "Polygon" if kinds <= {"Polygon"} else "MultiPolygon"
+        if kind == "MultiPolygon":
+            at = out.column_names.index("geometry")
+            out = out.set_column(at, out.schema.field("geometry"), _as_multipolygons(out.column("geometry")))
         with atomic_path(path, keep_name=True) as tmp:
             try:
-                pyogrio.write_arrow(table.drop_columns(["bbox"]) if "bbox" in table.column_names else table, tmp,
-                                    layer=layer, driver=_DRIVERS[format], geometry_name="geometry",
-                                    geometry_type="Polygon", crs="OGC:CRS84")
+                pyogrio.write_arrow(out, tmp, layer=layer, driver=_DRIVERS[format], geometry_name="geometry",
+                                    geometry_type=kind, crs="OGC:CRS84")
             except (DataSourceError, DataLayerError) as exc:
                 raise writer_error(path, tmp, exc) from exc
         return format
@@ -327,6 +333,18 @@ def write_cells(table: pa.Table, path: str | os.PathLike[str], format: str | Non
         except (DataSourceError, DataLayerError) as exc:  # GDAL's failures, a full disk among them
             raise writer_error(path, tmp, exc) from exc
     return format
+
+
+#: The WKB header of a little-endian MultiPolygon of one polygon: byte order 1, type 6, one part.
+_ONE_PART_MULTIPOLYGON = bytes([1, 6, 0, 0, 0, 1, 0, 0, 0])
+
+
+def _as_multipolygons(wkb: Any) -> pa.Array:
+    """WKB Polygons wrapped as one-part MultiPolygons (OGC simple features: the polygon's record follows)."""
+    blobs = wkb.to_pylist()
+    kind = [(b[1] if b[0] == 1 else b[4]) if b is not None else 0 for b in blobs]  # the type's low byte
+    return pa.array([_ONE_PART_MULTIPOLYGON + b if k == 3 else b for b, k in zip(blobs, kind, strict=True)],
+                    type=wkb.type)
 
 
 def _geometry_types(table: pa.Table) -> set[str]:

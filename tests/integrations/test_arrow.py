@@ -197,11 +197,16 @@ def test_gdal_formats_through_pyogrio(tmp_path, fmt):
 
 
 @pytest.mark.parametrize("fmt", ["gpkg", "fgb"])
-def test_polygon_only_tables_go_to_gdal_as_arrow_and_read_back_as_geopandas_writes_them(tmp_path, fmt):
-    """Without an antimeridian cell the WKB goes straight to pyogrio.write_arrow; geopandas' own file is the oracle."""
+@pytest.mark.parametrize("east", [170.0, 180.0])
+def test_tables_go_to_gdal_as_arrow_and_read_back_as_geopandas_writes_them(tmp_path, fmt, east):
+    """The WKB goes straight to pyogrio.write_arrow; geopandas' own file (promote_to_multi) is the oracle.
+
+    Up to 170 E every cell is a Polygon; up to 180 some are split at the antimeridian, so all are written
+    as MultiPolygons, the Polygons wrapped as one-part MultiPolygons.
+    """
     pyogrio = pytest.importorskip("pyogrio")
     geopandas = pytest.importorskip("geopandas")
-    lat, lng = np.linspace(-60, 60, 400), np.linspace(-170, 170, 400)
+    lat, lng = np.linspace(-60, 60, 400), np.linspace(-170, east, 400)
     cells = np.unique(dggs.latlng_to_cell(lat, lng, 6))
     props = {"n": np.arange(len(cells)), "x": np.linspace(0.0, 1.0, len(cells)), "s": [f"v{i}" for i in range(len(cells))]}
     table = cells_to_table(cells, props, densify=4)
@@ -211,10 +216,15 @@ def test_polygon_only_tables_go_to_gdal_as_arrow_and_read_back_as_geopandas_writ
         table.drop_columns(["bbox", "geometry"]).to_pandas(),
         geometry=shapely.from_wkb(table.column("geometry").to_numpy(zero_copy_only=False)), crs="OGC:CRS84",
     )
-    frame.to_file(slow, driver={"gpkg": "GPKG", "fgb": "FlatGeobuf"}[fmt], engine="pyogrio", layer="fast")
+    split = bool((frame.geom_type == "MultiPolygon").any())
+    assert split == (east == 180.0)
+    frame.to_file(slow, driver={"gpkg": "GPKG", "fgb": "FlatGeobuf"}[fmt], engine="pyogrio", layer="fast",
+                  promote_to_multi=split)
     a = pyogrio.read_dataframe(slow).sort_values("cell_id", ignore_index=True)
     b = pyogrio.read_dataframe(fast).sort_values("cell_id", ignore_index=True)
-    assert pyogrio.read_info(fast)["geometry_type"] == pyogrio.read_info(slow)["geometry_type"] == "Polygon"
+    kind = "MultiPolygon" if split else "Polygon"
+    assert pyogrio.read_info(fast)["geometry_type"] == pyogrio.read_info(slow)["geometry_type"] == kind
+    assert (b.geom_type == kind).all()
     assert list(b.columns) == list(a.columns) and b.dtypes.to_dict() == a.dtypes.to_dict() and b.crs == a.crs
     assert b.drop(columns="geometry").equals(a.drop(columns="geometry"))
     assert b.geometry.geom_equals_exact(a.geometry, 0).all()
