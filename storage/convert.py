@@ -18,6 +18,7 @@ import numpy as np
 
 import dggs
 
+from .crs import transform_points
 from .readers import RawBatch
 
 __all__ = ["Prepared", "prepare", "value_types", "infer_type", "is_missing", "INT64"]
@@ -289,17 +290,7 @@ def prepare(
     lat = _floats(batch.lat, "lat", lat_bad, batch.text)
     lng = _floats(batch.lng, "lng", lng_bad, batch.text)
     if transformer is not None:
-        ok = np.isfinite(lat) & np.isfinite(lng)
-        x, y = transformer.transform(np.where(ok, lng, 0.0), np.where(ok, lat, 0.0))
-        # pyproj clamps what lies outside a projection's domain (EPSG:3857's (1e20, 1e20) gives
-        # lat 90): a point that does not transform back to itself was never in the CRS.
-        bx, by = transformer.transform(x, y, direction="INVERSE")
-        with np.errstate(invalid="ignore"):
-            back = np.isclose(bx, np.where(ok, lng, 0.0), rtol=1e-9, atol=1e-6) & np.isclose(
-                by, np.where(ok, lat, 0.0), rtol=1e-9, atol=1e-6
-            )
-        lng, lat = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
-        failed = ok & ~(np.isfinite(lat) & np.isfinite(lng) & back)
+        lat, lng, failed = transform_points(transformer, lat, lng)
         for i in np.flatnonzero(failed).tolist():
             lat_bad.setdefault(i, ("lat", (batch.lat[i], batch.lng[i]), "cannot be transformed to WGS84"))
     with np.errstate(invalid="ignore"):

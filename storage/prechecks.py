@@ -20,6 +20,7 @@ import dggs
 from dggs.errors import DggsValueError, LevelError, StorageError
 
 from . import readers, readers_csv, readers_geojson, readers_vector
+from .crs import make_transformer
 from .errors import BadRowError
 from .schema import BASE_COLUMNS, check_column_name
 
@@ -158,7 +159,7 @@ def check_vector(
     names, declared = value_spec(values)
     readers.check_columns(file, fields, names)
     crs = crs if crs is not None else file_crs
-    readers_vector.to_wgs84(crs)  # an unknown CRS fails here
+    make_transformer(crs)  # an unknown CRS fails here
     return file, names, declared, crs
 
 

@@ -15,6 +15,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError
 
+from .crs import transform_points
 from .readers import RawBatch, _skip
 
 __all__ = ["records_batches", "array_batches", "check_arrays", "cell_order", "orderable"]
@@ -125,21 +126,18 @@ def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any) -
     import dggs
 
     y, x = lat.astype(np.float64), lng.astype(np.float64)
+    ok = np.isfinite(y) & np.isfinite(x)
+    if transformer is not None:  # the transform prepare() makes, so both find the same bad rows
+        y, x, failed = transform_points(transformer, y, x)
+        ok &= ~failed
     with np.errstate(invalid="ignore"):
-        ok = np.isfinite(y) & np.isfinite(x)
-        if transformer is not None:  # the round trip that prepare() checks, so both find the same bad rows
-            x0, y0 = np.where(ok, x, 0.0), np.where(ok, y, 0.0)
-            x, y = (np.asarray(v, dtype=np.float64) for v in transformer.transform(x0, y0))
-            bx, by = transformer.transform(x, y, direction="INVERSE")
-            ok &= np.isclose(bx, x0, rtol=1e-9, atol=1e-6) & np.isclose(by, y0, rtol=1e-9, atol=1e-6)
-            ok &= np.isfinite(y) & np.isfinite(x)
         ok &= (np.abs(y) <= 90) & (np.abs(x) <= 180)
     good = np.flatnonzero(ok)
     keys = np.asarray(dggs.latlng_to_cell(y[good], x[good], level, as_int=True), dtype=np.uint64)
     # An id of level L leaves its low 2 * (28 - L) bits zero: with the position in them, a plain sort
     # (8x faster than argsort) gives the stable order.
     free = 2 * (dggs.MAX_LEVEL - level)
-    low = np.uint64((1 << free) - 1) if free < 64 else np.uint64(2**64 - 1)
+    low = np.uint64((1 << free) - 1)
     if len(good) <= (1 << free) and not (keys & low).any():
         packed = np.sort(keys | np.arange(len(good), dtype=np.uint64))
         ranked = good[(packed & low).astype(np.intp)]

@@ -16,10 +16,11 @@ from typing import Any
 
 from dggs.errors import DggsValueError, StorageError
 
+from .crs import make_transformer
 from .readers import RawBatch
 from .readers_geojson import geojson_batches
 
-__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "first_features", "to_wgs84", "vector_batches"]
+__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "first_features", "vector_batches"]
 
 #: File name endings read through pyogrio.
 VECTOR_SUFFIXES = (".gpkg", ".shp", ".fgb", ".parquet", ".geoparquet")
@@ -137,28 +138,6 @@ def _ogr_batches(
         raise DggsValueError(f"{path}: cannot read {_layer(layer)}: {exc}") from exc
 
 
-def to_wgs84(crs: Any) -> Any:
-    """A pyproj transformer from ``crs`` to WGS84 lng/lat, or None if there is nothing to do.
-
-    Raises
-    ------
-    DggsValueError
-        If pyproj does not know ``crs`` (as :func:`dggs.storage.crs.make_transformer`).
-    """
-    if crs is None:
-        return None
-    from pyproj import CRS, Transformer
-    from pyproj.exceptions import CRSError
-
-    try:
-        source = CRS.from_user_input(crs)
-    except CRSError as exc:
-        raise DggsValueError(f"unknown CRS {crs!r}: {exc}") from exc
-    if source == CRS.from_epsg(4326) or source == CRS.from_user_input("OGC:CRS84"):
-        return None
-    return Transformer.from_crs(source, CRS.from_epsg(4326), always_xy=True)
-
-
 def _features(geoms: Any, values: Sequence[str], props: dict) -> list[dict[str, Any]]:
     """GeoJSON-like features of shapely geometries (None: no geometry) and their properties."""
     import shapely.geometry
@@ -212,7 +191,7 @@ def vector_batches(
     """
     import shapely
 
-    transformer = to_wgs84(crs)
+    transformer = make_transformer(crs)
     done = skip
     for wkb, props in _source(path, layer, values, batch_size, skip):
         n = len(wkb) if wkb is not None else len(next(iter(props.values()), []))
