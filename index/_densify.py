@@ -1,4 +1,4 @@
-"""Points per edge, cell by cell: as few as keep a polygon's area and edges true to the cell.
+"""Points per edge, cell by cell: as few as keep a polygon's area true to the cell's.
 
 A cell's edges are straight in the face plane of Snyder's projection and
 curved on the ellipsoid; a polygon through ``d`` points per edge joins them
@@ -6,18 +6,15 @@ by geodesics (what :class:`pyproj.Geod` measures).  Between two points the
 true edge departs from the geodesic by a bulge that shrinks as ``1 / (d + 1)**2``
 (the edge is smooth: halving a segment quarters its sagitta).  So one
 measurement per edge, the distance ``b`` from the true midpoint to the
-geodesic midpoint of its ends (``d = 0``), gives what any ``d`` needs:
-
-* edge: the largest bulge, ``b / (d + 1)**2``, within ``edge_tolerance`` metres;
-* area: each edge's lune between curve and geodesic, at most ``2/3 b L``
-  (``L`` its length; the parabola's segment), summed over the three edges
-  without letting opposite bulges cancel, within ``area_tolerance`` of the
-  cell's exact area.
+geodesic midpoint of its ends (``d = 0``), gives what any ``d`` needs: each
+edge's lune between curve and geodesic is at most ``2/3 b L`` (``L`` its
+length; the parabola's segment), summed over the three edges without letting
+opposite bulges cancel, within ``area_tolerance`` of the cell's exact area.
 
 The count is rounded up to a power of two (at most 256), so a million cells
 make a handful of groups, each built in one vectorized call.  Checked
 against pyproj.Geod on random cells and on cells at icosahedron vertices,
-where the projection bends most (tests/index/test_adaptive_densify.py).
+where the projection bends most (tests/index/test_area.py).
 """
 
 from __future__ import annotations
@@ -49,11 +46,10 @@ def _geod() -> object:
     return Geod(ellps="WGS84")
 
 
-def needed_densify(ids: np.ndarray, area_tolerance: float | None = AREA_TOLERANCE,
-                   edge_tolerance: float | None = None) -> np.ndarray:
+def needed_densify(ids: np.ndarray, area_tolerance: float = AREA_TOLERANCE) -> np.ndarray:
     """Points per edge each cell of ``ids`` (valid uint64 ids) needs, from :data:`STEPS`.
 
-    ``area_tolerance`` is relative to the cell's area; ``edge_tolerance`` is in metres.
+    ``area_tolerance`` is relative to the cell's area.
     """
     n = ids.shape[0]
     if n == 0:
@@ -71,16 +67,12 @@ def needed_densify(ids: np.ndarray, area_tolerance: float | None = AREA_TOLERANC
     east = ((true_lng - mid_lng + 180.0) % 360.0 - 180.0) * _M_PER_DEG_LAT * np.cos(np.radians(true_lat))
     bulge = np.hypot(north, east) * _SAFETY
     bulge, length = bulge.reshape(n, 3), length.reshape(n, 3)
-    need = np.zeros(n)  # (d + 1)**2 needed
-    if area_tolerance is not None:
-        from .measure import cell_area
+    from .measure import cell_area
 
-        levels = kh.levels(ids)
-        area = np.empty(n)
-        for level in np.unique(levels).tolist():  # every cell of a level has the same area
-            area[levels == level] = cell_area(int(level))
-        need = np.maximum(need, (2.0 / 3.0) * (bulge * length).sum(axis=1) / (area * area_tolerance))
-    if edge_tolerance is not None:
-        need = np.maximum(need, bulge.max(axis=1) / edge_tolerance)
+    levels = kh.levels(ids)
+    area = np.empty(n)
+    for level in np.unique(levels).tolist():  # every cell of a level has the same area
+        area[levels == level] = cell_area(int(level))
+    need = (2.0 / 3.0) * (bulge * length).sum(axis=1) / (area * area_tolerance)  # (d + 1)**2 needed
     exact = np.ceil(np.sqrt(need)) - 1.0
     return STEPS[np.minimum(np.searchsorted(STEPS, exact), STEPS.size - 1)]
