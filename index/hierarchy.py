@@ -14,11 +14,12 @@ import numpy as np
 from dggs.errors import LevelMismatchError
 
 from ._checks import MAX_CELLS, check_level, check_max_cells, check_size
-from ._convert import CELL, FLAT, VALUE, Op, apply, id_name, is_valid_any
+from ._convert import CELL, FLAT, VALUE, Entry, Op, apply, id_name, is_valid_any
 from ._convert.strings import face_of, level_of
 from ._kernel import compact as kc
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
+from ._kernel import scalar as ks
 from ._kernel.bits import FACE_SHIFT, MARKER, MAX_LEVEL
 from .ids import FACE_LETTERS
 
@@ -106,7 +107,8 @@ def _uncompact(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
 
 _LEVEL = Op(many=_levels, out=VALUE, one=level_of)
 _FACE = Op(many=_faces, out=VALUE, one=face_of)
-_PARENT = Op(many=_parents, out=CELL, one=kh.parent_of)
+_PARENT = Op(many=_parents, out=CELL, one=kh.parent_of, one_str=Entry(ks.parent_str, "unicode_type(unicode_type, int64)"),
+              one_int=Entry(kh.parent_of, "int64(int64, int64)"))
 _CHILDREN = Op(many=_children, out=FLAT)
 _CENTER_CHILD = Op(many=_center_children, out=CELL)
 _COMPACT = Op(many=kc.compact, out=FLAT)

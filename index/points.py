@@ -15,9 +15,10 @@ from shapely.geometry import MultiPolygon, Polygon, mapping
 
 from ._checks import check_densify, check_level, property_rows
 from ._convert import CELL as _CELL
-from ._convert import VALUE, Op, apply, apply_points, cells_in, check_points, format_int
+from ._convert import VALUE, Entry, Op, apply, apply_points, cells_in, check_points, format_int
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
+from ._kernel import scalar as ks
 from ._shapes import boundaries, geometries
 
 __all__ = [
@@ -42,9 +43,12 @@ def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lat, lng
 
 
-_LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point, form="str")
-_LOCATE_INT = Op(many=_locate, out=_CELL, one=kp.one_point, form="int")
-_CENTRE = Op(many=_centres, out=VALUE, one=kp.centre_of)
+_LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point, form="str",
+             one_str=Entry(ks.point_str, "unicode_type(float64, float64, int64)"))
+_LOCATE_INT = Op(many=_locate, out=_CELL, one=kp.one_point, form="int",
+                 one_int=Entry(kp.one_point, "uint64(float64, float64, int64)"))
+_CENTRE = Op(many=_centres, out=VALUE, one=kp.centre_of, one_str=Entry(ks.centre_str, "UniTuple(float64, 2)(unicode_type)"),
+             one_int=Entry(kp.centre_of, "UniTuple(float64, 2)(int64)"))
 _BOUNDARY = Op(many=boundaries, out=VALUE)
 _POLYGON = Op(many=geometries, out=VALUE)
 

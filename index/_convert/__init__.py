@@ -13,7 +13,7 @@ The modules: :mod:`.kind` (what came in, and the error naming a bad id),
 
 from __future__ import annotations
 
-from .apply import CELL, FLAT, ROWS, VALUE, VALUES, Op, apply, apply_pair, apply_points, lone_id, pair, pair_kind
+from .apply import CELL, FLAT, ROWS, VALUE, VALUES, Entry, Op, apply, apply_pair, apply_points, lone_id, pair, pair_kind
 from .cells_in import cells_in, is_valid_any
 from .cells_out import cells_out, cells_out_flat, ids_array
 from .coords import as_float_scalar, check_points, coords_in, levels_in, raise_bad_point
@@ -22,7 +22,7 @@ from .strings import format_int, parse_str
 from .values import values_out
 
 __all__ = [
-    "CELL", "FLAT", "ROWS", "VALUE", "VALUES", "Kind", "Op", "apply", "apply_pair", "apply_points", "as_float_scalar", "as_form",
+    "CELL", "FLAT", "ROWS", "VALUE", "VALUES", "Entry", "Kind", "Op", "apply", "apply_pair", "apply_points", "as_float_scalar", "as_form",
     "cells_in", "cells_out", "cells_out_flat", "ids_array", "check_points", "coords_in", "format_int", "is_valid_any", "levels_in", "lone_id",
     "id_name", "pair", "pair_kind", "parse_str", "raise_bad_point", "values_out",
 ]  # fmt: skip

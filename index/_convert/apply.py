@@ -6,7 +6,10 @@ A verb checks its arguments, then hands its ids to :func:`apply` with an
 result goes back into the container that came in.  An op may also have
 ``one``, a compiled single-id entry of the same kernel: a lone plain ``str``
 or ``int`` id then skips the containers altogether (a few hundred
-nanoseconds instead of a few microseconds).  ``one`` answers a miss (the
+nanoseconds instead of a few microseconds).  ``one_str`` and ``one_int``,
+compiled :class:`Entry` points that take the lone ``str`` or ``int`` itself
+and give the finished answer, skip the Python string codec and numba's type
+dispatch as well.  ``one`` answers a miss (the
 null id 0, NaN, an empty array) for anything it cannot answer, and the id
 then takes the general path, which explains it.  Since every check happens
 in the verb before :func:`apply` and both paths run the same kernel, a
@@ -39,7 +42,9 @@ from .kind import Kind, as_form
 from .strings import valid_id
 from .values import values_out
 
-__all__ = ["CELL", "FLAT", "ROWS", "VALUE", "VALUES", "Op", "apply", "apply_pair", "apply_points", "lone_id", "pair", "pair_kind"]
+__all__ = [
+    "CELL", "FLAT", "ROWS", "VALUE", "VALUES", "Entry", "Op", "apply", "apply_pair", "apply_points", "lone_id", "pair", "pair_kind",
+]
 
 #: One id per input id (a parent): the input's container, of ids.
 CELL = "cell"
@@ -57,6 +62,40 @@ _INT64_END = 1 << 63
 _PLAIN_NUMBERS = (float, int)
 
 
+class Entry:
+    """A compiled kernel's entry point for one signature, looked up on the first call.
+
+    numba's dispatcher spends 80-150 ns per call choosing the signature (about
+    1 µs for a ``str`` argument); ``entry.call`` is the compiled function of
+    ``signature`` itself.  The first ``entry.call(...)`` compiles ``kernel`` for
+    it (or loads it from the cache) and rebinds ``call``, so nothing is compiled
+    at import.
+
+    Parameters
+    ----------
+    kernel : numba dispatcher
+        The compiled function.
+    signature : str
+        Its numba signature, e.g. ``"unicode_type(unicode_type, int64)"``.
+
+    Examples
+    --------
+    >>> from dggs.index._kernel import scalar
+    >>> Entry(scalar.parent_str, "unicode_type(unicode_type, int64)").call("C401", -1)
+    'C40'
+    """
+
+    __slots__ = ("_kernel", "_signature", "call")
+
+    def __init__(self, kernel: Any, signature: str) -> None:
+        self._kernel, self._signature = kernel, signature
+        self.call: Callable[..., Any] = self._first
+
+    def _first(self, *args: Any) -> Any:
+        self.call = self._kernel.compile(self._signature)
+        return self.call(*args)
+
+
 @dataclass(frozen=True)
 class Op:
     """A verb's kernel: ``many`` over an array of ids, optionally ``one`` for a lone id, and how it goes out.
@@ -64,7 +103,10 @@ class Op:
     ``form`` gives ids out in that form (``"str"`` or ``"int"``) instead of the
     input's, as the id converters do; ``nulls`` accepts the null id 0 in a numpy
     array of integer ids (the padding of disk rows).  A ``one`` of a
-    :data:`VALUE` op answers None (or NaN) for a miss.
+    :data:`VALUE` op answers None (or NaN) for a miss.  ``one_str`` / ``one_int``
+    (ops whose ``out`` is :data:`CELL` or :data:`VALUE`) take a lone ``str`` /
+    positive int64 id, or for :func:`apply_points` a point of floats giving that
+    form of id, and answer the final value, or a miss ("", 0, NaNs).
     """
 
     many: Callable[..., Any]
@@ -72,6 +114,8 @@ class Op:
     one: Callable[..., Any] | None = None
     form: str | None = None
     nulls: bool = False
+    one_str: Entry | None = None
+    one_int: Entry | None = None
 
 
 def lone_id(obj: Any) -> int:
@@ -138,9 +182,14 @@ def apply(op: Op, cells: Any, *args: Any) -> Any:
     InvalidCellError
         An id is malformed (the message names it and its index).
     """
+    t = type(cells)
+    e = op.one_str if t is str else op.one_int if t is int and 0 < cells < _INT64_END else None
+    if e is not None:  # a compiled entry: no codec, no dispatch; a miss is "", 0 or NaNs
+        r0 = e.call(cells, *args)
+        if (r0[0] == r0[0]) if type(r0) is tuple else r0:
+            return r0
     one = op.one
     if one is not None:  # the single-id fast path, written out (each extra Python call costs 60-100 ns here)
-        t = type(cells)
         v = strings.parse_str(cells) if t is str else cells if t is int and 0 < cells < _INT64_END else 0
         if v:
             r: Any = v if one is valid_id and t is str else one(v, *args)  # a parsed string is valid already
@@ -224,7 +273,8 @@ def apply_pair(op: Op, a: Any, b: Any, *args: Any) -> Any:
 def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
     """Run ``op`` over points, giving back ids (or values) in the container the coordinates came in.
 
-    ``op.one`` (if any) takes one (lat, lng) pair of Python floats and gives an
+    ``op.one_str`` or ``op.one_int`` (if any) takes a point of two Python floats and gives the
+    id in that form; ``op.one`` (if any) takes one (lat, lng) pair of Python floats and gives an
     id (``op.out`` is :data:`CELL`); ``op.many`` takes two flat float64 arrays.
 
     Raises
@@ -233,10 +283,15 @@ def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
         Coordinates that are not numbers, or shapes that do not broadcast
         (``op.many`` names points off the globe).
     """
+    e = op.one_str or op.one_int
+    if e is not None and type(lat) is float and type(lng) is float:  # a compiled entry, the answer in its form
+        r = e.call(lat, lng, *args)
+        if r:
+            return r
     one = op.one
     if one is not None and type(lat) in _PLAIN_NUMBERS and type(lng) in _PLAIN_NUMBERS:
-        try:
-            r = one(float(lat), float(lng), *args)  # an id (0: a point the general path explains)
+        try:  # an id (0 or "": a point the general path explains)
+            r = one(float(lat), float(lng), *args)
         except OverflowError:  # an int too large for a float: the general path names it
             r = 0
         if r:
