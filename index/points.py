@@ -47,7 +47,7 @@ _LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point, form="str",
              one_str=Entry(ks.point_str, "unicode_type(float64, float64, int64)"))
 _LOCATE_INT = Op(many=_locate, out=_CELL, one=kp.one_point, form="int",
                  one_int=Entry(kp.one_point, "uint64(float64, float64, int64)"))
-_CENTRE = Op(many=_centres, out=VALUE, one=kp.centre_of, one_str=Entry(ks.centre_str, "UniTuple(float64, 2)(unicode_type)"),
+_CENTRE = Op(many=_centres, out=VALUE, one_str=Entry(ks.centre_str, "UniTuple(float64, 2)(unicode_type)"),
              one_int=Entry(kp.centre_of, "UniTuple(float64, 2)(int64)"))
 _BOUNDARY = Op(many=boundaries, out=VALUE)
 _POLYGON = Op(many=geometries, out=VALUE)

@@ -290,8 +290,8 @@ def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
             return r
     one = op.one
     if one is not None and type(lat) in _PLAIN_NUMBERS and type(lng) in _PLAIN_NUMBERS:
-        try:  # an id (0 or "": a point the general path explains)
-            r = one(float(lat), float(lng), *args)
+        try:
+            r = one(float(lat), float(lng), *args)  # an id (0: a point the general path explains)
         except OverflowError:  # an int too large for a float: the general path names it
             r = 0
         if r:

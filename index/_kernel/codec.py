@@ -14,7 +14,9 @@ in :mod:`dggs.index._convert.strings`.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.cpython.unicode import _get_code_point
+from numba.extending import overload
 
 from .bits import FACE_SHIFT, L1_SHIFT, MAX_LEVEL
 
@@ -38,26 +40,38 @@ _U_DIGIT_LOW = np.uint64(_DIGIT_LOW)
 # --------------------------------------------------------------------------
 
 
+def _code_at(buf, j):  # type: ignore[no-untyped-def]
+    """Character code ``j`` of ``buf``: an array of codes (any integer dtype) or a str (compiled only)."""
+    raise NotImplementedError("compiled code only")
+
+
+@overload(_code_at, inline="always")
+def _code_at_compiled(buf, j):  # type: ignore[no-untyped-def]
+    if isinstance(buf, types.UnicodeType):  # read in place: no one-character strings
+        return lambda buf, j: np.int64(_get_code_point(buf, j))
+    return lambda buf, j: np.int64(buf[j])
+
+
 @njit(cache=True, nogil=True, inline="always")
 def _parse_span(buf, start, end) -> np.uint64:
-    """Id of the characters ``buf[start:end]`` (any integer dtype); 0 if invalid."""
+    """Id of the characters ``buf[start:end]`` (codes of any integer dtype, or a str); 0 if invalid."""
     n = end - start
     if n < 1 or n > MAX_CHARS:
         return _U0
-    face = np.int64(buf[start]) - _ORD_A
+    face = _code_at(buf, start) - _ORD_A
     if face < 0 or face >= 20:
         return _U0
     cell = np.uint64(1 << 62) | (np.uint64(face) << np.uint64(FACE_SHIFT))
     if n == 1:
         return cell
-    d = np.int64(buf[start + 1]) - _ORD_0
+    d = _code_at(buf, start + 1) - _ORD_0
     if d < 0 or d > 5:
         return _U0
     cell |= np.uint64(d + 1) << np.uint64(L1_SHIFT)
     # levels 2..: accumulate base-4 codes (digit + 1), then shift them into place
     acc = _U0
     for j in range(start + 2, end):
-        d = np.int64(buf[j]) - _ORD_0
+        d = _code_at(buf, j) - _ORD_0
         if d < 0 or d > 2:
             return _U0
         acc = (acc << np.uint64(2)) | np.uint64(d + 1)

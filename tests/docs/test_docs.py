@@ -28,6 +28,8 @@ MODULES = [
     "dggs.index.polyfill",
     "dggs.index.vertex",
     "dggs.index.lines",
+    "dggs.index._convert.apply",
+    "dggs.index._kernel.scalar",
     "dggs.storage.store_export",
     "dggs._formats",
 ]
