@@ -1,4 +1,4 @@
-"""Storage commands of the ``dggs`` CLI: bin, query, export, plot, info, demo.
+"""Storage commands of the ``dggs`` CLI: bin, query, export, plot, info, keep-rollups, demo.
 
 A thin click layer over :class:`dggs.storage.CellStore`; library errors
 (:class:`dggs.DggsError`) become exit code 1 in the root group.
@@ -14,7 +14,7 @@ from typing import Any
 
 import click
 
-__all__ = ["register", "bin_", "query", "export", "plot", "info", "demo"]
+__all__ = ["register", "bin_", "query", "export", "plot", "info", "keep_rollups", "demo"]
 
 
 def _open(db: str, readonly: bool = True) -> Any:  # a CellStore, imported lazily
@@ -308,6 +308,8 @@ def info(db: str, as_json: bool) -> None:
     click.echo(f"crs         {data['crs']}   schema v{data['schema_version']}, dggs {data['dggs_version']}")
     click.echo(f"created     {data['created']}   updated {data['updated']}")
     click.echo(f"sources     {len(data['sources'])}")
+    if data["rollup_levels"]:
+        click.echo(f"roll-ups    kept at levels {', '.join(map(str, data['rollup_levels']))}")
     for s in data["sources"]:
         state = "complete" if s["complete"] else "INCOMPLETE (run the same ingest again to resume)"
         click.echo(
@@ -319,6 +321,27 @@ def info(db: str, as_json: bool) -> None:
         for r in rejects:
             where = f"line {r['line']}" if r["line"] else f"row {r['row']}"
             click.echo(f"  {r['source']} {where}: {r['column'] or ''} {r['value']!r} {r['reason']}")
+
+
+@click.command("keep-rollups")
+@click.argument("db", type=click.Path(exists=True, dir_okay=False))
+@click.argument("levels", nargs=-1, type=int)
+@click.option("--drop", is_flag=True, help="Stop keeping roll-ups.")
+def keep_rollups(db: str, levels: tuple[int, ...], drop: bool) -> None:
+    """Keep the roll-ups of LEVELS in DB, current through every ingest (none given: list them).
+
+    Queries, exports and the server then read a kept level's cells instead of
+    every row; built from the stored rows now.
+
+    \b
+    Example:
+      dggs keep-rollups points.db 10 8
+    """
+    if drop and levels:
+        raise click.UsageError("give levels or --drop, not both")
+    with _open(db, readonly=not (levels or drop)) as store:
+        kept = store.keep_rollups([] if drop else levels) if (levels or drop) else store.rollup_levels
+    click.echo(f"roll-ups kept at levels {', '.join(map(str, kept))}" if kept else "no roll-ups kept")
 
 
 @click.command()
@@ -339,5 +362,5 @@ def demo(out_dir: str, area: float, fresh: bool) -> None:
 
 def register(main: click.Group) -> None:
     """Add the storage commands to the root ``dggs`` group."""
-    for command in (bin_, query, export, plot, info, demo):
+    for command in (bin_, query, export, plot, info, keep_rollups, demo):
         main.add_command(command)

@@ -22,6 +22,7 @@ from dggs.errors import LevelError, LevelMismatchError, StorageError
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
+from .rollup_keep import verify
 from .rollup_memo import Memo
 from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
 
@@ -336,6 +337,11 @@ class Connection:
                 "or ingest the inputs again into a new store"
             )
         self._check_levels()
+        try:
+            with self.snapshot():
+                verify(self.conn, self.path)
+        except sqlite3.Error as exc:
+            raise translate(exc, self.path, self.timeout) from exc
 
     def _check_levels(self) -> None:
         """Raise StorageError unless every stored cell is at ``meta.level`` (ids have level + 1 characters)."""

@@ -42,6 +42,8 @@ class Prepared:
     width: int
     rejects: list[dict[str, Any]]
     with_parts: bool = False
+    #: the batch's roll-up partials (:class:`dggs.storage.rollup_keep.BatchPartials`), where roll-ups are kept
+    partials: Any = None
 
     def __len__(self) -> int:
         """The number of rows."""

@@ -33,6 +33,7 @@ from .errors import BadRowError, RejectedRowsWarning
 from .producer import Producer
 from .progress import RowsBar
 from .readers import RawBatch
+from .rollup_keep import add_partials, check_levels, kept_levels
 from .schema import add_columns, column_types, now, quote, sql_type
 from .sources import open_source
 
@@ -196,6 +197,7 @@ def run_ingest(
     """
     declared = {name_: sql_type(t) for name_, t in declared.items()}
     store.check_level_for_ingest(level)
+    rollups = check_levels(kept_levels(store.conn), level)  # kept roll-ups no finer than the ingest's level
     _check_case(store, name, [*declared, *params.get("values", ())])
     transformer = make_transformer(options.crs)
     crs = options.crs
@@ -223,7 +225,7 @@ def run_ingest(
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = Producer(
         batches(source["rows_done"], known), level, known, declared, transformer, threaded, name,
-        options.batch_size,
+        options.batch_size, rollups,
     )
     try:
         for batch, prepared, types, new in work:
@@ -317,6 +319,7 @@ def _write_batch(
         _claim_columns(conn, {**types, **new}, store.path)
         store.set_level(level)
         insert_many(conn, head, one, prepared.values, prepared.width, max_variables(conn))
+        add_partials(conn, prepared.partials, column_types(conn), store.path)
         if prepared.rejects:
             conn.executemany(
                 'INSERT INTO rejects (source_id, row, line, "column", value, reason, record) '

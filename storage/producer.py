@@ -9,6 +9,7 @@ from typing import Any
 
 from .convert import Prepared, prepare, value_types
 from .readers import RawBatch
+from .rollup_keep import batch_partials
 
 __all__ = ["Producer", "READ_AHEAD"]
 
@@ -39,11 +40,13 @@ class Producer:
         threaded: bool = True,
         name: str = "input",
         batch_size: int = 10_000,
+        rollups: tuple[int, ...] = (),
     ) -> None:
         self._name = name
         self._batches = batches
         self._threaded = threaded
         self._args = (level, transformer)
+        self._rollups = rollups  # kept roll-up levels: each batch's partials are computed here too
         self._types = existing  # the same dict the reader sees
         self._declared = declared
         self._queue: queue.Queue = queue.Queue(maxsize=max(2, min(64, READ_AHEAD // max(batch_size, 1))))
@@ -67,7 +70,9 @@ class Producer:
             new = value_types(batch, self._types, self._declared)
             self._types.update(new)
             types = {name: self._types[name] for name in batch.values}
-            yield batch, prepare(batch, level, types, transformer), types, new
+            prepared = prepare(batch, level, types, transformer)
+            prepared.partials = batch_partials(prepared.values, prepared.width, types, self._rollups)
+            yield batch, prepared, types, new
 
     def _run(self) -> None:
         try:

@@ -18,6 +18,7 @@ from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMisma
 from .connection import Connection
 from .rollup import add_partials, remembered, streamed
 from .rollup_memo import state
+from .rollup_serve import from_kept
 from .schema import quote
 
 __all__ = ["STATS", "normalise_cells", "count", "get", "descendants", "aggregate", "rows_under"]
@@ -347,6 +348,9 @@ def aggregate(
     exprs = ", ".join(f"{STATS[s].format(c=quote(column) if column else '')} AS {quote(s)}" for s in stats)
     order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
     out = []
+    under = disjoint(found) if cell is not None else None  # partials kept in the file (rollup_keep):
+    if (kept := from_kept(store, level, column, stats, under, order_by, descending, limit)) is not None:
+        return kept
     whole = cell is None and order_by is None  # a whole-store roll-up in cell order: remembered (rollup_memo)
     before = state(store.conn) if whole else None
     if before is not None and (answer := remembered(store, before, level, column, stats, limit)) is not None:

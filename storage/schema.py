@@ -54,8 +54,9 @@ __all__ = [
     "now",
 ]
 
-#: Version of the on-disk layout; bumped on incompatible changes.
-SCHEMA_VERSION = 1
+#: The newest layout this dggs reads; 2 keeps roll-ups (:mod:`dggs.storage.rollup_keep`), which older ones refuse.
+SCHEMA_VERSION = 2
+BASE_SCHEMA_VERSION = 1  # a new store's: readable by any dggs
 
 #: Coordinate reference system of the stored ``lat``/``lng`` columns.
 CRS = "EPSG:4326"
@@ -241,7 +242,7 @@ def create_schema(conn: sqlite3.Connection, dggs_version: str) -> None:
         conn.executemany(
             "INSERT INTO meta (key, value) VALUES (?, ?)",
             [
-                ("schema_version", str(SCHEMA_VERSION)),
+                ("schema_version", str(BASE_SCHEMA_VERSION)),
                 ("dggs_version", dggs_version),
                 ("crs", CRS),
                 ("created", stamp),

@@ -23,6 +23,7 @@ from typing import Any
 from dggs.errors import StorageError
 
 from .connection import Connection
+from .rollup_keep import rebuild
 from .schema import CRS, now
 
 __all__ = ["file_info", "open_source", "delete_source", "list_sources", "list_rejects"]
@@ -196,6 +197,8 @@ def delete_source(store: Connection, source: int | str) -> int:
             deleted += conn.execute(f"DELETE FROM {table} WHERE source_id = ?", (row[0],)).rowcount
         conn.execute("DELETE FROM rejects WHERE source_id = ?", (row[0],))
         conn.execute("DELETE FROM sources WHERE id = ?", (row[0],))
+        if deleted:
+            rebuild(conn)  # kept roll-ups: min and max cannot be taken back, so computed afresh
         store.touch()
     return deleted
 

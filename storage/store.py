@@ -35,11 +35,12 @@ from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
 from .store_export import ExportMethods
 from .store_ingest import IngestMethods
+from .store_rollups import RollupMethods
 
 __all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
 
-class CellStore(IngestMethods, ExportMethods):
+class CellStore(IngestMethods, ExportMethods, RollupMethods):
     """Points binned into cells at one level, stored in SQLite.
 
     Parameters
@@ -374,6 +375,7 @@ class CellStore(IngestMethods, ExportMethods):
             "count": self.count(),
             "pending": self._store.pending_count(),
             "columns": self.columns,
+            "rollup_levels": list(self.rollup_levels),
             "sources": self.sources(),
             "rejects": int(self.conn.execute("SELECT count(*) FROM rejects").fetchone()[0]),
             "size_bytes": size,

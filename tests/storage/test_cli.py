@@ -13,7 +13,7 @@ from dggs.storage import CellStore
 
 from .helpers import write_csv
 
-COMMANDS = ["bin", "query", "export", "plot", "info", "demo"]
+COMMANDS = ["bin", "query", "export", "plot", "info", "keep-rollups", "demo"]
 
 
 @pytest.fixture
@@ -192,3 +192,29 @@ def test_export_formats(runner, cities_csv, tmp_path):
     assert res.exit_code == 2
     cells = sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith(("c.db", "cities")))
     assert cells == ["cells.fgb", "cells.gpkg", "cells.out", "cells.parquet"]  # no temporary file is left
+
+
+def test_keep_rollups_keeps_lists_and_drops(runner, cities_csv, tmp_path):
+    db = tmp_path / "k.db"
+    assert _bin(runner, cities_csv, db).exit_code == 0
+    assert runner.invoke(main, ["keep-rollups", str(db)]).output.strip() == "no roll-ups kept"
+    kept = runner.invoke(main, ["keep-rollups", str(db), "3", "5"])
+    assert kept.exit_code == 0 and kept.output.strip() == "roll-ups kept at levels 5, 3"
+    assert "kept at levels 5, 3" in runner.invoke(main, ["info", str(db)]).output
+    with CellStore(db, readonly=True) as store:
+        assert store.rollup_levels == (5, 3)
+        assert store.aggregate(3, "population", ("count", "sum")) == [
+            {"cell": r["cell"], "count": r["count"], "sum": r["sum"]}
+            for r in store.conn.execute(
+                "SELECT substr(cell, 1, 4) AS cell, count(*) AS count, sum(population) AS sum FROM points "
+                "GROUP BY 1 ORDER BY 1"
+            ).fetchall()
+            for r in [dict(zip(("cell", "count", "sum"), r, strict=True))]
+        ]
+    too_fine = runner.invoke(main, ["keep-rollups", str(db), "9"])
+    assert too_fine.exit_code == 1 and "finer than the stored level 7" in too_fine.output
+    assert len(too_fine.output.strip().splitlines()) == 1
+    both = runner.invoke(main, ["keep-rollups", str(db), "3", "--drop"])
+    assert both.exit_code == 2
+    dropped = runner.invoke(main, ["keep-rollups", str(db), "--drop"])
+    assert dropped.exit_code == 0 and dropped.output.strip() == "no roll-ups kept"

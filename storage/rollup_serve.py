@@ -1,0 +1,102 @@
+"""Roll-ups answered from the kept partials (:mod:`dggs.storage.rollup_keep`) instead of the rows.
+
+A roll-up to a kept level reads that level's partials in key order; a
+coarser one regroups the nearest finer kept level's in SQL (``GROUP BY`` the
+id prefix over a few hundred thousand partials instead of every row).  The
+stats are SQL's own: ``count`` the rows, ``sum``/``min``/``max`` of the
+partials, ``mean`` as SQLite's ``avg`` computes it (the sum as a double over
+the non-NULL count).  Only exact answers are given (see the rules in
+:mod:`dggs.storage.rollup_keep`); anything else returns None and the caller
+reads the rows.
+"""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+from typing import Any
+
+from .connection import Connection
+from .rollup_keep import kept_levels, numeric, part_names
+from .schema import quote
+
+__all__ = ["from_kept"]
+
+#: Doubles hold integers exactly below this: SQLite's ``avg`` of integers is exact while every running sum is.
+_EXACT = 2**53
+
+
+def from_kept(
+    store: Connection,
+    level: int,
+    column: str | None,
+    stats: tuple[str, ...],
+    cells: list[str] | None,
+    order_by: str | None,
+    descending: bool,
+    limit: int | None,
+) -> list[dict[str, Any]] | None:
+    """The roll-up to ``level`` from the kept partials, or None where they cannot give it exactly.
+
+    ``cells`` (disjoint, none finer than ``level``), ``order_by``, ``descending`` and
+    ``limit`` as :func:`dggs.storage.queries.aggregate` takes them.
+    """
+    conn = store.conn
+    finer = [k for k in kept_levels(conn) if k >= level]
+    if not finer:
+        return None
+    kept = min(finer)
+    valued = column is not None and set(stats) != {"count"}
+    if valued:
+        kind = numeric(store.columns).get(str(column))
+        if kind is None or (kind == "REAL" and {"sum", "mean"} & set(stats)):
+            return None  # text min/max, and REAL sums: from the rows
+    params: dict[str, Any] = {"kept": kept, "n": level + 1}
+    where = "level = :kept"
+    if cells is not None:
+        where += " AND EXISTS (SELECT 1 FROM json_each(:cells) q WHERE cell >= q.value AND cell < q.value || '~')"
+        params["cells"] = json.dumps(cells)
+    grouped = level < kept
+    exprs = {"count": "sum(rows)" if grouped else "rows"}
+    if valued:
+        n, total, low, high = (quote(p) for p in part_names(str(column)))
+        if grouped:
+            n, total, low, high = f"sum({n})", f"sum({total})", f"min({low})", f"max({high})"
+        exprs.update({"sum": total, "mean": f"CAST({total} AS REAL) / {n}", "min": low, "max": high})
+    picked = ", ".join(f"{exprs[s]} AS {quote(s)}" for s in stats)
+    order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
+    sql = (f"SELECT {'substr(cell, 1, :n)' if grouped else 'cell'}, {picked} FROM rollups WHERE {where} "
+           f"{'GROUP BY 1 ' if grouped else ''}ORDER BY {order}")
+    if limit is not None:
+        sql += f" LIMIT {int(limit)}"
+    with store.snapshot():
+        if valued and {"sum", "mean"} & set(stats) and not _exact(conn, str(column), where, params):
+            return None
+        try:
+            rows = conn.execute(sql, params).fetchall()
+        except sqlite3.OperationalError as exc:
+            if "overflow" in str(exc):
+                return None  # a regrouped integer sum past int64: SQL on the rows says so
+            raise
+    keys = ("cell", *stats)
+    return [dict(zip(keys, row, strict=True)) for row in rows]
+
+
+def _exact(conn: sqlite3.Connection, column: str, where: str, params: dict[str, Any]) -> bool:
+    """Whether every sum and mean of ``column`` the partials give is SQL's exactly.
+
+    True when every partial sum, min and max is an integer and (non-NULL values) x
+    (largest |value|) < 2**53, over every partial in the roll-up: then no running sum
+    of any cell, kept or regrouped, reaches 2**53, where SQLite's ``avg`` sums in doubles
+    (the rule of :mod:`dggs.storage.rollup_memo`).  Otherwise the rows answer.
+    """
+    n, total, low, high = (quote(p) for p in part_names(column))
+    valued, largest, inexact = conn.execute(
+        f"SELECT sum({n}), max(max({high}), -min({low})), "
+        f"sum(typeof({total}) = 'real' OR typeof({low}) = 'real' OR typeof({high}) = 'real') "
+        f"FROM rollups WHERE {where}",
+        params,
+    ).fetchone()
+    if inexact:
+        return False
+    return not valued or valued * largest < _EXACT  # a float largest (-min past int64) fails too
