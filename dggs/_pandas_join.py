@@ -24,8 +24,10 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from dggs._pandas_frames import one_column
 from dggs.errors import DggsValueError
-from dggs.index.ids import int_to_str
+from dggs.index.hierarchy import cell_to_parent
+from dggs.index.ids import check_level, int_to_str, str_to_int
 
 __all__ = ["sjoin_cells"]
 
@@ -68,6 +70,7 @@ def sjoin_cells(
     lng: str = "lng",
     column: str | None = None,
     rsuffix: str = "right",
+    cells: str | None = None,
 ) -> pd.DataFrame:
     """Join this frame's points to the (Multi)Polygon features of ``polygons`` through their cells.
 
@@ -94,6 +97,10 @@ def sjoin_cells(
         :func:`geopandas.sjoin` names it).  This frame's columns keep their
         names; a suffixed name that is already taken is refused, never
         overwritten.
+    cells : str, optional
+        A column of the points' cells (str or int ids, ``level`` or finer, as
+        binned before): joined through their parents at ``level`` (a bit mask
+        a cell) instead of binning ``lat``/``lng`` again (a projection a point).
 
     Returns
     -------
@@ -108,6 +115,8 @@ def sjoin_cells(
         a suffixed column name that is already taken (naming it).
     CrsError
         Points or polygons in a CRS without a transformation to EPSG:4326 (names the CRS).
+    ColumnError, InvalidCellError, LevelMismatchError
+        ``cells`` is not a column, holds a bad id, or one coarser than ``level`` (naming it).
 
     Examples
     --------
@@ -122,25 +131,35 @@ def sjoin_cells(
     {'a': 'west', 'b': 'west', 'c': 'east'}
     >>> points.dggs.sjoin_cells(zones.iloc[:1], 6, how="left")["zone"].isna().tolist()
     [False, False, True]
+    >>> binned = points.dggs.latlng_to_cell(12, as_int=True, column="cell")  # ids binned before
+    >>> binned.dggs.sjoin_cells(zones, 6, cells="cell")["zone"].to_dict()
+    {'a': 'west', 'b': 'west', 'c': 'east'}
     """
     if how not in _HOW:
         raise DggsValueError(f"how {how!r} is not one of {', '.join(_HOW)}")
     if not isinstance(polygons, pd.DataFrame):
         raise DggsValueError(f"polygons must be a GeoDataFrame of (Multi)Polygons, not a {type(polygons).__name__}")
     key = column if column is not None else f"cell_{level}"
-    left = self.latlng_to_cell(level, lat=lat, lng=lng, column=key, as_int=True)
-    cells = polygons.dggs.polyfill(level, mode=mode, column=key, as_int=True)
-    right = _suffixed(pd.DataFrame(cells.drop(columns=cells.geometry.name)), left.columns, key, rsuffix)
+    if cells is None:
+        left = self.latlng_to_cell(level, lat=lat, lng=lng, column=key, as_int=True)
+    else:
+        given = one_column(self._df, cells)
+        ids = given.to_numpy() if given.dtype.kind in "iu" else str_to_int(given.to_numpy())
+        left = self._df.assign(**{key: cell_to_parent(ids, check_level(level))})
+    filled = polygons.dggs.polyfill(level, mode=mode, column=key, as_int=True)
+    right = _suffixed(pd.DataFrame(filled.drop(columns=filled.geometry.name)), left.columns, key, rsuffix)
     row = "_row"  # the points' positions, under a name no polygon column has
     while row in right.columns:
         row += "_"
-    pairs = (
-        pd.DataFrame({key: left[key].to_numpy(), row: np.arange(len(left))})
-        .merge(right, on=key, how=how, sort=False)
-        .sort_values(row, kind="stable")
+    pairs = pd.DataFrame({key: left[key].to_numpy(), row: np.arange(len(left))}).merge(
+        right, on=key, how=how, sort=False
     )
-    out = left.iloc[pairs.pop(row).to_numpy()]  # the points' index, columns (and geometry) kept
-    extra = {c: pairs[c].to_numpy() for c in pairs.columns if c != key}
+    rows = pairs.pop(row).to_numpy()
+    if rows.shape[0] > 1 and not bool(np.all(rows[1:] >= rows[:-1])):  # pandas keeps the left order: checked
+        pairs = pairs.iloc[np.argsort(rows, kind="stable")]
+        rows = np.sort(rows, kind="stable")
+    out = left.iloc[rows]  # the points' index, columns (and geometry) kept
+    extra = {c: pairs[c].array for c in pairs.columns if c != key}  # as they are: no str column made objects
     return out.assign(**extra, **{key: _text(out[key].to_numpy(dtype=np.uint64))})
 
 

@@ -400,6 +400,26 @@ def test_sjoin_cells_equals_the_plain_functions(mode):
         assert want <= exact(shapely.covers)  # boundary included: the pole is the cap's edge lat = 90 in lng/lat
 
 
+@pytest.mark.parametrize("as_int", [False, True])
+def test_sjoin_cells_through_cells_binned_before_equals_binning_again(as_int):
+    pts, polys = _join_fixture()
+    binned = pts.dggs.latlng_to_cell(9, column="c9", as_int=as_int)
+    binned.loc["i5", "c9"] = dggs.latlng_to_cell(pts.loc["i5", "lat"], pts.loc["i5", "lng"], 5,
+                                                 as_int=as_int)  # a cell at the join's level itself
+    for how in ("inner", "left"):
+        want = pts.dggs.sjoin_cells(polys, 5, how=how)
+        got = binned.dggs.sjoin_cells(polys, 5, how=how, cells="c9").drop(columns="c9")
+        pd.testing.assert_frame_equal(got, want)
+    with pytest.raises(ColumnError, match="'nope'"):
+        pts.dggs.sjoin_cells(polys, 5, cells="nope")
+    with pytest.raises(dggs.LevelMismatchError, match="parent level 10 is finer than cell"):
+        binned.dggs.sjoin_cells(polys, 10, cells="c9").pipe(len)
+    bad = binned.assign(c9=binned["c9"].astype(object))
+    bad.loc["i3", "c9"] = "Z9" if not as_int else 7
+    with pytest.raises(dggs.InvalidCellError):
+        bad.dggs.sjoin_cells(polys, 5, cells="c9")
+
+
 def test_sjoin_cells_left_keeps_every_point_and_checks_arguments():
     pts, polys = _join_fixture()
     left = pts.dggs.sjoin_cells(polys.iloc[:1], 4, how="left", column="c")
