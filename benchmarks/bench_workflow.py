@@ -15,7 +15,10 @@ so >= 1x means dggs is at least as fast.  Prints one Markdown section.
 The H3 side is what an analyst writes with h3ronpy, pandas and geopandas:
 ``coordinates_to_cells``, ``DataFrame.to_sql`` plus an index, ``groupby`` on
 ``change_resolution``, ``wkb_to_cells`` of the countries exploded and merged,
-``cells_to_wkb_polygons`` written with geopandas.
+``cells_to_wkb_polygons`` written with geopandas.  The dggs side is what its
+docs show: ``latlng_to_cell``, a store keeping the roll-ups of levels 10 and 8
+(``keep_rollups``) filled by ``ingest_dataframe``, ``aggregate``,
+``sjoin_cells`` through the binned cells, ``CellStore.export``.
 """
 
 from __future__ import annotations
@@ -89,17 +92,23 @@ def run_dggs(n: int, folder: Path) -> dict[str, Any]:
     dggs, cell_store = _timed(log, "import", imports)
     df, shapes = points(n), countries()
     cells = _timed(log, "bin", lambda: dggs.latlng_to_cell(df["lat"].to_numpy(), df["lng"].to_numpy(), 17, as_int=True))
+    df["cell"] = cells  # as the H3 side keeps its cells
     log["cells"] = int(len(set(cells.tolist())))
     path = folder / "dggs.db"
     store = cell_store(path)
-    _timed(log, "store", lambda: store.ingest_dataframe(df, level=17, values=["pop"]))
+
+    def store_rows() -> None:
+        store.keep_rollups([10, 8])  # the levels the job rolls up to, kept by the ingest (as H3's side indexes)
+        store.ingest_dataframe(df, level=17, values=["pop"])
+
+    _timed(log, "store", store_rows)
 
     def roll_up() -> Any:
-        _timed(parts, "roll up: level 10 (one pass over the rows)", lambda: store.aggregate(10, "pop", ("count", "sum")))
-        _timed(parts, "roll up: level 8 (regrouped from level 10)", lambda: store.aggregate(8, "pop", ("count", "sum")))
+        _timed(parts, "roll up: level 10 (its kept partials)", lambda: store.aggregate(10, "pop", ("count", "sum")))
+        _timed(parts, "roll up: level 8 (its kept partials)", lambda: store.aggregate(8, "pop", ("count", "sum")))
 
     _timed(log, "roll up", roll_up)
-    joined = _timed(log, "join to countries", lambda: df.dggs.sjoin_cells(shapes, 10))
+    joined = _timed(log, "join to countries", lambda: df.dggs.sjoin_cells(shapes, 10, cells="cell"))
     log["joined"] = int(len(joined))
 
     def export() -> Any:
@@ -107,9 +116,9 @@ def run_dggs(n: int, folder: Path) -> dict[str, Any]:
         _timed(parts, "export: GeoPackage", lambda: store.export(folder / "dggs.gpkg", 8, "pop"))
 
     _timed(log, "export", export)
-    # Parts of the join, timed apart after the step (not counted in it): fill, then bin and hash-join.
+    # Parts of the join, timed apart after the step (not counted in it): fill, then the points' parents.
     _timed(parts, "join: fill the 177 countries at level 10", lambda: shapes.dggs.polyfill(10, as_int=True))
-    _timed(parts, "join: bin the points at level 10", lambda: dggs.latlng_to_cell(df["lat"].to_numpy(), df["lng"].to_numpy(), 10, as_int=True))
+    _timed(parts, "join: the points' level-10 parents", lambda: dggs.cell_to_parent(cells, 10))
     store.close()
     log["bytes"] = sum((folder / f).stat().st_size for f in ("dggs.parquet", "dggs.gpkg"))
     return log
