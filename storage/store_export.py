@@ -17,7 +17,8 @@ from dggs._formats import export_format
 
 from . import queries
 from .atomic import atomic_write, refuse_store
-from .connection import guarded
+from .connection import Connection, guarded
+from .rollup_memo import state
 
 __all__ = ["ExportMethods"]
 
@@ -27,6 +28,8 @@ class ExportMethods:
 
     aggregate: Any  # provided by CellStore
     path: str  # provided by CellStore
+    _store: Connection  # provided by CellStore
+    _last_table: tuple[tuple, Any] | None = None  # the last to_arrow table and what it was built from
 
     @guarded
     def to_geojson(
@@ -104,8 +107,19 @@ class ExportMethods:
         from dggs.arrow import cells_to_table
 
         stats = queries.export_stats(column, stats)
+        # An analyst exports one roll-up in several formats: the last table is remembered while the file
+        # is unchanged (the roll-up memo's file state), so the second format builds no polygons again.
+        conn, version, changes = state(self._store.conn)
+        key = (level, column, tuple(stats), densify)
+        last = self._last_table
+        if last is not None and last[0] == (*key, conn, version, changes):
+            return last[1]
         rows = self.aggregate(level, column, stats)
-        return cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
+        table = cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
+        # as the memo keeps it: others' commits as of before the roll-up, this connection's own changes
+        # after it (a roll-up's temporary tables count as changes; nothing else writes meanwhile)
+        self._last_table = ((*key, conn, version, self._store.conn.total_changes), table)
+        return table
 
     @guarded
     def export(

@@ -146,3 +146,25 @@ def test_the_memory_held_is_bounded(tmp_path, monkeypatch):
         assert store.aggregate(4, "i", STATS) == _oracle(path, 4, "i", STATS)
         assert sum(len(p.cells) for p in memo._kept.values()) <= 150
         assert store.aggregate(2, "i", STATS) == _oracle(path, 2, "i", STATS)
+
+
+def test_the_last_export_table_is_reused_only_while_the_file_is_unchanged(tmp_path):
+    """Two formats of one roll-up build one table; any write in between builds it again."""
+    store, path = _store(tmp_path, 12)
+    with store:
+        first = store.to_arrow(6, "i")
+        assert store.to_arrow(6, "i") is first  # remembered
+        assert store.to_arrow(6, "i", ("count",)) is not first and store.to_arrow(5, "i") is not first
+        first = store.to_arrow(6, "i")
+        store.conn.execute("UPDATE points SET i = 7 WHERE i IS NOT NULL")  # raw SQL on this connection
+        store.conn.commit()
+        after = store.to_arrow(6, "i")
+        assert after is not first and after.column("sum").to_pylist() == [
+            r["sum"] for r in _oracle(path, 6, "i", ("sum",))
+        ]
+        with CellStore(path) as other:  # another connection's ingest
+            other.ingest_points([48.0], [2.0], 12, {"i": [10**6]})
+        again = store.to_arrow(6, "i")
+        assert again is not after and sum(again.column("count").to_pylist()) == 401
+        store.ingest_points([-10.0], [20.0], 12, {"i": [1]})  # this store's own ingest
+        assert sum(store.to_arrow(6, "i").column("count").to_pylist()) == 402
