@@ -39,6 +39,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, LevelMismatchError
 from dggs.index._checks import check_level
+from dggs.index._many import each
 from dggs.index.hierarchy import cell_to_parent
 from dggs.index.points import cell_to_polygon, latlng_to_cell
 from dggs.index.polyfill import polygon_to_cells
@@ -288,7 +289,8 @@ class DggsAccessor:
     ) -> Any:
         """The cells of each (Multi)Polygon feature of a GeoDataFrame.
 
-        :func:`dggs.polygon_to_cells` per feature: polygons across the
+        :func:`dggs.polygon_to_cells` per feature, the features side by side
+        on all cores (``DGGS_THREADS=1`` keeps to one): polygons across the
         antimeridian (longitudes beyond 180, or split at 180) and around a
         pole are filled correctly.
 
@@ -348,19 +350,25 @@ class DggsAccessor:
         df = self._df
         if not is_geo(df):
             raise ColumnError("polyfill needs a GeoDataFrame with an active geometry column")
-        geoms = in_wgs84(df.geometry)
+        geoms = in_wgs84(df.geometry).array
         name = column if column is not None else f"cell_{level}"
+        polygons = ("Polygon", "MultiPolygon")
+        rows = [i for i, g in enumerate(geoms) if g is not None and not g.is_empty and g.geom_type in polygons]
+        # the features' fills on all cores (DGGS_THREADS), each result or error in row order
+        outcomes = each(lambda g: polygon_to_cells(g, level, mode, as_int, max_cells), geoms[rows])
+        filled = dict(zip(rows, outcomes, strict=False))  # the outcomes stop at the first error
         found: list[np.ndarray] = []
-        for i, geom in enumerate(geoms.array):
+        for i, geom in enumerate(geoms):
             if geom is None or geom.is_empty:
                 found.append(np.array([], dtype=np.uint64 if as_int else object))
                 continue
-            if geom.geom_type not in ("Polygon", "MultiPolygon"):
+            if geom.geom_type not in polygons:
                 raise DggsValueError(f"row {row_label(df, i)}: a {geom.geom_type} is not a Polygon or MultiPolygon")
-            try:
-                found.append(polygon_to_cells(geom, level, mode=mode, as_int=as_int, max_cells=max_cells))
-            except DggsValueError as exc:
-                raise type(exc)(f"{exc} (row {row_label(df, i)})") from exc
+            if isinstance(filled[i], DggsValueError):
+                raise type(filled[i])(f"{filled[i]} (row {row_label(df, i)})") from filled[i]
+            if isinstance(filled[i], BaseException):
+                raise filled[i]
+            found.append(filled[i])
         if not explode:
             return df.assign(**{name: pd.Series([c.tolist() for c in found], index=df.index, dtype=object)})
         counts = np.array([c.shape[0] for c in found], dtype=np.int64)
