@@ -198,12 +198,18 @@ def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, 
     by -120 k degrees, so only the arctangent of ``Az + H`` (eq. 7) remains.
     """
     face = nearest_face(centres, px, py, pz)
+    return (face, *face_forward(frames, face, px, py, pz))
+
+
+@njit(cache=True, nogil=True)
+def face_forward(frames: np.ndarray, face: int, px: float, py: float, pz: float):
+    """Unit vector -> ``(x, y)`` in the frame of ``face``, nearest or not (the sector formulas hold past its edges)."""
     c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
     n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
     e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
     h2 = n * n + e * e
     if h2 == 0.0:
-        return face, 0.0, 0.0
+        return 0.0, 0.0
     # sector k = azimuth // 120 degrees: sin(Az - 120) < 0 on [0, 120), sin(Az - 240) >= 0 on [240, 360)
     if e >= 0.0 and -0.5 * e - _HALF_SQRT3 * n < 0.0 and not (e == 0.0 and n < 0.0):
         k = 0
@@ -217,7 +223,7 @@ def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, 
     cos_az = (n * rc + e * rs) * inv_h
     sin_half_z = math.sqrt(0.5 * h2 / (1.0 + c))
     sp, cp = sector_forward(sin_az, cos_az, sin_half_z)
-    return face, sp * rc + cp * rs, cp * rc - sp * rs
+    return sp * rc + cp * rs, cp * rc - sp * rs
 
 
 @njit(cache=True, nogil=True)
@@ -370,9 +376,7 @@ def _forward_rad(lat, lng, centres, frames, face, x, y):
     """Spherical radians -> face, x, y on the unit sphere."""
     for i in prange(lat.shape[0]):
         cl = math.cos(lat[i])
-        face[i], x[i], y[i] = forward_unit(
-            centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i])
-        )
+        face[i], x[i], y[i] = forward_unit(centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i]))
 
 
 def _inverse_deg(face, x, y, frames, lat, lng):

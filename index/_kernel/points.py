@@ -72,12 +72,11 @@ locate = loops(_locate)
 # Cells to planar corners
 # ----------------------------------------------------------------------------
 @njit(cache=True, nogil=True)
-def corners(cell: np.uint64):
-    """Face and face-frame corners of a cell, counter-clockwise seen from outside.
+def triangle(cell: np.uint64):
+    """Face and face-frame corners of a cell as Split (2:6) labels them: ``(face, ax, ay, bx, by, cx, cy)``.
 
-    Returns ``(face, ax, ay, bx, by, cx, cy)``: a base cell's corners are its
-    face's vertices; a finer cell's are its 30-60-90 triangle (A, B, C),
-    reordered (A, C, B) where that is the counter-clockwise order.
+    A base cell's are its face's vertices; a finer cell's its 30-60-90 triangle
+    (A, B, C), in the order :func:`dggs.geometry.kernel.child_corners` divides.
     """
     face = bits.face_of(cell)
     level = bits.level_of(cell)
@@ -90,6 +89,17 @@ def corners(cell: np.uint64):
     cx, cy = _L1[d, 2, 0], _L1[d, 2, 1]
     for lv in range(2, level + 1):
         ax, ay, bx, by, cx, cy = gk.child_corners(ax, ay, bx, by, cx, cy, bits.digit_of(cell, lv))
+    return face, ax, ay, bx, by, cx, cy
+
+
+@njit(cache=True, nogil=True)
+def corners(cell: np.uint64):
+    """Face and face-frame corners of a cell, counter-clockwise seen from outside.
+
+    Returns ``(face, ax, ay, bx, by, cx, cy)``: :func:`triangle`'s (A, B, C),
+    reordered (A, C, B) where that is the counter-clockwise order.
+    """
+    face, ax, ay, bx, by, cx, cy = triangle(cell)
     if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0.0:
         return face, ax, ay, bx, by, cx, cy
     return face, ax, ay, cx, cy, bx, by
