@@ -13,7 +13,7 @@ BENCH_STAMP := $(BENCH_VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve]'
+	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster]'
 	touch $(STAMP)
 
 # The web map's front-end dependency (MapLibre GL JS) from npm, pinned by the lock file,
@@ -61,7 +61,7 @@ test-browser: $(STAMP) $(STATIC)
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
 	$(PYTHON) -m venv $(BENCH_VENV)
 	$(BENCH_PY) -m pip install --quiet --upgrade pip
-	$(BENCH_PY) -m pip install --quiet -e '.[test,serve]' -r benchmarks/requirements.txt
+	$(BENCH_PY) -m pip install --quiet -e '.[test,serve,raster]' -r benchmarks/requirements.txt
 	touch $(BENCH_STAMP)
 
 bench: $(BENCH_STAMP)
