@@ -190,20 +190,29 @@ def _wkb_records(coords: np.ndarray) -> np.ndarray:
 
 
 def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: int) -> Any:
+    """A binary array of ``n`` rows from (rows, offsets-from-0, data) chunks, each chunk's rows ascending.
+
+    Each chunk's bytes are copied straight to their rows' places, a run of consecutive rows at a time
+    (the ordinary cells are one chunk, split only where a cell at a pole or across the antimeridian
+    sits between them): no gather of the whole array afterwards.
+    """
     import pyarrow as pa
 
-    """A binary array of ``n`` rows from (rows, offsets-from-0, data) chunks, put back in row order."""
-    rows = np.concatenate([c[0] for c in chunks]) if chunks else np.empty(0, np.int64)
-    lengths = np.concatenate([np.diff(c[1]) for c in chunks]) if chunks else np.empty(0, np.int64)
-    offsets = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(lengths, out=offsets[1:])
-    data = np.concatenate([c[2] for c in chunks]) if chunks else np.empty(0, np.uint8)
-    arr = pa.LargeBinaryArray.from_buffers(pa.large_binary(), n, [None, pa.py_buffer(offsets), pa.py_buffer(data)])
-    if not np.array_equal(rows, np.arange(n)):
-        order = np.empty(n, dtype=np.int64)
-        order[rows] = np.arange(n)
-        arr = arr.take(pa.array(order))
-    return arr.cast(pa.binary()) if offsets[-1] < 2**31 - 1 else arr
+    lengths = np.zeros(n, dtype=np.int64)
+    for rows, offsets, _ in chunks:
+        lengths[rows] = np.diff(offsets)
+    ends = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(lengths, out=ends[1:])
+    data = np.empty(int(ends[-1]), dtype=np.uint8)
+    for rows, offsets, blob in chunks:
+        if rows.size == 0:
+            continue
+        breaks = np.flatnonzero(np.diff(rows) != 1) + 1
+        for a, b in zip([0, *breaks.tolist()], [*breaks.tolist(), rows.size], strict=True):
+            dst = int(ends[rows[a]])
+            data[dst : dst + int(offsets[b] - offsets[a])] = blob[int(offsets[a]) : int(offsets[b])]
+    arr = pa.LargeBinaryArray.from_buffers(pa.large_binary(), n, [None, pa.py_buffer(ends), pa.py_buffer(data)])
+    return arr.cast(pa.binary()) if ends[-1] < 2**31 - 1 else arr
 
 
 def _checked_groups(ids: np.ndarray, densify: int | None, max_points: int | None) -> list[tuple[np.ndarray, int]]:
