@@ -7,7 +7,7 @@ Then, each in fresh processes: the threads speed-up of point to cell (1-thread
 and default processes alternating), the peak RSS of point to cell on 10M
 points, and the first call after ``import dggs`` with a cold and a warm numba
 cache.  Prints markdown on stdout; ``--json PATH`` writes the raw numbers and
-the issue-9 targets (``run_all.py`` reads them).  Wall and CPU time, load
+the issue-18 targets (``run_all.py`` reads them).  Wall and CPU time, load
 average and the git commit are reported with the numbers.
 
 A peer that is not installed, or a dggs function of the new API that is not
@@ -279,7 +279,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes, 1 repeat (a smoke test)")
     ap.add_argument("--json", default=None, help="also write the raw numbers and the targets here")
-    ap.add_argument("--with-targets", action="store_true", help="also print the issue-9 targets table")
+    ap.add_argument("--with-targets", action="store_true", help="also print the issue-18 targets table")
     ap.add_argument("--skip", default="", help="comma-separated parts to skip: one,default,threads,rss,compile")
     for key, val in FULL.items():
         ap.add_argument("--" + key.replace("_", "-"), type=type(val), default=None,
@@ -333,7 +333,7 @@ def main() -> None:
     res["targets"] = targets(res)
     text = render(res)
     if args.with_targets:
-        text += "\n#### Targets (issue 9)\n\n" + render_targets(res["targets"])
+        text += "\n#### Targets (issue 18)\n\n" + render_targets(res["targets"])
     print(text)
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=1))

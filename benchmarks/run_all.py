@@ -6,7 +6,7 @@ skipped with a note if it is missing or fails) as subprocesses with this
 interpreter, collects the markdown each prints, and writes BENCHMARKS.md: the
 machine, the command, the date, the code state (commit, dirty or clean), the
 load average at the start and the end, each benchmark's tables, and the
-"Targets (issue 9)" table checked against bench_kernel's numbers (met / missed).
+"Targets (issue 18)" table checked against bench_kernel's numbers (met / missed).
 
 Run::
 
@@ -121,7 +121,7 @@ def main() -> None:
         if problem:
             w(f"### {name}\n\n{problem}\n")
 
-    w("## Targets (issue 9)\n")
+    w("## Targets (issue 18)\n")
     if kernel is None:
         w("bench_kernel.py produced no numbers, so the targets could not be checked.\n")
     else:
