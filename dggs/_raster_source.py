@@ -1,0 +1,204 @@
+"""Rasters read block by block: any file GDAL reads (through rasterio) or an xarray DataArray with a CRS.
+
+:func:`open_raster` checks what the binning needs (a CRS, the bands, the
+window) and names what is wrong; :meth:`RasterSource.blocks` yields the
+raster in windows of at most ``size`` x ``size`` pixels, each with its data
+(bands, rows, cols) and the mask of pixels holding data in every band.
+Part of :mod:`dggs.raster` (the optional extra ``raster``).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from dggs.errors import DggsValueError
+
+__all__ = ["RasterError", "RasterSource", "Block", "open_raster"]
+
+
+class RasterError(DggsValueError):
+    """A raster that cannot be binned: missing, not a raster, no CRS, a band or window out of range."""
+
+
+@dataclass
+class Block:
+    """One window of a raster: its place, its data (bands, rows, cols) and where every band has data."""
+
+    row: int
+    col: int
+    data: np.ndarray
+    valid: np.ndarray
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(rows, cols)."""
+        return self.valid.shape
+
+
+@dataclass
+class RasterSource:
+    """A raster's grid (``crs``, affine ``transform``, size), its bands and how to read a window."""
+
+    name: str
+    crs: Any
+    transform: Any
+    height: int
+    width: int
+    bands: list[int]
+    nodata: list[Any]
+    row0: int
+    col0: int
+    reader: Any
+    dtype: Any
+
+    def blocks(self, size: int) -> Iterator[Block]:
+        """The raster (its window) in blocks of at most ``size`` x ``size`` pixels, row by row."""
+        for r in range(0, self.height, size):
+            for c in range(0, self.width, size):
+                rows, cols = min(size, self.height - r), min(size, self.width - c)
+                data, mask = self.reader(self.row0 + r, self.col0 + c, rows, cols)
+                yield Block(r, c, data, mask)
+
+    @property
+    def pixels(self) -> int:
+        """Pixels in the window."""
+        return self.height * self.width
+
+
+def _valid(data: np.ndarray, nodata: Sequence[Any], masks: np.ndarray | None) -> np.ndarray:
+    """Pixels holding data in every band: not nodata, not NaN, not masked."""
+    ok = np.ones(data.shape[1:], dtype=bool)
+    for b in range(data.shape[0]):
+        band = data[b]
+        if nodata[b] is not None and not (isinstance(nodata[b], float) and np.isnan(nodata[b])):
+            ok &= band != nodata[b]
+        if band.dtype.kind == "f":  # NaN is never data
+            ok &= ~np.isnan(band)
+        if masks is not None:
+            ok &= masks[b] > 0
+    return ok
+
+
+def _window(window: Any, height: int, width: int, name: str) -> tuple[int, int, int, int]:
+    """``(row_off, col_off, rows, cols)`` of a window: None (the whole raster), a rasterio Window or 4 ints."""
+    if window is None:
+        return 0, 0, height, width
+    parts: tuple[Any, ...]
+    if hasattr(window, "row_off"):
+        parts = (window.row_off, window.col_off, window.height, window.width)
+    else:
+        try:
+            parts = tuple(window)
+        except TypeError:
+            parts = ()
+    if len(parts) != 4 or not all(float(p).is_integer() for p in parts):
+        raise RasterError(f"window {window!r} of {name} is not (row_off, col_off, height, width) in whole pixels")
+    r, c, h, w = (int(p) for p in parts)
+    if r < 0 or c < 0 or h < 1 or w < 1 or r + h > height or c + w > width:
+        raise RasterError(f"window {window!r} is outside {name} ({height} rows x {width} columns)")
+    return r, c, h, w
+
+
+def _bands(band: Any, count: int, name: str) -> list[int]:
+    if band is None:
+        return list(range(1, count + 1))
+    chosen = [band] if isinstance(band, (int, np.integer)) and not isinstance(band, bool) else list(band)
+    for b in chosen:
+        if isinstance(b, bool) or not isinstance(b, (int, np.integer)) or not 1 <= b <= count:
+            raise RasterError(f"band {b!r} is out of range: {name} has bands 1..{count}")
+    if not chosen:
+        raise RasterError(f"no band chosen of {name}")
+    return [int(b) for b in chosen]
+
+
+def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any = None) -> RasterSource:
+    """Open a raster file (path) or take an xarray DataArray (with a CRS, through rioxarray).
+
+    Raises
+    ------
+    RasterError
+        A missing file, one GDAL cannot read as a raster, no CRS, a band or window out of range
+        (each naming the file and the value).
+    """
+    if hasattr(source, "dims") and hasattr(source, "values"):
+        return _from_xarray(source, band, nodata, window)
+    import rasterio
+    from rasterio.errors import RasterioIOError
+
+    name = os.fspath(source) if isinstance(source, (str, os.PathLike)) else None
+    if name is None:
+        raise RasterError(f"a raster must be a file path or an xarray DataArray, not a {type(source).__name__}")
+    if not os.path.exists(name) and "://" not in name and not name.startswith("/vsi"):
+        raise RasterError(f"no raster file {name!r}")
+    try:
+        dataset = rasterio.open(name)
+    except RasterioIOError as exc:
+        raise RasterError(f"{name} is not a raster GDAL can read ({exc})") from None
+    if dataset.crs is None:
+        dataset.close()
+        raise RasterError(f"{name} has no CRS: set one (e.g. gdal_edit.py -a_srs EPSG:4326) to bin it")
+    bands = _bands(band, dataset.count, name)
+    values = [dataset.nodata if nodata is None else nodata] * len(bands)
+    r0, c0, h, w = _window(window, dataset.height, dataset.width, name)
+
+    def read(row: int, col: int, rows: int, cols: int) -> tuple[np.ndarray, np.ndarray]:
+        from rasterio.windows import Window
+
+        win = Window(col, row, cols, rows)
+        try:
+            data = dataset.read(bands, window=win)
+            masks = dataset.read_masks(bands, window=win) if nodata is None else None
+        except Exception as exc:  # noqa: BLE001 - GDAL's errors on a damaged file: name it
+            raise RasterError(f"{name} cannot be read at rows {row}..{row + rows} ({exc})") from None
+        return data, _valid(data, values, masks)
+
+    from pyproj import CRS
+
+    crs = CRS.from_user_input(dataset.crs.to_wkt())
+    return RasterSource(name, crs, _shifted(dataset.transform, r0, c0), h, w, bands, values, r0, c0, read,
+                        dataset.dtypes[0])
+
+
+def _shifted(transform: Any, row: int, col: int) -> Any:
+    """The affine transform of a window starting at (row, col)."""
+    from affine import Affine
+
+    return transform @ Affine.translation(col, row)
+
+
+def _from_xarray(array: Any, band: Any, nodata: Any, window: Any) -> RasterSource:
+    try:
+        import rioxarray  # noqa: F401 - registers .rio
+    except ImportError as exc:  # pragma: no cover - the raster extra installs it
+        raise RasterError("an xarray raster needs rioxarray: pip install 'dggs[raster]'") from exc
+    name = f"DataArray {array.name!r}" if array.name is not None else "the DataArray"
+    crs = array.rio.crs
+    if crs is None:
+        raise RasterError(f"{name} has no CRS: set one with .rio.write_crs('EPSG:4326')")
+    data = array if "band" in array.dims else array.expand_dims(band=[1])
+    extra = [d for d in data.dims if d not in ("band", array.rio.y_dim, array.rio.x_dim)]
+    if extra:
+        raise RasterError(f"{name} has dimensions {extra} besides band, y and x: select one slice first")
+    data = data.transpose("band", array.rio.y_dim, array.rio.x_dim)
+    bands = _bands(band, data.sizes["band"], name)
+    given = array.rio.nodata if nodata is None else nodata
+    values = [given] * len(bands)
+    height, width = data.sizes[array.rio.y_dim], data.sizes[array.rio.x_dim]
+    r0, c0, h, w = _window(window, height, width, name)
+
+    def read(row: int, col: int, rows: int, cols: int) -> tuple[np.ndarray, np.ndarray]:
+        part = data.isel(band=[b - 1 for b in bands], **{array.rio.y_dim: slice(row, row + rows),
+                                                         array.rio.x_dim: slice(col, col + cols)})
+        block = np.asarray(part.values)
+        return block, _valid(block, values, None)
+
+    from pyproj import CRS
+
+    transform = _shifted(array.rio.transform(), r0, c0)
+    return RasterSource(name, CRS.from_user_input(crs.to_wkt()), transform, h, w, bands, values, r0, c0, read,
+                        data.dtype)

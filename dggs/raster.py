@@ -1,0 +1,228 @@
+"""Rasters on equal-area cells: exact area-weighted binning of GeoTIFF, COG, NetCDF and xarray data.
+
+``raster_to_cells(source, level, mode=...)`` reads a raster block by block and
+gives one row per cell: its id, the value of each band and the share of the
+cell covered by pixels with data.  The weighted modes weigh each pixel by the
+true (ellipsoidal) area it shares with the cell, found by cutting the pixel
+along the cells' edges in Snyder's face planes, where cells are triangles
+with straight edges and areas are true areas (:mod:`dggs.index._pixels`);
+``"center"`` takes the pixel under each cell's centre.  docs/raster.md gives
+each mode's formula and the error bounds.  Needs the extra ``raster``
+(rasterio, rioxarray): ``pip install 'dggs[raster]'``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+import numpy as np
+
+from dggs._raster_blocks import each_block, tidy_classes, windows
+from dggs._raster_burn import cells_to_raster
+from dggs._raster_frames import center_frame, to_xarray, weighted_frame
+from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, to_wgs84
+from dggs._raster_source import RasterError, RasterSource, open_raster
+from dggs._raster_stats import Partials, block_partials, combine
+from dggs.errors import DggsValueError
+from dggs.index._checks import check_level
+from dggs.index._pixels import pixel_pieces
+
+__all__ = ["raster_to_cells", "cells_to_raster", "MODES", "OUTPUTS", "RasterError"]
+
+#: The modes of :func:`raster_to_cells`.
+MODES = ("center", "mean", "sum", "min", "max", "count", "mode", "fractions")
+#: What :func:`raster_to_cells` returns: a pandas DataFrame or an xarray Dataset.
+OUTPUTS = ("pandas", "xarray")
+
+
+def raster_to_cells(
+    source: Any,
+    level: int,
+    *,
+    mode: str = "mean",
+    band: int | list[int] | None = None,
+    nodata: Any = None,
+    window: Any = None,
+    density: bool = False,
+    as_str: bool = False,
+    block_size: int = 512,
+    progress: bool | None = None,
+    to: str = "pandas",
+) -> Any:
+    """The cells of ``level`` under a raster, with each band's value by ``mode`` and their covered share.
+
+    Parameters
+    ----------
+    source : str, path or xarray.DataArray
+        Any raster GDAL reads (GeoTIFF, COG, NetCDF, VRT, ...), in any CRS, or
+        a DataArray with a CRS (rioxarray's ``.rio``), dims (band,) y, x.
+    level : int
+        The cells' level (``dggs.cell_area(level)``).
+    mode : str
+        ``"mean"`` (default): the mean of the pixels weighted by the area each
+        shares with the cell; ``"sum"``: each pixel's value shared out by area
+        (counts; with ``density=True`` values per m², times area), so the cells
+        add up to the raster's total; ``"min"``, ``"max"``, ``"count"``: of the
+        pixels with data that meet the cell; ``"mode"``: the class covering
+        most of the cell; ``"fractions"``: each class's share of the covered
+        area (one column a class, ``class_<value>``); ``"center"``: the pixel
+        under the cell's centre (fast; what other tools do).
+    band : int or list of int, optional
+        Bands (1-based), default all; ``"mode"`` and ``"fractions"`` take one.
+    nodata : number, optional
+        The value of pixels without data (default the raster's own).
+    window : (row_off, col_off, height, width) or rasterio Window, optional
+        Only this part of the raster.
+    density : bool
+        For ``"sum"``: values are per m² (multiplied by the shared area), not per pixel.
+    as_str : bool
+        Add the string ids as column ``cell``.
+    block_size : int
+        Pixels a block side: the raster is read and cut a block at a time, on all cores.
+    progress : bool, optional
+        A progress bar of the blocks on stderr (default: none).
+    to : {"pandas", "xarray"}
+        ``"xarray"``: the same table as an ``xarray.Dataset`` on dimension
+        ``cells``, its ``cell_ids`` coordinate (uint64) carrying the grid's
+        attributes, so that ``xdggs.decode`` reads it after ``import dggs.xdggs``.
+
+    Returns
+    -------
+    pandas.DataFrame or xarray.Dataset
+        One row per cell holding data, in id order: ``cell_id`` (int64), ``cell``
+        (str, with ``as_str``), ``value`` (one band) or ``band_<n>`` (several),
+        or the ``class_<value>`` columns, and ``coverage`` (the share of the
+        cell's area under pixels with data; not for ``"center"``).
+
+    Raises
+    ------
+    RasterError
+        A missing or unreadable file, a non-raster, no CRS, a band or window out of range.
+    LevelError
+        ``level`` is not 0..MAX_LEVEL.
+    DggsValueError
+        An unknown ``mode`` or ``to``, several bands for ``"mode"``/``"fractions"``, a bad ``block_size``.
+
+    Examples
+    --------
+    >>> import numpy as np, xarray as xr, rioxarray
+    >>> grid = xr.DataArray(np.ones((2, 2)), dims=("y", "x"), coords={"y": [1.5, 0.5], "x": [0.5, 1.5]})
+    >>> grid = grid.rio.write_crs("EPSG:4326")
+    >>> table = raster_to_cells(grid, 5, mode="sum")
+    >>> round(float(table["value"].sum()), 9)
+    4.0
+    >>> raster_to_cells(grid, 5, to="xarray")["cell_ids"].attrs  # xdggs.decode reads it
+    {'grid_name': 'dggs_split26', 'level': 5}
+    """
+    if to not in OUTPUTS:
+        raise DggsValueError(f"to={to!r} is not one of {', '.join(map(repr, OUTPUTS))}")
+    level, src = open_checked(source, level, mode, band, nodata, window, block_size)
+    bar = None
+    if progress:
+        from tqdm import tqdm
+
+        bar = tqdm(total=len(windows(src, block_size)), unit="block", desc="raster", leave=False)
+    parts = []
+    try:
+        for part in block_results(src, level, mode, density, block_size):
+            if part is not None:
+                parts.append(part)
+            if bar is not None:
+                bar.update(1)
+    finally:
+        if bar is not None:
+            bar.close()
+    frame = finish(parts, src.bands, level, mode, as_str)
+    return frame if to == "pandas" else to_xarray(frame, level)
+
+
+def open_checked(source: Any, level: int, mode: str, band: Any, nodata: Any, window: Any, block_size: int) -> tuple[
+    int, RasterSource
+]:
+    """The arguments of :func:`raster_to_cells` checked, and the raster opened (the errors it documents)."""
+    level = check_level(level)
+    if mode not in MODES:
+        raise DggsValueError(f"mode {mode!r} is not one of {', '.join(MODES)}")
+    if isinstance(block_size, bool) or not isinstance(block_size, int) or block_size < 1:
+        raise DggsValueError(f"block_size must be a whole number of pixels >= 1, not {block_size!r}")
+    src = open_raster(source, band, nodata, window)
+    if mode in ("mode", "fractions") and len(src.bands) != 1:
+        raise DggsValueError(f"mode {mode!r} takes one band, not {len(src.bands)}: pass band=")
+    return level, src
+
+
+def block_results(src: RasterSource, level: int, mode: str, density: bool, block_size: int, skip: int = 0) -> Iterator[
+    Any
+]:
+    """Each block's partials (``"center"``: its cells and their values), in block order from block ``skip``.
+
+    None for a block with no cell; :func:`finish` makes the table of them.
+    ``CellStore.ingest_raster`` commits them a block at a time.
+    """
+    transformer = to_wgs84(src.crs)
+
+    def one(block: Any) -> Any:
+        if mode == "center":
+            return _center_block(src, transformer, block, level, mode, density)
+        return tidy_classes(_weighted_block(src, transformer, block, level, mode, density))
+
+    yield from each_block(src, block_size, one, skip)
+
+
+def finish(parts: list[Any], bands: list[int], level: int, mode: str, as_str: bool) -> Any:
+    """The table of :func:`raster_to_cells` from the results of :func:`block_results` (Nones left out)."""
+    if mode == "center":
+        cells = np.concatenate([p[0] for p in parts]) if parts else np.empty(0, np.uint64)
+        values = np.concatenate([p[1] for p in parts], axis=1) if parts else np.empty((len(bands), 0))
+        return center_frame(cells, values, bands, as_str)
+    return weighted_frame(combine(parts, len(bands)), bands, level, mode, as_str)
+
+
+def _grid(src: RasterSource, transformer: Any, block: Any) -> tuple[tuple[np.ndarray, ...], int, int, np.ndarray]:
+    """The block's edge points with the right density, its sub-pixel factor and the sub-pixels' validity."""
+    rows, cols = block.shape
+    grid = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, 1)
+    degrees = pixel_degrees(*grid, 1)
+    s = split_factor(degrees)
+    k = points_per_edge(chord_error(transformer, src.transform @ _scale(s), block.row * s, block.col * s, rows * s,
+                                    cols * s))
+    if k > 1 or s > 1:
+        grid = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, k, s)
+    valid = np.repeat(np.repeat(block.valid, s, axis=0), s, axis=1)
+    hbad, vbad = np.isnan(grid[0]), np.isnan(grid[2])
+    if hbad.any() or vbad.any():  # pixels the CRS cannot put on the globe
+        n_rows, n_cols = valid.shape
+        top = hbad[:, :-1].reshape(n_rows + 1, n_cols, k).any(axis=2) | hbad[:, k::k]
+        side = vbad[:-1].reshape(n_rows, k, n_cols + 1).any(axis=1) | vbad[k::k]
+        valid = valid & ~(top[:-1] | top[1:] | side[:, :-1] | side[:, 1:])
+        grid = (np.nan_to_num(grid[0]), np.nan_to_num(grid[1]), np.nan_to_num(grid[2]), np.nan_to_num(grid[3]))
+    return grid, k, s, valid
+
+
+def _scale(s: int) -> Any:
+    from affine import Affine
+
+    return Affine.scale(1.0 / s)
+
+
+def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Partials | None:
+    grid, k, s, valid = _grid(src, transformer, block)
+    pixel, cell, area, total = pixel_pieces(*grid, k, valid, level)
+    if pixel.size == 0:
+        return None
+    rows, cols = block.shape
+    if s > 1:  # sub-pixels back to their pixels
+        sub_r, sub_c = np.divmod(pixel, cols * s)
+        pixel = (sub_r // s) * cols + sub_c // s
+        whole = np.zeros(rows * cols)
+        np.add.at(whole, pixel, area)
+        total = whole
+    values = block.data.reshape(block.data.shape[0], rows * cols)
+    return block_partials(pixel, cell, area, total, values, mode, density, split=s > 1)
+
+
+def _center_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Any:
+    from dggs._raster_center import centre_values
+
+    return centre_values(src, transformer, block, level)
