@@ -29,6 +29,7 @@ def main() -> None:
 
 
 def _register() -> None:
+    from dggs._raster_cli import bin_raster  # click only: the raster modules load when it runs
     from dggs.cell_cli import cell
     from dggs.experiments.cli import experiments
     from dggs.server.cli import serve  # click only: fastapi is imported when the command runs
@@ -37,6 +38,7 @@ def _register() -> None:
     main.add_command(cell)
     main.add_command(experiments)
     main.add_command(serve)
+    main.add_command(bin_raster)
     register_storage(main)  # bin, query, export, plot, info, demo
 
 

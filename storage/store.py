@@ -35,12 +35,13 @@ from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
 from .store_export import ExportMethods
 from .store_ingest import IngestMethods
+from .store_raster import RasterMethods
 from .store_rollups import RollupMethods
 
 __all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
 
-class CellStore(IngestMethods, ExportMethods, RollupMethods):
+class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
     """Points binned into cells at one level, stored in SQLite.
 
     Parameters

@@ -1,0 +1,96 @@
+"""The raster ingest of :class:`~dggs.storage.CellStore` (a mixin): :meth:`RasterMethods.ingest_raster`."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from .connection import guarded
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .connection import Connection
+    from .raster_ingest import RasterIngestResult
+
+__all__ = ["RasterMethods"]
+
+
+class RasterMethods:
+    """``ingest_raster``: a raster binned into the store, a block a transaction (needs the extra ``raster``)."""
+
+    _store: Connection
+
+    @guarded
+    def ingest_raster(
+        self,
+        source: Any,
+        level: int | None = None,
+        *,
+        mode: str = "mean",
+        band: int | list[int] | None = None,
+        nodata: Any = None,
+        window: Any = None,
+        density: bool = False,
+        block_size: int = 512,
+        replace: bool = False,
+        progress: bool | Callable[[int], Any] | None = None,
+    ) -> RasterIngestResult:
+        """Bin a raster into the store's cells as :func:`dggs.raster.raster_to_cells` does, resumably.
+
+        The raster is read and cut a block at a time; each block's per-cell
+        partials are committed with the source's progress in one transaction,
+        so a run killed at any moment resumes after its last whole block.
+        When every block is in, one row per cell (at the cell's centre, ``row``
+        numbering the cells in id order) goes into the store with the value
+        columns ``raster_to_cells`` gives (``value``, ``band_<n>`` or
+        ``class_<v>``, and ``coverage``; a class label that is not an
+        identifier is spelt ``class_m1_5`` for -1.5), exactly its numbers,
+        in one transaction that also keeps the kept roll-ups current.  The
+        raster is identified by its content: ingesting it again resumes, or
+        does nothing if it was ingested completely (``sources`` counts its
+        blocks in ``rows_done``).
+
+        Parameters
+        ----------
+        source : str, path or xarray.DataArray
+            A raster GDAL reads, or a DataArray with a CRS (as ``raster_to_cells``).
+        level : int, optional
+            The store's level (default: the store's, or 12 for a new store).
+        mode, band, nodata, window, density, block_size
+            As :func:`dggs.raster.raster_to_cells` (a block is also the unit of a transaction).
+        replace : bool
+            Forget what an earlier ingest of this raster (or of an older version of the file) stored first.
+        progress : bool or callable, optional
+            ``True`` for a progress bar of the blocks on stderr; a callable is given the blocks committed.
+
+        Returns
+        -------
+        RasterIngestResult
+            ``rows_read`` blocks read by this run, ``rows_inserted`` cells stored, ``blocks`` in all.
+
+        Raises
+        ------
+        RasterError, LevelError, DggsValueError
+            As :func:`dggs.raster.raster_to_cells`, before anything is stored.
+        LevelMismatchError
+            The store holds another level.
+        StorageError
+            A read-only store, a file changed since (without ``replace``), the same raster ingested
+            before with other settings, or another process ingesting it at the same time.
+
+        Examples
+        --------
+        >>> import numpy as np, xarray as xr, rioxarray
+        >>> from dggs.storage import CellStore
+        >>> grid = xr.DataArray(np.arange(4.0).reshape(2, 2), dims=("y", "x"),
+        ...                     coords={"y": [1.5, 0.5], "x": [0.5, 1.5]}).rio.write_crs("EPSG:4326")
+        >>> with CellStore() as store:
+        ...     result = store.ingest_raster(grid, 6)
+        ...     result.rows_inserted == store.count(), store.columns
+        (True, {'value': 'REAL', 'coverage': 'REAL'})
+        """
+        from .raster_ingest import ingest_raster
+
+        return ingest_raster(
+            self._store, source, level, mode=mode, band=band, nodata=nodata, window=window, density=density,
+            block_size=block_size, replace=replace, progress=progress,
+        )
