@@ -138,19 +138,88 @@ def _whole(cell, level, target, area, pixel, p, c, a, n):
 
 
 @njit(cache=True, nogil=True)
-def _descend(root, root_level, corners, target, px, py, nv, pixel, p, c, a, n, xs, ys, tx, ty, tri, ids, counts, nxt):
+def _split(x, y, n, ax, ay, bx, by, lx, ly, rx, ry):
+    """Polygon (x, y)[:n] cut by the line a -> b: its part left of the line into (lx, ly), right into (rx, ry).
+
+    One pass for two clips (Sutherland-Hodgman against both half-planes); returns both counts.
+    """
+    nl = 0
+    nr = 0
+    if n == 0:
+        return 0, 0
+    px, py = x[n - 1], y[n - 1]
+    ps = (bx - ax) * (py - ay) - (by - ay) * (px - ax)
+    for i in range(n):
+        qx, qy = x[i], y[i]
+        qs = (bx - ax) * (qy - ay) - (by - ay) * (qx - ax)
+        if (ps > 0.0 and qs < 0.0) or (ps < 0.0 and qs > 0.0):  # the edge crosses the line: both sides get it
+            t = ps / (ps - qs)
+            ix, iy = px + t * (qx - px), py + t * (qy - py)
+            lx[nl], ly[nl] = ix, iy
+            rx[nr], ry[nr] = ix, iy
+            nl += 1
+            nr += 1
+        if qs >= 0.0:
+            lx[nl], ly[nl] = qx, qy
+            nl += 1
+        if qs <= 0.0:
+            rx[nr], ry[nr] = qx, qy
+            nr += 1
+        px, py, ps = qx, qy, qs
+    return nl, nr
+
+
+@njit(cache=True, nogil=True)
+def _children(level, t, x, y, n, kx, ky, kn, tx, ty):
+    """The parts of polygon (x, y)[:n] in each child of triangle ``t`` (ax, ay, bx, by, cx, cy) into kx, ky, kn.
+
+    A face (level 0) has 6 children, each clipped; a finer cell's 3 are cut apart by two lines: child 0
+    (B, D, C) lies on C's side of BD, child 2 (A, D, E) on A's side of DE, child 1 between
+    (:func:`dggs.geometry.kernel.child_corners`: D a third of the way from C to A, E the midpoint of AB).
+    """
+    if level == 0:
+        for j in range(6):
+            kn[j] = _clip(x, y, n, _L1[j, 0, 0], _L1[j, 0, 1], _L1[j, 1, 0], _L1[j, 1, 1], _L1[j, 2, 0],
+                          _L1[j, 2, 1], kx[j], ky[j], tx, ty)
+            kx[j, :kn[j]], ky[j, :kn[j]] = tx[:kn[j]], ty[:kn[j]]
+        return
+    ax, ay, bx, by, cx, cy = t[0], t[1], t[2], t[3], t[4], t[5]
+    dx, dy = cx + (ax - cx) / 3.0, cy + (ay - cy) / 3.0
+    ex, ey = 0.5 * (ax + bx), 0.5 * (ay + by)
+    left, right = _split(x, y, n, bx, by, dx, dy, kx[0], ky[0], tx, ty)  # left into child 0's place
+    if (dx - bx) * (cy - by) - (dy - by) * (cx - bx) >= 0.0:  # C lies left of B -> D: child 0 is the left part
+        kn[0] = left
+        kx[1, :right], ky[1, :right] = tx[:right], ty[:right]  # the rest, in child 1's place for now
+        rest = right
+    else:
+        kx[1, :left], ky[1, :left] = kx[0, :left], ky[0, :left]
+        kx[0, :right], ky[0, :right] = tx[:right], ty[:right]
+        kn[0] = right
+        rest = left
+    left, right = _split(kx[1], ky[1], rest, dx, dy, ex, ey, kx[2], ky[2], tx, ty)  # left into child 2's place
+    if (ex - dx) * (ay - dy) - (ey - dy) * (ax - dx) >= 0.0:  # A lies left of D -> E: child 2 is the left part
+        kn[2] = left
+        kx[1, :right], ky[1, :right] = tx[:right], ty[:right]
+        kn[1] = right
+    else:
+        kx[1, :left], ky[1, :left] = kx[2, :left], ky[2, :left]
+        kn[1] = left
+        kx[2, :right], ky[2, :right] = tx[:right], ty[:right]
+        kn[2] = right
+
+
+@njit(cache=True, nogil=True)
+def _descend(root, root_level, corners, target, px, py, nv, pixel, p, c, a, n, kx, ky, kn, tx, ty, tri, ids, nxt):
     """Pieces of polygon (px, py)[:nv] inside cell ``root`` (corners ax, ay, bx, by, cx, cy) down to ``target``.
 
-    The rest is scratch: ``xs``, ``ys`` (levels + 2, width), ``tx``, ``ty`` (width), width >= nv + 3 (levels + 2);
-    ``tri`` (levels + 2, 6), ``ids``, ``counts``, ``nxt`` (levels + 2).
+    Depth first, each node's children cut at once (:func:`_children`).  The rest is scratch:
+    ``kx``, ``ky`` (levels + 2, 6, width), ``kn`` (levels + 2, 6), ``tx``, ``ty`` (width), width >=
+    nv + 3 (levels + 2); ``tri`` (levels + 2, 6), ``ids``, ``nxt`` (levels + 2).
     """
-    xs[0, :nv], ys[0, :nv] = px[:nv], py[:nv]
-    nxt[0] = 0
-    box = tri[:, 6:]  # each level's polygon's bounding box: xmin, xmax, ymin, ymax
-    box[0, 0], box[0, 1], box[0, 2], box[0, 3] = px[:nv].min(), px[:nv].max(), py[:nv].min(), py[:nv].max()
-    counts[0] = nv
     tri[0, :6] = corners
     ids[0] = root
+    _children(root_level, tri[0], px, py, nv, kx[0], ky[0], kn[0], tx, ty)
+    nxt[0] = 0
     d = 0
     while d >= 0:
         level = root_level + d
@@ -159,17 +228,8 @@ def _descend(root, root_level, corners, target, px, py, nv, pixel, p, c, a, n, x
             continue
         digit = nxt[d]
         nxt[d] += 1
-        if level == 0:
-            ax, ay, bx, by, cx, cy = (_L1[digit, 0, 0], _L1[digit, 0, 1], _L1[digit, 1, 0], _L1[digit, 1, 1],
-                                      _L1[digit, 2, 0], _L1[digit, 2, 1])
-        else:
-            t = tri[d]
-            ax, ay, bx, by, cx, cy = gk.child_corners(t[0], t[1], t[2], t[3], t[4], t[5], digit)
-        if (max(ax, bx, cx) < box[d, 0] or min(ax, bx, cx) > box[d, 1] or max(ay, by, cy) < box[d, 2]
-                or min(ay, by, cy) > box[d, 3]):
-            continue  # the child's bounding box misses the polygon's: nothing to clip
-        m = _clip(xs[d], ys[d], counts[d], ax, ay, bx, by, cx, cy, xs[d + 1], ys[d + 1], tx, ty)
-        got = abs(_area(tx, ty, m))
+        m = kn[d, digit]
+        got = abs(_area(kx[d, digit], ky[d, digit], m))
         if got <= 0.0:
             continue
         cell = _child(ids[d], level, digit)
@@ -178,16 +238,19 @@ def _descend(root, root_level, corners, target, px, py, nv, pixel, p, c, a, n, x
             p[n], c[n], a[n] = pixel, cell, got
             n += 1
             continue
+        if level == 0:
+            ax, ay, bx, by, cx, cy = (_L1[digit, 0, 0], _L1[digit, 0, 1], _L1[digit, 1, 0], _L1[digit, 1, 1],
+                                      _L1[digit, 2, 0], _L1[digit, 2, 1])
+        else:
+            t = tri[d]
+            ax, ay, bx, by, cx, cy = gk.child_corners(t[0], t[1], t[2], t[3], t[4], t[5], digit)
         if got >= _WHOLE * 0.5 * abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)):
             p, c, a, n = _whole(cell, level + 1, target, got, pixel, p, c, a, n)
             continue
-        xs[d + 1, :m], ys[d + 1, :m] = tx[:m], ty[:m]
-        counts[d + 1] = m
-        box[d + 1, 0], box[d + 1, 1] = tx[:m].min(), tx[:m].max()
-        box[d + 1, 2], box[d + 1, 3] = ty[:m].min(), ty[:m].max()
         tri[d + 1, 0], tri[d + 1, 1], tri[d + 1, 2], tri[d + 1, 3], tri[d + 1, 4], tri[d + 1, 5] = (
             ax, ay, bx, by, cx, cy)
         ids[d + 1] = cell
+        _children(level + 1, tri[d + 1], kx[d, digit], ky[d, digit], m, kx[d + 1], ky[d + 1], kn[d + 1], tx, ty)
         nxt[d + 1] = 0
         d += 1
     return p, c, a, n
@@ -290,11 +353,12 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
     ring = np.empty(m, np.int64)
     px, py = np.empty(width), np.empty(width)
     rc = np.empty(m, np.uint64)
-    xs, ys = np.empty((target + 3, width)), np.empty((target + 3, width))
+    kx, ky = np.empty((target + 3, 6, width)), np.empty((target + 3, 6, width))
+    kn = np.zeros((target + 3, 6), np.int64)
     tx, ty = np.empty(width), np.empty(width)
-    tri6 = np.empty((target + 3, 10))  # each level's triangle, then its polygon's bounding box
+    qx, qy = np.empty(width), np.empty(width)
+    tri6 = np.empty((target + 3, 6))
     ids = np.empty(target + 3, np.uint64)
-    counts = np.zeros(target + 3, np.int64)
     nxt = np.zeros(target + 3, np.int64)
     near = np.zeros(_CENTRES.shape[0], np.bool_)
     face_tri = np.array([_FACE[0, 0], _FACE[0, 1], _FACE[1, 0], _FACE[1, 1], _FACE[2, 0], _FACE[2, 1]])
@@ -329,8 +393,8 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                 level = _common(rc, m, target)
                 root = bits.parent_at(rc[0], level)
                 tri = face_tri if level == 0 else np.array(triangle(root)[1:])
-                p, c, a, n = _descend(root, level, tri, target, px, py, m, pixel, p, c, a, n, xs, ys, tx, ty, tri6, ids,
-                                      counts, nxt)
+                p, c, a, n = _descend(root, level, tri, target, px, py, m, pixel, p, c, a, n, kx, ky, kn, tx, ty, tri6,
+                                      ids, nxt)
                 continue
             for g in range(_CENTRES.shape[0]):  # across face edges: every face near a vertex
                 near[g] = False
@@ -346,7 +410,7 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                     q = ring[j]
                     px[j], py[j] = gk.face_forward(_FRAMES, g, ux[q], uy[q], uz[q])
                 got_n = _clip(px, py, m, face_tri[0], face_tri[1], face_tri[2], face_tri[3], face_tri[4],
-                              face_tri[5], xs[0], ys[0], tx, ty)
+                              face_tri[5], qx, qy, tx, ty)
                 got = abs(_area(tx, ty, got_n))
                 if got <= 0.0:
                     continue
@@ -357,5 +421,5 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                     continue
                 px[:got_n], py[:got_n] = tx[:got_n], ty[:got_n]
                 p, c, a, n = _descend(bits.base_cell(g), 0, face_tri, target, px, py, got_n, pixel, p, c, a, n,
-                                      xs, ys, tx, ty, tri6, ids, counts, nxt)
+                                      kx, ky, kn, tx, ty, tri6, ids, nxt)
     return p[:n], c[:n], a[:n]
