@@ -49,19 +49,26 @@ def chord_error(transformer: Any, transform: Any, row: int, col: int, rows: int,
     """The largest fraction of a pixel's area its edges' chords leave out, over a sample of the block's pixels.
 
     ``2/3 sum(s L) / A`` of each sampled pixel with one point an edge, its sagittas ``s`` measured in the
-    face plane of its first corner (:func:`dggs.index._pixels.chord_errors`).
+    face planes (:func:`dggs.index._pixels.chord_errors`).  Where no sampled pixel has an edge without a
+    kink (a pixel at an icosahedron vertex, alone), pixels a quarter the size are measured: the fraction
+    grows as the side (s L / A ~ L), so theirs times 4.
     """
     from dggs.index._pixels import chord_errors
 
     r = row + np.unique(np.linspace(0, rows - 1, min(rows, _SAMPLE)).astype(np.int64))
     c = col + np.unique(np.linspace(0, cols - 1, min(cols, _SAMPLE)).astype(np.int64))
     rr, cc = np.meshgrid(r.astype(np.float64), c.astype(np.float64), indexing="ij")
-    # the 8 points of each pixel, clockwise from its top-left corner: corner, edge midpoint, corner, ...
-    dr = np.array([0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 0.5])
-    dc = np.array([0.0, 0.5, 1.0, 1.0, 1.0, 0.5, 0.0, 0.0])
-    lat, lng = _lnglat(transformer, transform, cc.reshape(-1, 1) + dc, rr.reshape(-1, 1) + dr)
-    errors = chord_errors(lat, lng)
-    return float(np.nanmax(errors)) if np.isfinite(errors).any() else 0.0
+    # 16 points round each pixel, clockwise from its top-left corner, four an edge: the corner, then a
+    # quarter, half and three quarters along
+    t = np.array([0.0, 0.25, 0.5, 0.75])
+    dr = np.concatenate([0 * t, t, 1 + 0 * t, 1 - t])
+    dc = np.concatenate([t, 1 + 0 * t, 1 - t, 0 * t])
+    for scale in (1.0, 0.25, 0.0625):
+        lat, lng = _lnglat(transformer, transform, cc.reshape(-1, 1) + scale * dc, rr.reshape(-1, 1) + scale * dr)
+        errors = chord_errors(lat, lng)
+        if np.isfinite(errors).any():
+            return float(np.nanmax(errors)) / scale
+    return 0.0
 
 
 def split_factor(degrees: float) -> int:

@@ -85,7 +85,7 @@ def pixel_pieces(
 def chord_errors(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:
     """Per pixel, the fraction of its area the chords of its edges leave out (NaN where a point is not finite).
 
-    ``lat``, ``lng`` (N, 8) WGS84 degrees: each pixel's corners and edge midpoints in turn, round it
+    ``lat``, ``lng`` (N, 16) WGS84 degrees: each pixel's points round it, four an edge from its first corner
     (:func:`dggs.index._kernel.pixels.chord_errors`).
     """
     lat = np.ascontiguousarray(lat, dtype=np.float64)

@@ -67,6 +67,25 @@ def test_sum_of_counts_and_of_densities_is_the_rasters_total(tmp_path, level):
     assert (counts["cell_id"].diff().dropna() > 0).all() and (dggs.get_level(counts["cell_id"].to_numpy()) == level).all()
 
 
+def test_a_global_rasters_integral_to_1e_9(tmp_path):
+    """Densities times area over the whole globe against the exact areas of lat/lng pixels on the ellipsoid
+    (R² dλ (sin β₁ - sin β₂), β the authalic latitude from pyproj's ellipsoid, not dggs's series)."""
+    rng = np.random.default_rng(4)
+    d = 3.0
+    data = rng.random((60, 120))
+    path = write(tmp_path / "globe.tif", data, transform=from_origin(-180.0, 90.0, d, d))
+    table = raster_to_cells(path, 4, mode="sum", density=True)
+    ellps = pyproj.Geod(ellps="WGS84")
+    e2 = ellps.es
+    q = lambda phi: (1 - e2) * (np.sin(phi) / (1 - e2 * np.sin(phi) ** 2)  # noqa: E731 - Snyder 1987 eq. 3-12
+                                - np.log((1 - np.sqrt(e2) * np.sin(phi)) / (1 + np.sqrt(e2) * np.sin(phi)))
+                                / (2 * np.sqrt(e2)))
+    edges = np.radians(90.0 - d * np.arange(61))
+    rows = ellps.a**2 / 2 * np.radians(d) * np.abs(q(edges[:-1]) - q(edges[1:]))  # each row's pixel area
+    integral = (data * rows[:, None]).sum()
+    assert abs(table["value"].sum() / integral - 1) < 1e-9
+
+
 def test_mean_matches_a_supersampled_oracle(tmp_path):
     rng = np.random.default_rng(5)
     data = rng.random((6, 8)) * 10
