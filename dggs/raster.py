@@ -22,7 +22,7 @@ from dggs._raster_blocks import each_block, tidy_classes, windows
 from dggs._raster_burn import cells_to_raster
 from dggs._raster_frames import center_frame, to_xarray, weighted_frame
 from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, to_wgs84
-from dggs._raster_source import RasterError, RasterSource, open_raster
+from dggs._raster_source import Block, RasterError, RasterSource, open_raster
 from dggs._raster_stats import Partials, block_partials, combine
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_level
@@ -206,20 +206,34 @@ def _scale(s: int) -> Any:
     return Affine.scale(1.0 / s)
 
 
+#: Rows a band of a block: each band takes its own points per edge (pixels bend most near the poles, and a
+#: global block would otherwise draw every pixel with the pole rows' hundreds).
+_BAND = 32
+
+
 def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Partials | None:
-    grid, k, s, valid = _grid(src, transformer, block)
-    pixel, cell, area, total = pixel_pieces(*grid, k, valid, level)
-    if pixel.size == 0:
-        return None
     rows, cols = block.shape
-    if s > 1:  # sub-pixels back to their pixels
-        sub_r, sub_c = np.divmod(pixel, cols * s)
-        pixel = (sub_r // s) * cols + sub_c // s
-        whole = np.zeros(rows * cols)
-        np.add.at(whole, pixel, area)
-        total = whole
+    found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+    total = np.zeros(rows * cols)
+    split = False
+    for r0 in range(0, rows, _BAND):
+        band = Block(block.row + r0, block.col, block.data[:, r0 : r0 + _BAND], block.valid[r0 : r0 + _BAND])
+        if not band.valid.any():
+            continue
+        grid, k, s, valid = _grid(src, transformer, band)
+        pixel, cell, area, whole = pixel_pieces(*grid, k, valid, level)
+        if s > 1:  # sub-pixels back to their pixels
+            sub_r, sub_c = np.divmod(pixel, cols * s)
+            pixel = (sub_r // s) * cols + sub_c // s
+            split = True
+        pixel = pixel + r0 * cols
+        np.add.at(total, pixel, area)
+        found.append((pixel, cell, area))
+    if not found or all(f[0].size == 0 for f in found):
+        return None
+    pixel, cell, area = (np.concatenate([f[i] for f in found]) for i in range(3))
     values = block.data.reshape(block.data.shape[0], rows * cols)
-    return block_partials(pixel, cell, area, total, values, mode, density, split=s > 1)
+    return block_partials(pixel, cell, area, total, values, mode, density, split=split)
 
 
 def _center_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Any:
