@@ -28,8 +28,8 @@ __all__ = ["TOLERANCE", "chord_error", "points_per_edge", "split_factor", "edge_
 #: (a global quarter-degree raster: 28 points an edge instead of 9) for no change a user could see, the
 #: pixel's whole area being extrapolated to about 1e-9 anyway.
 TOLERANCE = 1e-5
-#: Sample pixels a block side for the sagittas.
-_SAMPLE = 24
+#: Sample pixels a tile side for the sagittas (raster.py cuts blocks in tiles of 32: one in four).
+_SAMPLE = 8
 
 
 def points_per_edge(chord_error: float) -> int:

@@ -206,9 +206,10 @@ def _scale(s: int) -> Any:
     return Affine.scale(1.0 / s)
 
 
-#: Rows a band of a block: each band takes its own points per edge (pixels bend most near the poles, and a
-#: global block would otherwise draw every pixel with the pole rows' hundreds).
-_BAND = 32
+#: A block is cut in tiles of this many pixels a side, each with its own points per edge: pixels bend
+#: most near the poles and near the faces' centres, and one sample for a whole block would draw every
+#: pixel with the most bent ones' hundreds of points.
+_TILE = 32
 
 
 def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Partials | None:
@@ -216,22 +217,24 @@ def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int,
     found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
     total = np.zeros(rows * cols)
     split = False
-    for r0 in range(0, rows, _BAND):
-        band = Block(block.row + r0, block.col, block.data[:, r0 : r0 + _BAND], block.valid[r0 : r0 + _BAND])
-        if not band.valid.any():
-            continue
-        grid, k, s, valid = _grid(src, transformer, band)
-        pixel, cell, area, whole = pixel_pieces(*grid, k, valid, level)
-        if s > 1:  # sub-pixels back to their pixels
-            sub_r, sub_c = np.divmod(pixel, cols * s)
-            pixel = (sub_r // s) * cols + sub_c // s
-            split = True
-        pixel = pixel + r0 * cols
-        np.add.at(total, pixel, area)
-        found.append((pixel, cell, area))
-    if not found or all(f[0].size == 0 for f in found):
+    for r0 in range(0, rows, _TILE):
+        for c0 in range(0, cols, _TILE):
+            valid = block.valid[r0 : r0 + _TILE, c0 : c0 + _TILE]
+            if not valid.any():
+                continue
+            tile = Block(block.row + r0, block.col + c0, block.data[:, r0 : r0 + _TILE, c0 : c0 + _TILE], valid)
+            grid, k, s, sub_valid = _grid(src, transformer, tile)
+            pixel, cell, area, _ = pixel_pieces(*grid, k, sub_valid, level)
+            t_rows, t_cols = valid.shape
+            sub_r, sub_c = np.divmod(pixel, t_cols * s)  # (sub-)pixels of the tile back to the block's pixels
+            pixel = (r0 + sub_r // s) * cols + c0 + sub_c // s
+            split |= s > 1
+            np.add.at(total, pixel, area)
+            found.append((pixel, cell, area))
+    if not any(f[0].size for f in found):
         return None
-    pixel, cell, area = (np.concatenate([f[i] for f in found]) for i in range(3))
+    order = np.argsort(np.concatenate([f[0] for f in found]), kind="stable")  # each pixel's pieces together
+    pixel, cell, area = (np.concatenate([f[i] for f in found])[order] for i in range(3))
     values = block.data.reshape(block.data.shape[0], rows * cols)
     return block_partials(pixel, cell, area, total, values, mode, density, split=split)
 
