@@ -35,10 +35,12 @@ LEVEL, BLOCK, MODE = 11, 12, "mean"
 WRITER = textwrap.dedent(
     """
     import sys
+    import time
     from dggs.storage import CellStore
 
     def tick(n):
         print("block", n, flush=True)
+        time.sleep(0.02)  # blocks of 12 x 12 pixels take microseconds: let the kill land before the end
 
     with CellStore(sys.argv[1]) as store:
         store.ingest_raster(sys.argv[2], int(sys.argv[3]), mode=sys.argv[4], block_size=int(sys.argv[5]),
