@@ -200,15 +200,10 @@ def _centres(grid: RasterSource, transformer: Any, block: Any, ids: np.ndarray, 
 
 def _areas(grid: RasterSource, transformer: Any, block: Any, ids: np.ndarray, vals: np.ndarray,
            level: int) -> tuple[int, int, np.ndarray]:
-    from dggs.index._pixels import pixel_pieces
-    from dggs.raster import _grid  # the edge points raster_to_cells cuts along: the same pieces
+    from dggs._raster_pieces import block_pieces  # the pieces raster_to_cells cuts
 
     rows, cols = block.shape
-    edges, k, s, valid = _grid(grid, transformer, block)
-    pixel, cell, area, _ = pixel_pieces(*edges, k, valid, level)
-    if s > 1:  # sub-pixels back to their pixels
-        sub_r, sub_c = np.divmod(pixel, cols * s)
-        pixel = (sub_r // s) * cols + sub_c // s
+    pixel, cell, area, _ = block_pieces(grid, transformer, block, level)
     has, value = _lookup(ids, vals, cell)
     weight = np.bincount(pixel[has], weights=area[has], minlength=rows * cols)
     total = np.bincount(pixel[has], weights=area[has] * value[has], minlength=rows * cols)

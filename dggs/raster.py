@@ -21,12 +21,12 @@ import numpy as np
 from dggs._raster_blocks import each_block, tidy_classes, windows
 from dggs._raster_burn import cells_to_raster
 from dggs._raster_frames import center_frame, to_xarray, weighted_frame
-from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, to_wgs84
-from dggs._raster_source import Block, RasterError, RasterSource, open_raster
+from dggs._raster_grid import to_wgs84
+from dggs._raster_pieces import block_pieces
+from dggs._raster_source import RasterError, RasterSource, open_raster
 from dggs._raster_stats import Partials, block_partials, combine
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_level
-from dggs.index._pixels import pixel_pieces
 
 __all__ = ["raster_to_cells", "cells_to_raster", "MODES", "OUTPUTS", "RasterError"]
 
@@ -179,62 +179,12 @@ def finish(parts: list[Any], bands: list[int], level: int, mode: str, as_str: bo
     return weighted_frame(combine(parts, len(bands)), bands, level, mode, as_str)
 
 
-def _grid(src: RasterSource, transformer: Any, block: Any) -> tuple[tuple[np.ndarray, ...], int, int, np.ndarray]:
-    """The block's edge points with the right density, its sub-pixel factor and the sub-pixels' validity."""
-    rows, cols = block.shape
-    grid = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, 1)
-    degrees = pixel_degrees(*grid, 1)
-    s = split_factor(degrees)
-    k = points_per_edge(chord_error(transformer, src.transform @ _scale(s), block.row * s, block.col * s, rows * s,
-                                    cols * s))
-    if k > 1 or s > 1:
-        grid = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, k, s)
-    valid = np.repeat(np.repeat(block.valid, s, axis=0), s, axis=1)
-    hbad, vbad = np.isnan(grid[0]), np.isnan(grid[2])
-    if hbad.any() or vbad.any():  # pixels the CRS cannot put on the globe
-        n_rows, n_cols = valid.shape
-        top = hbad[:, :-1].reshape(n_rows + 1, n_cols, k).any(axis=2) | hbad[:, k::k]
-        side = vbad[:-1].reshape(n_rows, k, n_cols + 1).any(axis=1) | vbad[k::k]
-        valid = valid & ~(top[:-1] | top[1:] | side[:, :-1] | side[:, 1:])
-        grid = (np.nan_to_num(grid[0]), np.nan_to_num(grid[1]), np.nan_to_num(grid[2]), np.nan_to_num(grid[3]))
-    return grid, k, s, valid
-
-
-def _scale(s: int) -> Any:
-    from affine import Affine
-
-    return Affine.scale(1.0 / s)
-
-
-#: A block is cut in tiles of this many pixels a side, each with its own points per edge: pixels bend
-#: most near the poles and near the faces' centres, and one sample for a whole block would draw every
-#: pixel with the most bent ones' hundreds of points.
-_TILE = 32
-
-
 def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Partials | None:
-    rows, cols = block.shape
-    found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
-    total = np.zeros(rows * cols)
-    split = False
-    for r0 in range(0, rows, _TILE):
-        for c0 in range(0, cols, _TILE):
-            valid = block.valid[r0 : r0 + _TILE, c0 : c0 + _TILE]
-            if not valid.any():
-                continue
-            tile = Block(block.row + r0, block.col + c0, block.data[:, r0 : r0 + _TILE, c0 : c0 + _TILE], valid)
-            grid, k, s, sub_valid = _grid(src, transformer, tile)
-            pixel, cell, area, _ = pixel_pieces(*grid, k, sub_valid, level)
-            t_rows, t_cols = valid.shape
-            sub_r, sub_c = np.divmod(pixel, t_cols * s)  # (sub-)pixels of the tile back to the block's pixels
-            pixel = (r0 + sub_r // s) * cols + c0 + sub_c // s
-            split |= s > 1
-            np.add.at(total, pixel, area)
-            found.append((pixel, cell, area))
-    if not any(f[0].size for f in found):
+    pixel, cell, area, split = block_pieces(src, transformer, block, level)
+    if not pixel.size:
         return None
-    order = np.argsort(np.concatenate([f[0] for f in found]), kind="stable")  # each pixel's pieces together
-    pixel, cell, area = (np.concatenate([f[i] for f in found])[order] for i in range(3))
+    rows, cols = block.shape
+    total = np.bincount(pixel, weights=area, minlength=rows * cols)
     values = block.data.reshape(block.data.shape[0], rows * cols)
     return block_partials(pixel, cell, area, total, values, mode, density, split=split)
 

@@ -71,11 +71,13 @@ def pixel_pieces(
     k = edge_points(k)
     arrays = [np.ascontiguousarray(x, dtype=np.float64) for x in (hlat, hlng, vlat, vlng)]
     valid = np.ascontiguousarray(valid, dtype=np.bool_)
-    pixel, cell, area = kpx.grid_pieces(arrays[0], arrays[1], arrays[2], arrays[3], k, valid, level)
-    total = np.zeros(valid.size)
-    np.add.at(total, pixel, area)
+    pixel, cell, area, coarse = kpx.grid_pieces(arrays[0], arrays[1], arrays[2], arrays[3], k, valid, level)
+    total = np.bincount(pixel, weights=area, minlength=valid.size)
     if k >= 2 and k % 2 == 0 and pixel.size:  # Richardson: the area from every other edge point too
-        coarse = _ring_areas(arrays, k, valid, step=2)  # the pieces add up to the area with every point
+        across = valid.ravel() & np.isnan(coarse)  # pixels across a kink: the kernel leaves them to a pass of their own
+        if across.any():
+            coarse[across] = _ring_areas(arrays, k, across.reshape(valid.shape), step=2)[across]
+        coarse = np.nan_to_num(coarse)  # the pieces add up to the area with every point
         better = np.where(total > 0, (4.0 * total - coarse) / 3.0, 0.0)
         area = area * np.divide(better, total, out=np.ones_like(total), where=total > 0)[pixel]
         total = better
@@ -101,7 +103,5 @@ def _ring_areas(arrays: list[np.ndarray], k: int, valid: np.ndarray, step: int) 
     """Planar area of each pixel's ring, every ``step``-th edge point, summed over faces (kernel)."""
     hlat, hlng, vlat, vlng = arrays
     h, g, v, w = (np.ascontiguousarray(x) for x in (hlat[:, ::step], hlng[:, ::step], vlat[::step], vlng[::step]))
-    pixel, _, area = kpx.grid_pieces(h, g, v, w, k // step, valid, 0)
-    out = np.zeros(valid.size)
-    np.add.at(out, pixel, area)
-    return out
+    pixel, _, area, _ = kpx.grid_pieces(h, g, v, w, k // step, valid, 0)
+    return np.bincount(pixel, weights=area, minlength=valid.size)

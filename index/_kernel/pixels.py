@@ -210,6 +210,10 @@ def _ring(r, col, k, hu, vu, ring):
     """Indices into the flattened point arrays of pixel (r, col)'s ring: top, right, bottom, left edges."""
     hw = hu.shape[1]
     vw = vu.shape[1]
+    if k == 1:  # the four corners, all on the lines of constant row (the others are the same points)
+        ring[0], ring[1] = r * hw + col, r * hw + col + 1
+        ring[2], ring[3] = (r + 1) * hw + col + 1, (r + 1) * hw + col
+        return 4
     m = 0
     for j in range(k):  # top edge, left to right
         ring[m] = r * hw + col * k + j
@@ -235,12 +239,15 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
     ``vlng`` (R k + 1, C + 1) along the C + 1 of constant column (degrees,
     WGS84; each corner in both).  Pixel (r, c) is number ``r C + c``; pixels
     where ``valid`` (R, C) is False are left out.  Returns ``(pixel, cell,
-    area)``, each pixel's pieces together in pixel order, areas in the
-    unit-sphere face plane (:data:`FACE_AREA` a face).  A pixel must lie within
-    :data:`MAX_RADIUS` of its corners.
+    area, coarse)``, each pixel's pieces together in pixel order, areas in the
+    unit-sphere face plane (:data:`FACE_AREA` a face); ``coarse`` (R C) is,
+    for an even ``k``, the planar area of each pixel drawn through every other
+    of its points (for the extrapolation of :func:`dggs.index._pixels.pixel_pieces`),
+    NaN for pixels across a kink of the plane (and for all with an odd ``k``).
+    A pixel must lie within :data:`MAX_RADIUS` of its corners.
     """
     rows, cols = valid.shape
-    npts = hlat.size + vlat.size
+    npts = hlat.size + (vlat.size if k > 1 else 0)  # with one point an edge, the corners are all in hlat
     ux, uy, uz = np.empty(npts), np.empty(npts), np.empty(npts)
     fx, fy = np.empty(npts), np.empty(npts)
     faces = np.empty(npts, np.int64)
@@ -273,6 +280,9 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
     p = np.empty(max(16, 2 * rows * cols), np.int64)
     c = np.empty(p.shape[0], np.uint64)
     a = np.empty(p.shape[0], np.float64)
+    coarse = np.full(rows * cols, np.nan)
+    root_tri = np.empty(6)
+    half = m // 2 if k >= 2 and k % 2 == 0 else 0
     n = 0
     for r in range(rows):
         for col in range(cols):
@@ -291,6 +301,10 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                 one_region &= regions[q] == regions[ring[0]]
                 one_cell &= cells[q] == rc[0]
             if one_region:  # in one sector of one face, where the plane does not bend
+                if half:  # the ring through every other point (corners included)
+                    for j in range(half):
+                        qx[j], qy[j] = px[2 * j], py[2 * j]
+                    coarse[pixel] = abs(area(qx, qy, half))
                 if one_cell:  # every vertex in one cell: the pixel lies in it (cells are convex)
                     got = abs(area(px, py, m))
                     if got > 0.0:
@@ -300,8 +314,11 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                     continue
                 level = _common(rc, m, target)
                 root = bits.parent_at(rc[0], level)
-                tri = face_tri if level == 0 else np.array(triangle(root)[1:])
-                p, c, a, n = descend(root, level, tri, target, px, py, m, pixel, p, c, a, n, kx, ky, kn, tx, ty, tri6,
+                if level == 0:
+                    root_tri[:] = face_tri
+                else:
+                    _, root_tri[0], root_tri[1], root_tri[2], root_tri[3], root_tri[4], root_tri[5] = triangle(root)
+                p, c, a, n = descend(root, level, root_tri, target, px, py, m, pixel, p, c, a, n, kx, ky, kn, tx, ty, tri6,
                                      ids, nxt)
                 continue
             for g in range(_CENTRES.shape[0]):  # across sectors or faces: the faces near a vertex
@@ -332,4 +349,4 @@ def grid_pieces(hlat, hlng, vlat, vlng, k: int, valid: np.ndarray, target: int):
                 px[:got_n], py[:got_n] = tx[:got_n], ty[:got_n]
                 p, c, a, n = descend(bits.base_cell(g), 0, face_tri, target, px, py, got_n, pixel, p, c, a, n,
                                      kx, ky, kn, tx, ty, tri6, ids, nxt)
-    return p[:n], c[:n], a[:n]
+    return p[:n], c[:n], a[:n], coarse

@@ -43,7 +43,7 @@ try:  # the optional raster extra
     import rasterio  # noqa: F401
 
     MODULES += ["dggs.raster", "dggs._raster_blocks", "dggs._raster_frames", "dggs._raster_burn", "dggs._raster_parquet",
-                "dggs._raster_grid", "dggs._raster_center", "dggs.index._pixels", "dggs.storage.raster_ingest",
+                "dggs._raster_grid", "dggs._raster_pieces", "dggs._raster_center", "dggs.index._pixels", "dggs.storage.raster_ingest",
                 "dggs.storage.store_raster"]
 except ImportError:
     pass

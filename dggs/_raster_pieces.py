@@ -1,0 +1,109 @@
+"""A block's pixels cut into their pieces in cells (part of :mod:`dggs.raster` and ``cells_to_raster``).
+
+Pixels bend most near the poles and near the faces' centres, so a block is
+measured in tiles of :data:`TILE` pixels a side, each with the points per
+edge its own pixels need (:func:`dggs._raster_grid.points_per_edge`); the
+tiles wanting the same number are then cut together, one kernel call over
+the smallest window holding them (most blocks: one call), so Python's cost is
+a block's, not a tile's.  Pixels wider than the kernel takes are cut into
+``s x s`` sub-pixels first, ``s`` the block's (which changes no area).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, tile_chord_errors
+from dggs._raster_source import Block, RasterSource
+from dggs.index._pixels import pixel_pieces
+
+__all__ = ["TILE", "block_pieces", "grid_window", "scale"]
+
+#: Pixels a side of the tiles a block's points per edge are chosen for.
+TILE = 32
+
+
+def scale(s: int) -> Any:
+    """The affine transform of a grid cut ``s`` times finer."""
+    from affine import Affine
+
+    return Affine.scale(1.0 / s)
+
+
+def _split(src: RasterSource, transformer: Any, block: Block) -> int:
+    rows, cols = block.shape
+    return split_factor(pixel_degrees(*edge_grid(transformer, src.transform, block.row, block.col, rows, cols, 1), 1))
+
+
+def _tile_points(src: RasterSource, transformer: Any, block: Block, s: int) -> np.ndarray:
+    """Points per edge of each tile of the block (0 for a tile without valid pixels)."""
+    rows, cols = block.shape
+    tiles_r, tiles_c = -(-rows // TILE), -(-cols // TILE)
+    padded = np.zeros((tiles_r * TILE, tiles_c * TILE), bool)
+    padded[:rows, :cols] = block.valid
+    has = np.asarray(padded.reshape(tiles_r, TILE, tiles_c, TILE).any(axis=(1, 3)))
+    transform = src.transform @ scale(s)
+    errors = tile_chord_errors(transformer, transform, block.row * s, block.col * s, rows * s, cols * s, TILE * s)
+    ks = np.zeros((tiles_r, tiles_c), np.int64)
+    for i, j in zip(*np.nonzero(has), strict=True):
+        err = errors[i, j]
+        if not np.isfinite(err):  # no smooth sampled edge: the tile measured again, finer
+            r, c = block.row * s + i * TILE * s, block.col * s + j * TILE * s
+            err = chord_error(transformer, transform, r, c, min(TILE * s, rows * s - i * TILE * s),
+                              min(TILE * s, cols * s - j * TILE * s))
+        ks[i, j] = points_per_edge(err)
+    return ks
+
+
+def grid_window(src: RasterSource, transformer: Any, block: Block, k: int, s: int) -> tuple[
+    tuple[np.ndarray, ...], np.ndarray
+]:
+    """The window's edge points, ``k`` an edge and ``s x s`` sub-pixels a pixel, and the sub-pixels' validity.
+
+    Sub-pixels with a point the CRS cannot put on the globe are left out.
+    """
+    rows, cols = block.shape
+    grid = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, k, s)
+    valid = np.repeat(np.repeat(block.valid, s, axis=0), s, axis=1) if s > 1 else block.valid
+    hbad, vbad = np.isnan(grid[0]), np.isnan(grid[2])
+    if hbad.any() or vbad.any():
+        n_rows, n_cols = valid.shape
+        top = hbad[:, :-1].reshape(n_rows + 1, n_cols, k).any(axis=2) | hbad[:, k::k]
+        side = vbad[:-1].reshape(n_rows, k, n_cols + 1).any(axis=1) | vbad[k::k]
+        valid = valid & ~(top[:-1] | top[1:] | side[:, :-1] | side[:, 1:])
+        grid = (np.nan_to_num(grid[0]), np.nan_to_num(grid[1]), np.nan_to_num(grid[2]), np.nan_to_num(grid[3]))
+    return grid, valid
+
+
+def block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) -> tuple[
+    np.ndarray, np.ndarray, np.ndarray, bool
+]:
+    """``(pixel, cell, area, split)``: the block's valid pixels' pieces in cells at ``level``.
+
+    ``pixel`` is row-major in the block, each pixel's pieces together in
+    pixel order; ``area`` in m²; ``split`` whether pixels were cut into
+    sub-pixels (their pieces then come in sub-pixel order).
+    """
+    rows, cols = block.shape
+    s = _split(src, transformer, block)
+    ks = _tile_points(src, transformer, block, s)
+    found = []
+    for k in np.unique(ks[ks > 0]):
+        tr, tc = np.nonzero(ks == k)
+        r0, r1 = int(tr.min()) * TILE, min(rows, (int(tr.max()) + 1) * TILE)
+        c0, c1 = int(tc.min()) * TILE, min(cols, (int(tc.max()) + 1) * TILE)
+        mine = np.repeat(np.repeat(ks == k, TILE, axis=0), TILE, axis=1)[r0:r1, c0:c1]
+        window = Block(block.row + r0, block.col + c0, block.data, block.valid[r0:r1, c0:c1] & mine)
+        grid, valid = grid_window(src, transformer, window, int(k), s)
+        pixel, cell, area, _ = pixel_pieces(*grid, int(k), valid, level)
+        sub_r, sub_c = np.divmod(pixel, (c1 - c0) * s)  # (sub-)pixels of the window back to the block's pixels
+        found.append(((r0 + sub_r // s) * cols + c0 + sub_c // s, cell, area))
+    if len(found) == 1 and s == 1:  # in pixel order already
+        return (*found[0], False)
+    if not found:
+        return np.zeros(0, np.int64), np.zeros(0, np.uint64), np.zeros(0), s > 1
+    order = np.argsort(np.concatenate([f[0] for f in found]), kind="stable")  # each pixel's pieces together
+    pixel, cell, area = (np.concatenate([f[i] for f in found])[order] for i in range(3))
+    return pixel, cell, area, s > 1
