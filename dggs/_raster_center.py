@@ -19,7 +19,7 @@ from shapely.geometry import box
 
 import dggs
 
-from ._raster_grid import edge_grid, pixel_degrees
+from ._raster_grid import arc_degrees, lnglat
 
 __all__ = ["centre_values", "outline_box"]
 
@@ -50,6 +50,18 @@ def outline_box(lat: np.ndarray, lng: np.ndarray, margin: float) -> Any:
     return box(west, low, east, high)
 
 
+def _widest_pixel(src: Any, transformer: Any, block: Any, ring_lat: np.ndarray, ring_lng: np.ndarray) -> float:
+    """Degrees of arc of the widest pixel side: along the outline, and over a 9 x 9 sample of the block's pixels."""
+    rows, cols = block.shape
+    r = block.row + np.unique(np.linspace(0, rows - 1, min(rows, 9)).astype(np.int64))
+    c = block.col + np.unique(np.linspace(0, cols - 1, min(cols, 9)).astype(np.int64))
+    rr, cc = np.meshgrid(r.astype(np.float64), c.astype(np.float64), indexing="ij")
+    lat, lng = lnglat(transformer, src.transform, cc.reshape(-1, 1) + [0, 1, 1, 0], rr.reshape(-1, 1) + [0, 0, 1, 1])
+    sides = arc_degrees(lat, lng, np.roll(lat, -1, axis=1), np.roll(lng, -1, axis=1))
+    outline = arc_degrees(ring_lat, ring_lng, np.roll(ring_lat, -1), np.roll(ring_lng, -1))
+    return max(sides, outline)
+
+
 @functools.lru_cache(maxsize=16)
 def _from_wgs84(crs_wkt: str) -> Any:
     from pyproj import CRS, Transformer
@@ -60,12 +72,15 @@ def _from_wgs84(crs_wkt: str) -> Any:
 def centre_values(src: Any, transformer: Any, block: Any, level: int) -> tuple[np.ndarray, np.ndarray] | None:
     """The cells whose centre lies on a pixel of ``block`` holding data, and those pixels' values (bands, n)."""
     rows, cols = block.shape
-    hlat, hlng, vlat, vlng = edge_grid(transformer, src.transform, block.row, block.col, rows, cols, 1)
-    ring_lat = np.concatenate([hlat[0], vlat[1:, -1], hlat[-1, ::-1][1:], vlat[::-1, 0][1:-1]])
-    ring_lng = np.concatenate([hlng[0], vlng[1:, -1], hlng[-1, ::-1][1:], vlng[::-1, 0][1:-1]])
+    r0, c0 = float(block.row), float(block.col)
+    across, down = np.arange(cols + 1.0), np.arange(rows + 1.0)
+    # the block's outline through every pixel corner on it, clockwise from the top-left corner
+    ring_c = c0 + np.concatenate([across, np.full(rows, cols), across[::-1][1:], np.zeros(rows - 1)])
+    ring_r = r0 + np.concatenate([np.zeros(cols + 1), down[1:], np.full(cols, rows), down[::-1][1:-1]])
+    ring_lat, ring_lng = lnglat(transformer, src.transform, ring_c, ring_r)
     if not np.isfinite(ring_lat).any():
         return None
-    margin = 2.0 * pixel_degrees(hlat, hlng, vlat, vlng, 1)
+    margin = 2.0 * _widest_pixel(src, transformer, block, ring_lat, ring_lng)
     ids = np.asarray(dggs.polygon_to_cells(outline_box(ring_lat, ring_lng, margin), level, as_int=True))
     if ids.size == 0:
         return None

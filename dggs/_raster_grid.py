@@ -22,7 +22,7 @@ import numpy as np
 
 from dggs.index._pixels import MAX_PIXEL_DEGREES
 
-__all__ = ["TOLERANCE", "chord_error", "tile_chord_errors", "points_per_edge", "split_factor", "edge_grid", "pixel_degrees", "to_wgs84"]
+__all__ = ["TOLERANCE", "arc_degrees", "lnglat", "chord_error", "tile_chord_errors", "points_per_edge", "split_factor", "edge_grid", "pixel_degrees", "to_wgs84"]
 
 #: The error a piece may have, as a fraction of its pixel's area.  1e-6 cost 3 times the points of 1e-5
 #: (a global quarter-degree raster: 28 points an edge instead of 9) for no change a user could see, the
@@ -66,7 +66,7 @@ def chord_error(transformer: Any, transform: Any, row: int, col: int, rows: int,
     dr = np.concatenate([0 * t, t, 1 + 0 * t, 1 - t])
     dc = np.concatenate([t, 1 + 0 * t, 1 - t, 0 * t])
     for scale in (1.0, 0.25, 0.0625):
-        lat, lng = _lnglat(transformer, transform, cc.reshape(-1, 1) + scale * dc, rr.reshape(-1, 1) + scale * dr)
+        lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + scale * dc, rr.reshape(-1, 1) + scale * dr)
         errors = chord_errors(lat, lng)
         if np.isfinite(errors).any():
             return float(np.nanmax(errors)) / scale
@@ -105,7 +105,7 @@ def tile_chord_errors(transformer: Any, transform: Any, row: int, col: int, rows
     t = np.array([0.0, 0.25, 0.5, 0.75])  # as chord_error: 16 points round each pixel
     dr = np.concatenate([0 * t, t, 1 + 0 * t, 1 - t])
     dc = np.concatenate([t, 1 + 0 * t, 1 - t, 0 * t])
-    lat, lng = _lnglat(transformer, transform, cc.reshape(-1, 1) + dc, rr.reshape(-1, 1) + dr)
+    lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + dc, rr.reshape(-1, 1) + dr)
     errors = chord_errors(lat, lng)
     which = (tr[:, None] * (tc.max() + 1) + tc[None, :]).ravel()
     out = np.full((tr.max() + 1) * (tc.max() + 1), -np.inf)
@@ -129,7 +129,7 @@ def to_wgs84(crs: Any) -> Any:
     return Transformer.from_crs(crs, wgs84, always_xy=True)
 
 
-def _lnglat(transformer: Any, transform: Any, cols: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def lnglat(transformer: Any, transform: Any, cols: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """WGS84 (lat, lng) of fractional pixel positions; NaN where the CRS cannot be transformed."""
     a, b, c, d, e, f = transform.a, transform.b, transform.c, transform.d, transform.e, transform.f
     x = a * cols + b * rows + c
@@ -152,20 +152,29 @@ def edge_grid(transformer: Any, transform: Any, row: int, col: int, rows: int, c
     hc = (col + np.arange(n_cols * k + 1) / (s * k))[None, :] + np.zeros((n_rows + 1, 1))
     vr = (row + np.arange(n_rows * k + 1) / (s * k))[:, None] + np.zeros((1, n_cols + 1))
     vc = (col + np.arange(n_cols + 1) / s)[None, :] + np.zeros((n_rows * k + 1, 1))
-    hlat, hlng = _lnglat(transformer, transform, hc, hr)
-    vlat, vlng = _lnglat(transformer, transform, vc, vr)
+    hlat, hlng = lnglat(transformer, transform, hc, hr)
+    vlat, vlng = lnglat(transformer, transform, vc, vr)
     return hlat, hlng, vlat, vlng
+
+
+def arc_degrees(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.ndarray) -> float:
+    """The longest great-circle arc, in degrees, between paired points (NaN pairs skipped; 0 for none).
+
+    Examples
+    --------
+    >>> arc_degrees(np.array([0.0, 0.0]), np.array([0.0, 10.0]), np.array([1.0, 0.0]), np.array([0.0, 12.0]))
+    2.0
+    """
+    p1, p2 = np.radians(lat1), np.radians(lat2)
+    h = np.sin((p2 - p1) / 2) ** 2 + np.cos(p1) * np.cos(p2) * np.sin(np.radians(lng2 - lng1) / 2) ** 2
+    with np.errstate(invalid="ignore"):
+        out = np.degrees(2 * np.arcsin(np.sqrt(np.clip(h, 0, 1))))
+    return float(np.nanmax(out)) if np.isfinite(out).any() else 0.0
 
 
 def pixel_degrees(hlat: np.ndarray, hlng: np.ndarray, vlat: np.ndarray, vlng: np.ndarray, k: int) -> float:
     """The longest pixel side in degrees of arc (great-circle), over a grid of :func:`edge_grid` (NaN skipped)."""
-    def arc(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.ndarray) -> float:
-        p1, p2 = np.radians(lat1), np.radians(lat2)
-        h = np.sin((p2 - p1) / 2) ** 2 + np.cos(p1) * np.cos(p2) * np.sin(np.radians(lng2 - lng1) / 2) ** 2
-        with np.errstate(invalid="ignore"):
-            out = np.degrees(2 * np.arcsin(np.sqrt(np.clip(h, 0, 1))))
-        return float(np.nanmax(out)) if np.isfinite(out).any() else 0.0
-
+    arc = arc_degrees
     across = arc(hlat[:, :-k:k], hlng[:, :-k:k], hlat[:, k::k], hlng[:, k::k]) if hlat.shape[1] > k else 0.0
     down = arc(vlat[:-k:k], vlng[:-k:k], vlat[k::k], vlng[k::k]) if vlat.shape[0] > k else 0.0
     return max(across, down)
