@@ -9,6 +9,7 @@ Part of :mod:`dggs.raster` (the optional extra ``raster``).
 
 from __future__ import annotations
 
+import contextlib
 import os
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
@@ -116,6 +117,21 @@ def _bands(band: Any, count: int, name: str) -> list[int]:
     return [int(b) for b in chosen]
 
 
+#: GDAL's block cache while dggs reads, unless the user sets GDAL_CACHEMAX: each window is read once, in
+#: order, so cached blocks are never read again, and GDAL's default (5 % of the machine's memory) grew a
+#: process binning a 1.8 GB raster by 1.2 GB.
+BLOCK_CACHE_BYTES = 64 * 2**20
+
+
+def _small_block_cache() -> Any:
+    import rasterio
+    from rasterio.env import getenv, hasenv
+
+    if "GDAL_CACHEMAX" in os.environ or (hasenv() and "GDAL_CACHEMAX" in getenv()):
+        return contextlib.nullcontext()
+    return rasterio.Env(GDAL_CACHEMAX=BLOCK_CACHE_BYTES)
+
+
 def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any = None) -> RasterSource:
     """Open a raster file (path) or take an xarray DataArray (with a CRS, through rioxarray).
 
@@ -136,7 +152,8 @@ def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any =
     if not os.path.exists(name) and "://" not in name and not name.startswith("/vsi"):
         raise RasterError(f"no raster file {name!r}")
     try:
-        dataset = rasterio.open(name)
+        with _small_block_cache():
+            dataset = rasterio.open(name)
     except RasterioIOError as exc:
         raise RasterError(f"{name} is not a raster GDAL can read ({exc})") from None
     if dataset.crs is None:
@@ -151,8 +168,9 @@ def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any =
 
         win = Window(col, row, cols, rows)
         try:
-            data = dataset.read(bands, window=win)
-            masks = dataset.read_masks(bands, window=win) if nodata is None else None
+            with _small_block_cache():
+                data = dataset.read(bands, window=win)
+                masks = dataset.read_masks(bands, window=win) if nodata is None else None
         except Exception as exc:  # noqa: BLE001 - GDAL's errors on a damaged file: name it
             raise RasterError(f"{name} cannot be read at rows {row}..{row + rows} ({exc})") from None
         return data, _valid(data, values, masks)
