@@ -19,10 +19,13 @@ from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_
 from dggs._raster_source import Block, RasterSource
 from dggs.index._pixels import pixel_pieces
 
-__all__ = ["TILE", "block_pieces", "grid_window", "scale"]
+__all__ = ["TILE", "MOST_POINTS", "block_pieces", "grid_window", "scale"]
 
 #: Pixels a side of the tiles a block's points per edge are chosen for.
 TILE = 32
+#: Edge points one kernel call draws at most (each costs about 64 bytes of the kernel's arrays and 40 of
+#: the grid's): a call is a band's tiles of one ``k``, fewer where ``k`` is large.
+MOST_POINTS = 2**19
 
 
 def scale(s: int) -> Any:
@@ -90,20 +93,25 @@ def block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) 
     s = _split(src, transformer, block)
     ks = _tile_points(src, transformer, block, s)
     found = []
-    for k in np.unique(ks[ks > 0]):
-        tr, tc = np.nonzero(ks == k)
-        r0, r1 = int(tr.min()) * TILE, min(rows, (int(tr.max()) + 1) * TILE)
-        c0, c1 = int(tc.min()) * TILE, min(cols, (int(tc.max()) + 1) * TILE)
-        mine = np.repeat(np.repeat(ks == k, TILE, axis=0), TILE, axis=1)[r0:r1, c0:c1]
-        window = Block(block.row + r0, block.col + c0, block.data, block.valid[r0:r1, c0:c1] & mine)
-        grid, valid = grid_window(src, transformer, window, int(k), s)
-        pixel, cell, area, _ = pixel_pieces(*grid, int(k), valid, level)
-        sub_r, sub_c = np.divmod(pixel, (c1 - c0) * s)  # (sub-)pixels of the window back to the block's pixels
-        found.append(((r0 + sub_r // s) * cols + c0 + sub_c // s, cell, area))
-    if len(found) == 1 and s == 1:  # in pixel order already
-        return (*found[0], False)
+    for i in range(ks.shape[0]):  # a band of tiles at a time: the kernel's arrays grow with the points it draws
+        r0, r1 = i * TILE, min(rows, (i + 1) * TILE)
+        for k in np.unique(ks[i][ks[i] > 0]):
+            tc = np.nonzero(ks[i] == k)[0]
+            step = max(1, MOST_POINTS // (2 * int(k) * (TILE * s) ** 2))  # tiles a call: pole tiles draw hundreds
+            for first in range(int(tc.min()), int(tc.max()) + 1, step):
+                c0, c1 = first * TILE, min(cols, (first + step) * TILE)
+                mine = np.repeat(ks[i] == k, TILE)[c0:c1]
+                window = Block(block.row + r0, block.col + c0, block.data, block.valid[r0:r1, c0:c1] & mine)
+                if not window.valid.any():
+                    continue
+                grid, valid = grid_window(src, transformer, window, int(k), s)
+                pixel, cell, area, _ = pixel_pieces(*grid, int(k), valid, level)
+                sub_r, sub_c = np.divmod(pixel, (c1 - c0) * s)  # (sub-)pixels of the window back to the block's
+                found.append(((r0 + sub_r // s) * cols + c0 + sub_c // s, cell, area))
     if not found:
         return np.zeros(0, np.int64), np.zeros(0, np.uint64), np.zeros(0), s > 1
-    order = np.argsort(np.concatenate([f[0] for f in found]), kind="stable")  # each pixel's pieces together
-    pixel, cell, area = (np.concatenate([f[i] for f in found])[order] for i in range(3))
+    pixel, cell, area = (np.concatenate([f[i] for f in found]) for i in range(3))
+    if s > 1 or (pixel.size > 1 and (pixel[1:] < pixel[:-1]).any()):  # sub-pixels, or a band of several k
+        order = np.argsort(pixel, kind="stable")  # each pixel's pieces together
+        pixel, cell, area = pixel[order], cell[order], area[order]
     return pixel, cell, area, s > 1
