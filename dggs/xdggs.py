@@ -4,8 +4,9 @@ Importing this module registers the grid under the name ``"dggs_split26"`` (:dat
 so that ``xdggs.decode(ds)`` builds a :class:`Split26Index` on a cell-id coordinate whose attributes are
 ``{"grid_name": "dggs_split26", "level": L}`` and the ``ds.dggs`` accessor works on it (``cell_centers``,
 ``cell_boundaries``, ``sel_latlon``, ``zoom_to``, ``assign_latlon_coords``, ``explore``, ``encode``).
-xdggs has no plug-in discovery: its grids live in a registry that is filled by imports, so
-``import dggs.xdggs`` must run before decoding (``import dggs`` alone does not import xarray or xdggs).
+xdggs (0.6 and its main branch) has no plug-in discovery (no entry-point group): its grids live in a
+registry that imports fill, so ``import dggs.xdggs`` must run before decoding (``import dggs`` alone does not
+import xarray or xdggs).
 
 Cell ids are the uint64 ids of :func:`dggs.latlng_to_cell` (``as_int=True``) or the string ids; the
 grid parameter ``id_format`` (``"int"`` or ``"str"``) says which, and is inferred from the coordinate's
@@ -23,15 +24,18 @@ Split26Info(level=5, ellipsoid='WGS84', id_format='int')
 
 from __future__ import annotations
 
+import dataclasses
 import json
+import math
 from collections.abc import Hashable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
 
 try:
     import xarray as xr
+    from xdggs.ellipsoid import Ellipsoid, Sphere
     from xdggs.grid import DGGSInfo, translate_parameters
     from xdggs.index import DGGSIndex
     from xdggs.utils import register_dggs
@@ -52,6 +56,8 @@ GEOARROW_DENSIFY = 16
 """Points per curved edge of the ``"geoarrow"`` boundaries (what ``explore`` draws) unless told otherwise."""
 
 _ID_FORMATS = ("int", "str")
+_OPTIONAL = frozenset({"id_format", "ellipsoid"})
+_WGS84_AXES = {"semimajor_axis": 6378137.0, "inverse_flattening": 298.257223563}
 
 
 def _parse_level(value: Any) -> int:
@@ -67,10 +73,28 @@ def _parse_level(value: Any) -> int:
 
 
 def _parse_ellipsoid(value: Any) -> str:
-    name = value.get("name") if isinstance(value, Mapping) else value
-    if not isinstance(name, str) or name.upper() != "WGS84":
-        raise ValueError(f"the {GRID_NAME} grid is defined on WGS84 only, got ellipsoid={value!r}")
-    return "WGS84"
+    """``"WGS84"`` for any spelling of WGS84 xdggs has: a name, an ``Ellipsoid`` or its mapping form."""
+    if isinstance(value, Ellipsoid | Sphere):
+        value = value.to_dict()
+    if isinstance(value, str):
+        if value.upper() == "WGS84":
+            return "WGS84"
+    elif isinstance(value, Mapping):
+        name = value.get("name")
+        known = set(value) <= {"name", *_WGS84_AXES}
+        named = name is None or (isinstance(name, str) and name.upper() == "WGS84")
+        try:
+            axes_ok = all(math.isclose(float(value[k]), v, rel_tol=1e-12) for k, v in _WGS84_AXES.items())
+        except (KeyError, TypeError, ValueError):
+            axes_ok = False
+        if known and named and (axes_ok or (set(value) == {"name"} and name is not None)):
+            return "WGS84"
+    raise ValueError(f"the {GRID_NAME} grid is defined on WGS84 only, got ellipsoid={value!r}")
+
+
+def _serialized_ellipsoid(value: Any) -> Any:
+    """The ellipsoid as attributes hold it (a name or a mapping), as xdggs's grids write it."""
+    return value.to_dict() if isinstance(value, Ellipsoid | Sphere) else value
 
 
 def _as_ids(cell_ids: Any) -> np.ndarray:
@@ -100,16 +124,24 @@ class Split26Info(DGGSInfo):
         Always ``"WGS84"``: the grid is equal-area on the WGS84 ellipsoid.
     id_format : {"int", "str"}, default "int"
         The kind of cell ids: uint64 ids (``dggs.str_to_int``) or the string ids.
+    stated : mapping, optional
+        The optional parameters (``id_format``, ``ellipsoid``) as the attributes stated them, which
+        :meth:`to_dict` writes back as they were; set by :meth:`from_dict`. ``None`` (an info built
+        directly): :meth:`to_dict` writes ``id_format``. Not part of equality: two infos of the same grid
+        are equal however their attributes were spelled.
 
     Examples
     --------
     >>> Split26Info.from_dict({"grid_name": "dggs_split26", "level": 3}).to_dict()
-    {'grid_name': 'dggs_split26', 'level': 3, 'id_format': 'int'}
+    {'grid_name': 'dggs_split26', 'level': 3}
+    >>> Split26Info(level=3, id_format="str").to_dict()
+    {'grid_name': 'dggs_split26', 'level': 3, 'id_format': 'str'}
     """
 
     level: int
     ellipsoid: Any = "WGS84"
     id_format: str = "int"
+    stated: Mapping[str, Any] | None = field(default=None, compare=False, repr=False, kw_only=True)
 
     valid_parameters: ClassVar[dict[str, Any]] = {"level": range(dggs.MAX_LEVEL + 1), "id_format": _ID_FORMATS}
 
@@ -119,7 +151,16 @@ class Split26Info(DGGSInfo):
             raise ValueError(f"level must be an integer between 0 and {dggs.MAX_LEVEL}, got {self.level!r}")
         if self.id_format not in _ID_FORMATS:
             raise ValueError(f"id_format must be 'int' or 'str', got {self.id_format!r}")
-        _parse_ellipsoid(self.ellipsoid)
+        object.__setattr__(self, "ellipsoid", _parse_ellipsoid(self.ellipsoid))  # one spelling: equality
+        if self.stated is not None:
+            unknown = sorted(set(self.stated) - _OPTIONAL)
+            if unknown:
+                raise ValueError(f"stated holds id_format and ellipsoid only, got {unknown}")
+            if self.stated.get("id_format", self.id_format) != self.id_format:
+                raise ValueError(f"stated id_format {self.stated['id_format']!r} is not {self.id_format!r}")
+            if "ellipsoid" in self.stated:
+                _parse_ellipsoid(self.stated["ellipsoid"])
+            object.__setattr__(self, "stated", dict(self.stated))
 
     @classmethod
     def from_dict(cls, mapping: Mapping[str, Any]) -> Split26Info:
@@ -143,11 +184,24 @@ class Split26Info(DGGSInfo):
             raise ValueError(f"unknown parameters for the {GRID_NAME} grid: {unknown}")
         if "level" not in params:
             raise ValueError(f"the {GRID_NAME} grid needs a level")
-        return cls(**params)
+        stated = {key: mapping[key] for key in _OPTIONAL if key in mapping}
+        if "id_format" in stated:
+            stated["id_format"] = params["id_format"]
+        if "ellipsoid" in stated:
+            stated["ellipsoid"] = _serialized_ellipsoid(stated["ellipsoid"])
+        return cls(**params, stated=stated)
 
     def to_dict(self) -> dict[str, Any]:
-        """The normalized grid parameters, with the grid name (WGS84 is implied)."""
-        return {"grid_name": GRID_NAME, "level": self.level, "id_format": self.id_format}
+        """The grid parameters, with the grid name: the attributes :meth:`from_dict` read, as they were.
+
+        ``level`` is always written under that name (``resolution`` and ``refinement_level`` are read as
+        synonyms, as xdggs's own grids do); ``id_format`` and ``ellipsoid`` when the attributes stated
+        them (:attr:`stated`). An info built directly writes ``id_format`` (WGS84 is implied).
+        """
+        if self.stated is None:
+            return {"grid_name": GRID_NAME, "level": self.level, "id_format": self.id_format}
+        optional = {key: self.stated[key] for key in ("id_format", "ellipsoid") if key in self.stated}
+        return {"grid_name": GRID_NAME, "level": self.level} | optional
 
     def cell_ids2geographic(self, cell_ids: Any) -> tuple[np.ndarray, np.ndarray]:
         """Cell centres as ``(lon, lat)`` arrays in degrees (xdggs's order; dggs's is ``(lat, lng)``)."""
@@ -284,9 +338,10 @@ class Split26Index(DGGSIndex):
         name, var, dim = _cell_id_variable(variables)
         attrs = dict(var.attrs) | dict(options)
         data = var.data
-        if "id_format" not in attrs:
-            attrs["id_format"] = "int" if np.dtype(var.dtype).kind in "iu" else "str"
         grid_info = Split26Info.from_dict(attrs)
+        if "id_format" not in attrs:  # inferred from the dtype, and not written back by to_dict
+            inferred = "int" if np.dtype(var.dtype).kind in "iu" else "str"
+            grid_info = dataclasses.replace(grid_info, id_format=inferred)
         if isinstance(data, np.ndarray):
             _check_ids(data, grid_info)
         return cls(data, dim, name, grid_info)
