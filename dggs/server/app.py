@@ -32,7 +32,7 @@ from .params import Context
 from .reader import StoreReader
 from .vendor import STATIC_FOLDER
 
-__all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC"]
+__all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC", "OPENAPI_30"]
 
 #: Default limit on the zones of one zone listing (``.../zones``).
 MAX_ZONES = 100_000
@@ -40,6 +40,8 @@ MAX_ZONES = 100_000
 MAX_FEATURES = 50_000
 #: Default seconds a roll-up may lag a store that an ingest is writing to (see StoreReader).
 REFRESH = 2.0
+#: Media type of ``/api`` (the landing page's ``service-desc`` link says the same).
+OPENAPI_30 = "application/vnd.oai.openapi+json;version=3.0"
 #: The web map's files (written by the front end; served at ``/static`` and ``/``).
 STATIC = STATIC_FOLDER
 
@@ -102,12 +104,13 @@ def create_app(
             "(Split (2:6) on the ISEA icosahedron, Snyder's equal-area projection), and the JSON of its web map."
         ),
         version=_version(),
-        openapi_url="/api",
-        docs_url="/api.html",
+        openapi_url=None,  # served by _serve_openapi_30 as OpenAPI 3.0
+        docs_url=None,
         redoc_url=None,
         lifespan=lifespan,
     )
     app.state.ctx = ctx
+    _serve_openapi_30(app)
     install_handlers(app)
     ogc.register(app, ctx, folder)
     zones.register(app, ctx)
@@ -118,6 +121,34 @@ def create_app(
         app.mount("/static", StaticFiles(directory=folder), name="static")
     app.add_middleware(_HeadAsGet)
     return app
+
+
+def _serve_openapi_30(app: FastAPI) -> None:
+    """Serve ``/api`` as OpenAPI 3.0 (the ``oas30`` class declared; see :mod:`.openapi30`) and its viewer.
+
+    The media type is the one the landing page's ``service-desc`` link names (/req/oas30/oas-impl-1).
+    """
+    from fastapi.openapi.docs import get_swagger_ui_html
+    from fastapi.openapi.utils import get_openapi
+    from fastapi.responses import HTMLResponse, JSONResponse
+
+    from .openapi30 import to_openapi_30
+
+    def openapi() -> dict[str, Any]:
+        if app.openapi_schema is None:
+            doc = get_openapi(title=app.title, version=app.version, description=app.description, routes=app.routes)
+            app.openapi_schema = to_openapi_30(doc)
+        return app.openapi_schema
+
+    app.openapi = openapi  # type: ignore[method-assign]
+
+    @app.get("/api", include_in_schema=False)
+    def api() -> JSONResponse:
+        return JSONResponse(app.openapi(), media_type=OPENAPI_30)
+
+    @app.get("/api.html", include_in_schema=False)
+    def api_html() -> HTMLResponse:
+        return get_swagger_ui_html(openapi_url="/api", title=f"{app.title} - API")
 
 
 class _HeadAsGet:

@@ -14,10 +14,11 @@ Each route is served twice: under ``/dggs/{dggrsId}`` (the API's own DGGRS, the
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from fastapi import FastAPI, Query, Request
+from fastapi import Depends, FastAPI, Query, Request
 from fastapi.responses import JSONResponse, Response
 
 import dggs
@@ -36,7 +37,9 @@ from .params import (
     parse_depths,
     parse_zone,
 )
-from .reader import cells_meeting_bbox
+from .reader import LevelData, cells_meeting_bbox
+from .stats import zone_statistics
+from .zonequery import check_crs, check_geometry, geometry_texts, page_links, parent_range, parse_subset
 
 __all__ = ["register", "STATS", "sub_zone_count"]
 
@@ -122,14 +125,7 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
             # /rec/core/zone-info: summary statistics of each numeric field within the zone.
             rows = ctx.reader.rollup(zone, level, None, ("count",))
             info["dataCount"] = int(rows[0]["count"]) if rows else 0
-            stats: dict[str, Any] = {}
-            for column in summary.numeric_columns:
-                found = ctx.reader.rollup(zone, level, column, ("min", "max", "mean"))
-                if found and found[0]["mean"] is not None:
-                    r = found[0]
-                    stats[column] = {"minimum": clean(r["min"]), "maximum": clean(r["max"]),
-                                     "average": clean(r["mean"])}
-            info["statistics"] = stats
+            info["statistics"] = zone_statistics(ctx.reader, zone, level, summary.numeric_columns)
     if fmt == "geojson":
         props = {k: v for k, v in info.items() if k not in ("id", "geometry")}
         feature = {"type": "Feature", "id": zone, "geometry": info["geometry"], "properties": {"zoneID": zone, **props}}
@@ -140,17 +136,17 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 # -- zone data ----------------------------------------------------------------
 
 
-def zone_data(
-    ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None, f: str | None
-) -> Response:
+def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
+              f: str | None, geometry: str | None = None) -> Response:
     """The rows under ``zone`` rolled up to its sub-zones at each requested depth (DGGS-JSON or GeoJSON)."""
     fmt = negotiate(request, f)
+    mode = check_geometry(geometry)
     with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
-        return _zone_data(ctx, request, collection, zone, depth, fmt)
+        return _zone_data(ctx, request, collection, zone, depth, fmt, mode)
 
 
 def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-               fmt: str) -> Response:
+               fmt: str, mode: str) -> Response:
     summary = ctx.reader.summary()
     stored = summary.level
     level = dggs.get_level(zone)
@@ -187,7 +183,7 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
         geoms: list[str] = []
         properties: list[dict[str, Any]] = []
         for d, subs, data in per_depth:
-            _, texts = ctx.reader.geometries(np.array(subs, dtype=str))
+            texts = geometry_texts(ctx.reader, subs, mode)
             ids += subs
             geoms += texts
             for i, sub in enumerate(subs):
@@ -220,50 +216,69 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
 # -- zone query ---------------------------------------------------------------
 
 
-def zones_list(
-    ctx: Context,
-    request: Request,
-    collection: str | None,
-    zone_level: int | None,
-    bbox_raw: str | None,
-    bbox_crs: str | None,
-    compact: bool,
-    limit: int | None,
-    f: str | None,
-) -> Response:
-    """The zones at ``zone-level`` holding data, meeting ``bbox``, compacted unless told not to.
+@dataclass(frozen=True)
+class ZoneQuery:
+    """The parameters of a zone query, as given (checked by :func:`zones_list`)."""
+
+    zone_level: int | None = None
+    bbox: str | None = None
+    bbox_crs: str | None = None
+    compact: bool = True
+    limit: int | None = None
+    offset: int = 0
+    parent: str | None = None
+    subset: tuple[str, ...] = ()
+    subset_crs: str | None = None
+    geometry: str | None = None
+
+
+def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQuery, f: str | None) -> Response:
+    """The zones at ``zone-level`` holding data: a page of them, inside ``parent-zone``, in ``bbox`` or ``subset``.
+
+    Compacted unless ``compact-zones=false``; ``limit`` zones from ``offset``.
 
     Raises
     ------
     BadRequest
-        If ``bbox-crs`` is not CRS84, ``limit`` is below 1, or another parameter is not valid.
+        For an unsupported ``bbox-crs`` or ``subset-crs``, ``bbox`` with ``subset``, an unknown subset axis,
+        a ``limit`` below 1, a negative ``offset``, or another parameter that is not valid (named).
     TooManyZones
         If more zones hold data than the server's ``max_zones`` limit allows.
     """
     fmt = negotiate(request, f)
-    bbox = parse_bbox(bbox_raw)
-    if bbox is not None and bbox_crs is not None and bbox_crs not in _CRS84_NAMES:
-        # /req/zone-query/bbox-crs: CRS84 (the storage CRS too), as a URI or a safe CURIE.
-        raise BadRequest(f"bbox-crs {bbox_crs!r} is not supported; use {CRS84} (or [OGC:CRS84])")
+    geometry = check_geometry(q.geometry)
+    check_crs("bbox-crs", q.bbox_crs)  # /req/zone-query/bbox-crs
+    check_crs("subset-crs", q.subset_crs)  # /req/zone-query/subset-crs
+    bbox = parse_bbox(q.bbox)
+    subset = parse_subset(q.subset)  # /req/zone-query/subset
+    if bbox is not None and subset is not None:
+        raise BadRequest(f"bbox {q.bbox!r} and subset {','.join(q.subset)!r} may not be used together; give one")
+    box, named = (bbox, f"bbox {q.bbox!r}") if bbox is not None else (subset, f"subset {','.join(q.subset)!r}")
     stored = ctx.reader.summary().level
-    level = check_level("zone-level", (stored or 0) if zone_level is None else zone_level, stored)
-    if limit is not None and limit < 1:
-        raise BadRequest(f"limit {limit} must be at least 1")
+    level = check_level("zone-level", (stored or 0) if q.zone_level is None else q.zone_level, stored)
+    if q.limit is not None and q.limit < 1:
+        raise BadRequest(f"limit {q.limit} must be at least 1")
+    if q.offset < 0:
+        raise BadRequest(f"offset {q.offset} must be at least 0")
     data = ctx.reader.level_data(level)
-    if bbox is None:
+    if q.parent is not None:  # /req/zone-query/parent-zone
+        part = parent_range(data.ids, q.parent, level)
+        data = LevelData(level, data.ids[part], data.counts[part], data.values[part], data.lat[part],
+                         data.lng[part])
+    if box is None:
         zones = data.ids.tolist()
     else:
-        found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_zones)
+        found = cells_meeting_bbox(ctx.reader, data, box, ctx.max_zones)
         if found is None:
-            raise TooManyZones(f"more than {ctx.max_zones} zones of zone-level {level} hold data near bbox "
-                               f"{bbox_raw!r}; use a coarser zone-level or a smaller bbox")
+            raise TooManyZones(f"more than {ctx.max_zones} zones of zone-level {level} hold data near "
+                               f"{named}; use a coarser zone-level or a smaller box")
         zones = data.ids[found[0]].tolist()
-    if compact and zones:
+    if q.compact and zones:
         # /rec/zone-json/zone-order: coarser zones first.
         zones = sorted((str(z) for z in dggs.compact_cells(zones)), key=lambda z: (len(z), z))
     matched = len(zones)
-    if limit is not None:
-        zones = zones[:limit]
+    if q.limit is not None or q.offset:
+        zones = zones[q.offset:None if q.limit is None else q.offset + q.limit]
     cap = ctx.max_zones if fmt == "json" else ctx.max_features
     if len(zones) > cap:
         raise TooManyZones(f"{len(zones)} zones of zone-level {level} hold data, more than this server's limit "
@@ -271,11 +286,12 @@ def zones_list(
     levels = np.char.str_len(np.array(zones, dtype=str)) - 1 if zones else np.array([], dtype=int)
     per_level = zip(*np.unique(levels, return_counts=True), strict=True)
     area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in per_level))
-    links = _links(request, collection)
+    media = GEOJSON if fmt == "geojson" else "application/json"
+    links = _links(request, collection) + page_links(request, q.offset, q.limit, len(zones), matched, media)
     templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}/zones/{{zoneId}}/data",
                   "rel": REL + "dggrs-zone-data", "type": "application/json"}]
     if fmt == "geojson":
-        _, texts = ctx.reader.geometries(np.array(zones, dtype=str))
+        texts = geometry_texts(ctx.reader, zones, geometry)
         props = [{"zoneID": z, "level": len(z) - 1} for z in zones]
         extra = {"numberMatched": matched, "numberReturned": len(zones), "returnedAreaMetersSquare": area,
                  "links": links}
@@ -288,12 +304,26 @@ def zones_list(
 
 _F = Query(None, description="Output format: json (default) or geojson; overrides the Accept header")
 _DEPTH = Query(None, alias="zone-depth", description="Relative depth: d, low-high or a,b,c (default 3)")
-_LEVEL = Query(None, alias="zone-level", description="Level of the zones (default: the stored level)")
-_BBOX = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)")
-_COMPACT = Query(True, alias="compact-zones", description="Replace complete sets of children by their parent")
-_LIMIT = Query(None, description="Return at most this many zones")
-_BBOX_CRS = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)")
-_CRS84_NAMES = {CRS84, CRS84.replace("http://", "https://"), "[OGC:CRS84]", "OGC:CRS84"}
+_GEOMETRY = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, zone-centroid or none")
+
+
+def _zone_query(
+    zone_level: int | None = Query(None, alias="zone-level", description="Level of the zones (default: stored)"),
+    bbox: str | None = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)"),
+    bbox_crs: str | None = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)"),
+    compact_zones: bool = Query(True, alias="compact-zones", description="Complete sets of children as parent"),
+    limit: int | None = Query(None, description="Return at most this many zones (a page; see offset)"),
+    offset: int = Query(0, description="Skip this many zones (paging; the next link gives it)"),
+    parent_zone: str | None = Query(None, alias="parent-zone", description="Only zones inside this zone"),
+    subset: list[str] | None = Query(None, description="Lat(lo:hi),Lon(lo:hi) in CRS84 degrees; not with bbox"),
+    subset_crs: str | None = Query(None, alias="subset-crs", description="CRS of subset: only CRS84"),
+    geometry: str | None = _GEOMETRY,
+) -> ZoneQuery:
+    return ZoneQuery(zone_level, bbox, bbox_crs, compact_zones, limit, offset, parent_zone,
+                     tuple(subset or ()), subset_crs, geometry)
+
+
+_QUERY = Depends(_zone_query)
 
 
 def register(app: FastAPI, ctx: Context) -> None:
@@ -304,15 +334,13 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, None, parse_zone(zoneId), f)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-             f: str | None = _F) -> Response:
+             geometry: str | None = _GEOMETRY, f: str | None = _F) -> Response:
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f)
+        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry)
 
-    def zones(request: Request, dggrsId: str, zone_level: int | None = _LEVEL, bbox: str | None = _BBOX,
-              bbox_crs: str | None = _BBOX_CRS, compact_zones: bool = _COMPACT, limit: int | None = _LIMIT,
-              f: str | None = _F) -> Response:
+    def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F) -> Response:
         check_dggrs(dggrsId)
-        return zones_list(ctx, request, None, zone_level, bbox, bbox_crs, compact_zones, limit, f)
+        return zones_list(ctx, request, None, q, f)
 
     def c_info(request: Request, collectionId: str, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
@@ -320,17 +348,16 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, collectionId, parse_zone(zoneId), f)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-               f: str | None = _F) -> Response:
+               geometry: str | None = _GEOMETRY, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f)
+        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry)
 
-    def c_zones(request: Request, collectionId: str, dggrsId: str, zone_level: int | None = _LEVEL,
-                bbox: str | None = _BBOX, bbox_crs: str | None = _BBOX_CRS, compact_zones: bool = _COMPACT,
-                limit: int | None = _LIMIT, f: str | None = _F) -> Response:
+    def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
+                f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zones_list(ctx, request, collectionId, zone_level, bbox, bbox_crs, compact_zones, limit, f)
+        return zones_list(ctx, request, collectionId, q, f)
 
     for prefix, tag, handlers in (
         ("", "DGGS", (zones, info, data)),

@@ -1,0 +1,230 @@
+"""Every route and parameter of the server, validated against the standard's own bundled OpenAPI.
+
+The referee is ``ogcapi-dggs-1.bundled.json`` of opengeospatial/ogcapi-discrete-global-grid-systems
+(commit 539f23e), read from ``../shared/ref/ogcapi-dggs/`` beside the repository (never copied into it):
+openapi-core checks each request against the standard's operation (path, parameter names and types) and
+each response against the operation's response for its status and media type.  Without the reference
+folder the module is skipped, saying where it looked.
+
+Deviations of the standard's own files, corrected in memory before validating (each has a test showing
+the uncorrected schema rejecting a document the standard itself requires or shows):
+
+1. ``extent`` (Common Part 2) is ``allOf`` of the spatial/temporal schema and an ``anyOf`` whose
+   ``additionalProperties`` apply to every member, ``spatial`` included, and require ``interval`` and
+   ``definition``/``trs``/``vrs``: a plain ``{"spatial": {"bbox": [[-180, -90, 180, 90]]}}`` fails.  Only
+   the first branch (the spatial and temporal extent) is kept.
+2. ``zone-info`` ``geometry`` is a GeoJSON *Feature* with a Polygon, while Annex C's example (and every
+   client) has a bare geometry, and a zone across the antimeridian needs a MultiPolygon: the geometry is
+   checked against the standard's own GeoJSON Polygon and MultiPolygon geometry schemas instead.
+3. The DGGS-JSON schema (``dggs-json.json``) declares JSON Schema draft 2020-12 but writes OpenAPI 3.0's
+   ``nullable`` for the data values, so a strict 2020-12 validator rejects the ``null`` that
+   /req/data-json/content requires for an empty sub-zone.  Here it is validated as the bundled OpenAPI
+   3.0 schema (where ``nullable`` is meant), and as draft 2020-12 with ``null`` removed from the data.
+5. The bundled file is the example server's definition: its ``dggrsId`` and ``collectionId`` path
+   parameters enumerate that server's ids.  They are replaced by this server's (as its own definition would).
+4. Errors: the bundled responses list ``application/json`` for exceptions; the server sends RFC 7807's
+   ``application/problem+json`` (what OGC API - Common's exception schema is), and the body is validated
+   against the standard's ``exception`` schema.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from .conftest import DGGRS
+
+REF = Path(__file__).resolve().parents[2] / ".." / "shared" / "ref" / "ogcapi-dggs"
+BUNDLED = REF / "ogcapi-dggs-1.bundled.json"
+pytestmark = pytest.mark.skipif(
+    not BUNDLED.is_file(), reason=f"the standard's bundled OpenAPI is not at {BUNDLED.resolve()} (../shared/ref)"
+)
+
+HOST = "http://testserver"
+OPENAPI_30 = "application/vnd.oai.openapi+json;version=3.0"
+ROOT = f"/dggs/{DGGRS}"
+COLL = f"/collections/sample/dggs/{DGGRS}"
+
+
+def raw_standard() -> dict[str, Any]:
+    """The bundled OpenAPI as published."""
+    return json.loads(BUNDLED.read_text(encoding="utf-8"))  # type: ignore[no-any-return]
+
+
+def geometry_schemas(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """The standard's own GeoJSON Polygon and MultiPolygon geometry schemas (from its FeatureCollection)."""
+    feature = doc["components"]["schemas"]["FeatureCollection"]["properties"]["features"]["items"]
+    options = feature["properties"]["geometry"]["oneOf"]
+    return [o for o in options if o["title"] in ("GeoJSON Polygon", "GeoJSON MultiPolygon")]
+
+
+@cache
+def corrected() -> dict[str, Any]:
+    """The bundled OpenAPI with the deviations 1 and 2 of the module docstring corrected, served here."""
+    doc = raw_standard()
+    doc["servers"] = [{"url": HOST}]
+    schemas = doc["components"]["schemas"]
+    schemas["extent"] = schemas["extent"]["allOf"][0]  # deviation 1
+    # deviation 2: the zone's Feature (the application/geo+json zone information) moves to its own schema
+    # with a Polygon or MultiPolygon geometry; zone-info's geometry is the bare geometry
+    feature = copy.deepcopy(schemas["zone-info"]["properties"]["geometry"]["allOf"][1])
+    feature["properties"]["geometry"] = {"oneOf": geometry_schemas(doc)}
+    schemas["zone-feature"] = feature
+    schemas["zone-info"]["properties"]["geometry"] = {"oneOf": geometry_schemas(doc)}
+    geo = doc["paths"]["/dggs/{dggrsId}/zones/{zoneId}"]["get"]["responses"]["200"]["content"]["application/geo+json"]
+    geo["schema"]["allOf"][1] = {"$ref": "#/components/schemas/zone-feature"}
+    # deviation 5: the bundled file is the example server's API; its path parameters enumerate that server's
+    # DGGRSs and collections.  An implementation's own definition lists its own: this server's.
+    schemas["all-dggrs"] = {"type": "string", "enum": [DGGRS]}
+    schemas["all-collections"] = {"type": "string", "enum": ["sample"]}
+    return doc
+
+
+def _loads(data: bytes, **media_parameters: str) -> Any:
+    return json.loads(data)  # the media type's parameters (version=3.0) say nothing about the JSON
+
+
+@cache
+def referee() -> Any:
+    from openapi_core import Config, OpenAPI
+
+    json_types = (OPENAPI_30, OPENAPI_30.split(";")[0], "application/geo+json")  # JSON under their own types
+    config = Config(extra_media_type_deserializers=dict.fromkeys(json_types, _loads))
+    return OpenAPI.from_dict(copy.deepcopy(corrected()), config=config)
+
+
+def oas30_validate(schema: dict[str, Any], document: Any, doc: dict[str, Any] | None = None) -> None:
+    """Validate ``document`` against an OpenAPI 3.0 schema of the standard ($refs resolved in ``doc``)."""
+    from openapi_schema_validator import OAS30Validator
+    from referencing import Registry, Resource
+    from referencing.jsonschema import DRAFT4
+
+    root = doc if doc is not None else corrected()
+    registry: Registry[Any] = Registry().with_resource("urn:standard", Resource(root, DRAFT4))
+    text = json.dumps(schema).replace('"#/components/', '"urn:standard#/components/')
+    OAS30Validator(json.loads(text), registry=registry).validate(document)
+
+
+def check(client: Any, url: str, headers: dict[str, str] | None = None) -> Any:
+    """GET ``url`` and validate request and response against the standard's operation for the path."""
+    from openapi_core.testing import MockRequest, MockResponse
+
+    res = client.get(url, headers=headers or {})
+    path, _, query = url.partition("?")
+    args: dict[str, Any] = {}
+    for pair in filter(None, query.split("&")):
+        key, _, value = pair.partition("=")
+        args.setdefault(key, []).append(value)
+    request = MockRequest(HOST, "get", path, args={k: ",".join(v) for k, v in args.items()},
+                          headers=headers or {})
+    media = res.headers["content-type"].split(";")[0]
+    if res.status_code >= 400:  # deviation 4: problem+json, the standard's exception schema
+        assert media == "application/problem+json", url
+        oas30_validate(corrected()["components"]["schemas"]["exception"], res.json())
+        return res
+    if path != "/api":
+        referee().validate_request(request)  # the standard's parameter names, types and styles
+    content_type = OPENAPI_30 if path == "/api" else media
+    referee().validate_response(request, MockResponse(res.content, res.status_code, content_type=content_type))
+    return res
+
+
+# Every route, and every parameter of each (under both the root and the collection prefix).
+ROUTES = ["/", "/?f=json", "/conformance", "/api", "/collections", "/collections/sample", "/dggs",
+          "/collections/sample/dggs"]
+for _prefix in (ROOT, COLL):
+    ROUTES += [
+        _prefix,
+        f"{_prefix}/zones/C401",
+        f"{_prefix}/zones/A",
+        f"{_prefix}/zones/C401?f=geojson",
+        f"{_prefix}/zones/C4/data",
+        f"{_prefix}/zones/C4/data?zone-depth=2",
+        f"{_prefix}/zones/C52/data?zone-depth=0-2",
+        f"{_prefix}/zones/C52/data?zone-depth=0,2&f=geojson",
+        f"{_prefix}/zones/C52/data?zone-depth=1&f=geojson&geometry=zone-centroid",
+        f"{_prefix}/zones",
+        f"{_prefix}/zones?zone-level=3",
+        f"{_prefix}/zones?zone-level=4&compact-zones=false",
+        f"{_prefix}/zones?zone-level=4&bbox=-10,30,20,60",
+        f"{_prefix}/zones?zone-level=4&bbox=170,-40,-170,40&bbox-crs=http://www.opengis.net/def/crs/OGC/1.3/CRS84",
+        f"{_prefix}/zones?zone-level=5&parent-zone=C52",
+        f"{_prefix}/zones?zone-level=5&subset=Lat(35:60),Lon(-10:30)",
+        f"{_prefix}/zones?zone-level=5&subset=Lat(35:60)&subset-crs=[OGC:CRS84]",
+        f"{_prefix}/zones?zone-level=5&compact-zones=false&limit=20",
+        f"{_prefix}/zones?zone-level=5&compact-zones=false&limit=20&offset=40",
+        f"{_prefix}/zones?zone-level=3&f=geojson",
+        f"{_prefix}/zones?zone-level=3&f=geojson&geometry=zone-centroid",
+        f"{_prefix}/zones?zone-level=3&f=geojson&geometry=none",
+    ]
+ERRORS = [
+    "/collections/nope", "/dggs/nope", f"{ROOT}/zones/X9", f"{ROOT}/zones/C4/data?zone-depth=x",
+    f"{ROOT}/zones?subset=Foo(1:2)", f"{ROOT}/zones?subset=Lat(1:2)&bbox=0,0,1,1", f"{ROOT}/zones?bbox-crs=EPSG:3857",
+    f"{ROOT}/zones?geometry=hexagon", f"{ROOT}/zones?parent-zone=X9",
+]
+
+
+@pytest.mark.parametrize("url", ROUTES)
+def test_every_route_and_parameter_validates_against_the_standard(client, url):
+    assert check(client, url).status_code == 200
+
+
+@pytest.mark.parametrize("url", ERRORS)
+def test_every_error_is_the_standards_exception(client, url):
+    assert check(client, url).status_code in (400, 404)
+
+
+def test_not_acceptable_is_the_standards_exception(client):
+    assert check(client, f"{ROOT}/zones", {"accept": "image/png"}).status_code == 406
+
+
+def test_the_referee_can_fail(client):
+    from openapi_core.testing import MockRequest, MockResponse
+
+    request = MockRequest(HOST, "get", f"{ROOT}/zones")
+    for body in ({"zones": [1, 2]}, {"links": []}):  # ids are strings; zones is required
+        with pytest.raises(Exception, match="nvalid|alidation"):
+            referee().validate_response(request, MockResponse(json.dumps(body).encode()))
+
+
+# -- the deviations of the standard's own files --------------------------------------------
+
+
+def test_deviation_1_the_published_extent_rejects_a_plain_bbox():
+    import jsonschema
+
+    doc = raw_standard()
+    plain = {"spatial": {"bbox": [[-180.0, -90.0, 180.0, 90.0]]}}
+    with pytest.raises(jsonschema.ValidationError):
+        oas30_validate(doc["components"]["schemas"]["extent"], plain, doc)
+    oas30_validate(corrected()["components"]["schemas"]["extent"], plain)
+
+
+def test_deviation_2_zone_info_geometry_is_a_bare_geometry(client):
+    import jsonschema
+
+    info = client.get(f"{ROOT}/zones/C401").json()
+    doc = raw_standard()
+    with pytest.raises(jsonschema.ValidationError):
+        oas30_validate(doc["components"]["schemas"]["zone-info"]["properties"]["geometry"], info["geometry"], doc)
+    oas30_validate({"oneOf": geometry_schemas(doc)}, info["geometry"], doc)
+
+
+def test_deviation_3_dggs_json_nullable_under_draft_2020_12(client):
+    import jsonschema
+
+    schema = json.loads((REF / "dggs-json.json").read_text(encoding="utf-8"))
+    body = client.get(f"{ROOT}/zones/C4/data?zone-depth=3").json()
+    values = [v for entries in body["values"].values() for e in entries for v in e["data"]]
+    assert None in values  # empty sub-zones: null (/req/data-json/content)
+    validator = jsonschema.Draft202012Validator(schema)
+    assert not validator.is_valid(body)  # the defect: 2020-12 does not know nullable
+    for entries in body["values"].values():
+        for e in entries:
+            e["data"] = [v for v in e["data"] if v is not None]
+    validator.validate(body)  # the rest of the document meets the published schema
