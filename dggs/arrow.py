@@ -11,8 +11,13 @@ module adds the geometry side without a Python loop per cell:
   antimeridian go through shapely.
 * :func:`cells_to_table` gives a GeoParquet 1.1 table: ``cell`` (string id),
   ``cell_id`` (int64 id), any property columns, a ``bbox`` covering struct
-  and a WKB ``geometry`` column, with the ``geo`` schema metadata.
+  and a WKB ``geometry`` column, with the ``geo`` schema metadata.  Both the
+  ``bbox`` group and ``geometry`` are ``required``, and a cell split at the
+  antimeridian has ``xmin > xmax`` (RFC 7946 §5.2), as GeoParquet 1.1
+  §"Bounding Box Columns" asks (:mod:`dggs._geoparquet`).
 * :func:`write_geoparquet` writes such a table whole or not at all.
+* :func:`bbox_filter` (pyarrow) and :func:`bbox_sql` (DuckDB) select the rows
+  whose ``bbox`` meets a box, honouring ``xmin > xmax``.
 
 Coordinates are (lng, lat) degrees on WGS84, i.e. OGC:CRS84, the GeoParquet
 default, so the ``geo`` metadata leaves ``crs`` out.
@@ -42,6 +47,15 @@ from typing import Any
 import numpy as np
 
 from dggs._formats import EXPORT_FORMATS, export_format
+from dggs._geoparquet import (
+    BBOX_TYPE,
+    GEOPARQUET_VERSION,
+    bbox_filter,
+    bbox_sql,
+    covering_bounds,
+    file_bbox,
+    geo_metadata,
+)
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_densify
 from dggs.index._convert import cells_in
@@ -64,24 +78,17 @@ __all__ = [
     "EXPORT_FORMATS",
     "to_geodataframe",
     "GEOPARQUET_VERSION",
+    "bbox_filter",
+    "bbox_sql",
 ]
 
-GEOPARQUET_VERSION = "1.1.0"
 _ENCODINGS = ("wkb", "geoarrow")
-_BBOX = pa.struct([("xmin", pa.float64()), ("ymin", pa.float64()), ("xmax", pa.float64()), ("ymax", pa.float64())])
 
 
 def _check_encoding(encoding: str) -> str:
     if encoding not in _ENCODINGS:
         raise DggsValueError(f"encoding {encoding!r} is not one of {', '.join(map(repr, _ENCODINGS))}")
     return encoding
-
-
-
-
-
-
-
 
 
 def cells_to_geoarrow(cells: Any, densify: int | None = 0, encoding: str = "wkb") -> pa.Array:
@@ -158,24 +165,8 @@ def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = N
     return pa.field(name, arr.type, nullable=False, metadata={b"ARROW:extension:name": ext.encode(), **meta})
 
 
-def geo_metadata(geometry_types: Any, bbox: Any = None, column: str = "geometry", covering: str | None = "bbox") -> dict:
-    """The GeoParquet 1.1 ``geo`` metadata of a table with one WKB column in OGC:CRS84.
-
-    Examples
-    --------
-    >>> geo_metadata(["Polygon"])["columns"]["geometry"]["covering"]["bbox"]["xmin"]
-    ['bbox', 'xmin']
-    """
-    col: dict[str, Any] = {"encoding": "WKB", "geometry_types": sorted(set(geometry_types))}
-    if bbox is not None:
-        col["bbox"] = [float(v) for v in bbox]
-    if covering:
-        col["covering"] = {"bbox": {k: [covering, k] for k in ("xmin", "ymin", "xmax", "ymax")}}
-    return {"version": GEOPARQUET_VERSION, "primary_column": column, "columns": {column: col}}
-
-
 def _bbox_array(bounds: np.ndarray) -> pa.StructArray:
-    return pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(_BBOX))
+    return pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(BBOX_TYPE))
 
 
 def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densify: int | None = 16) -> pa.Table:
@@ -233,15 +224,16 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
             if len(arr) != n:
                 raise DggsValueError(f"property {name!r} has {len(arr)} values for {n} cells")
             columns[name] = arr
+    bounds = covering_bounds(geometry, bounds)  # RFC 7946 §5: xmin > xmax across the antimeridian
     columns["bbox"] = _bbox_array(bounds)
     columns["geometry"] = geometry
     table = pa.table(columns)
     fields = [table.schema.field(i) for i in range(table.num_columns)]
+    # GeoParquet 1.1 §"Bounding Box Columns": "The repetition of a bounding box column MUST match the
+    # geometry column's repetition": both required, as no cell lacks either.
+    fields[-2] = pa.field("bbox", BBOX_TYPE, nullable=False)
     fields[-1] = pa.field("geometry", geometry.type, nullable=False)
-    total = None
-    if n:
-        total = [bounds[:, 0].min(), bounds[:, 1].min(), bounds[:, 2].max(), bounds[:, 3].max()]
-    meta = {b"geo": json.dumps(geo_metadata(types, total)).encode()}
+    meta = {b"geo": json.dumps(geo_metadata(types, file_bbox(bounds))).encode()}
     return table.cast(pa.schema(fields, metadata=meta))
 
 

@@ -33,6 +33,12 @@ MODULES = [
     "dggs.storage.store_export",
     "dggs._formats",
 ]
+try:  # the optional arrow extra
+    import pyarrow  # noqa: F401
+
+    MODULES += ["dggs.arrow", "dggs._geoparquet"]
+except ImportError:
+    pass
 try:  # the optional dask extra
     import dask.dataframe  # noqa: F401
 
