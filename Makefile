@@ -16,13 +16,19 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster]'
 	touch $(STAMP)
 
-# The web map's front-end dependency (MapLibre GL JS) from npm, pinned by the lock file,
-# copied into the package's static folder (git-ignored) so `dggs serve` needs no internet.
+# The web map's front-end dependencies from npm, pinned by the lock file: MapLibre GL JS, Natural Earth's
+# countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static
+# folder (git-ignored) so `dggs serve` needs no internet. dggs/server/_build.py copies the same for wheels.
 STATIC := dggs/server/static/vendor/.installed
 $(STATIC): dggs/server/package.json dggs/server/package-lock.json
 	npm ci --prefix dggs/server --no-audit --no-fund --loglevel=error
 	rm -rf dggs/server/static/vendor && mkdir -p dggs/server/static/vendor
 	cp -r dggs/server/node_modules/maplibre-gl/dist dggs/server/static/vendor/maplibre-gl
+	mkdir -p dggs/server/static/vendor/world-atlas dggs/server/static/vendor/topojson-client
+	cp dggs/server/node_modules/world-atlas/countries-50m.json dggs/server/node_modules/world-atlas/LICENSE \
+		dggs/server/static/vendor/world-atlas/
+	cp dggs/server/node_modules/topojson-client/dist/topojson-client.min.js \
+		dggs/server/node_modules/topojson-client/LICENSE dggs/server/static/vendor/topojson-client/
 	touch $(STATIC)
 
 static: $(STATIC)

@@ -1,6 +1,7 @@
 """Build step: the web map's MapLibre GL JS files go into every wheel built from a clone.
 
-They are an npm dependency (``package.json`` and its lock file beside this module),
+So do its geography (Natural Earth's countries from ``world-atlas``, TopoJSON) and ``topojson-client``,
+which reads them in the page. They are npm dependencies (``package.json`` and its lock file beside this module),
 never committed; ``make static`` copies them into ``static/vendor``.  A wheel built
 without that step would serve a map stuck at "Loading...", so building the package
 (``pip install .``, ``python -m build``, ``pip wheel``) copies them in first: from
@@ -26,18 +27,30 @@ __all__ = ["BuildPy", "vendor_maplibre"]
 
 _HERE = Path(__file__).parent
 _WANTED = ("maplibre-gl.mjs", "maplibre-gl.css")
+#: The page's other npm files: node_modules path -> static/vendor path (as ``make static`` copies them).
+GEOGRAPHY = {
+    "world-atlas/countries-50m.json": "world-atlas/countries-50m.json",
+    "world-atlas/LICENSE": "world-atlas/LICENSE",
+    "topojson-client/dist/topojson-client.min.js": "topojson-client/topojson-client.min.js",
+    "topojson-client/LICENSE": "topojson-client/LICENSE",
+}
 
 
 def vendor_maplibre(server: Path = _HERE) -> bool:
-    """Fill ``static/vendor/maplibre-gl`` from npm's ``node_modules`` (running ``npm ci`` if needed).
+    """Fill ``static/vendor`` from npm's ``node_modules`` (running ``npm ci`` if needed).
 
-    Returns whether the files are there afterwards.
+    MapLibre's ``dist`` folder, then the ``GEOGRAPHY`` files (the map works without them, with no land drawn).
+
+    Returns whether the MapLibre files are there afterwards.
     """
-    target = server / "static" / "vendor" / "maplibre-gl"
-    if all((target / name).is_file() for name in _WANTED):
+    vendor = server / "static" / "vendor"
+    target = vendor / "maplibre-gl"
+    modules = server / "node_modules"
+    if all((target / name).is_file() for name in _WANTED) and all((vendor / v).is_file() for v in GEOGRAPHY.values()):
         return True
-    dist = server / "node_modules" / "maplibre-gl" / "dist"
-    if not dist.is_dir() and shutil.which("npm") and (server / "package-lock.json").is_file():
+    dist = modules / "maplibre-gl" / "dist"
+    complete = dist.is_dir() and all((modules / name).is_file() for name in GEOGRAPHY)
+    if not complete and shutil.which("npm") and (server / "package-lock.json").is_file():
         command = ["npm", "ci", "--prefix", str(server), "--no-audit", "--no-fund", "--loglevel=error"]
         if subprocess.run(command, check=False).returncode != 0:
             warnings.warn("npm ci failed: the wheel's web map will lack MapLibre GL JS", stacklevel=2)
@@ -46,6 +59,13 @@ def vendor_maplibre(server: Path = _HERE) -> bool:
         return False
     shutil.rmtree(target, ignore_errors=True)
     shutil.copytree(dist, target)
+    missing = [name for name in GEOGRAPHY if not (modules / name).is_file()]
+    if missing:
+        warnings.warn(f"not in node_modules: {', '.join(missing)}: the wheel's web map will draw no land", stacklevel=2)
+    for name, copy in GEOGRAPHY.items():
+        if name not in missing:
+            (vendor / copy).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(modules / name, vendor / copy)
     return True
 
 

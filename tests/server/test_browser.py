@@ -2,8 +2,8 @@
 ``dggs serve`` process on 127.0.0.1 serving a store built here.
 
 Run with ``make test-browser`` (or ``python -m pytest -q -m browser tests/server``). With
-``DGGS_SCREENSHOT=docs/serve-globe.png`` set, the recolouring test saves its screenshot of the globe
-(coloured by a sum) there, for the docs.
+``DGGS_SCREENSHOT=docs/serve-globe.png`` set, the colour-classes test saves its screenshot of the globe
+(coastlines, borders and cells coloured by a sum) there, for the docs.
 """
 
 from __future__ import annotations
@@ -44,6 +44,8 @@ AFRICA = (-7.5, 25.0)  # in lat -20..5, lng 15..35
 ELSEWHERE = [(40.0, -100.0), (-15.0, -60.0), (35.0, 115.0), (-25.0, 135.0)]
 EMPTY = [(20.0, -40.0), (-35.0, 75.0), (10.0, -20.0)]  # ocean, away from the data and the graticule
 GLOBE_VIEW = {"center": [15.0, 20.0], "zoom": 1.7}
+ARABIA = (23.0, 45.0)  # land with no data (away from the graticule)
+LAND_COLOUR, SEA_COLOUR = (0x2C, 0x3A, 0x4A), (0x1B, 0x27, 0x36)  # app.js's LAND_COLOUR, GLOBE_COLOUR
 EUROPE_VIEW = {"center": [EUROPE[1], EUROPE[0]], "zoom": 4.5}
 
 webdriver = pytest.importorskip("selenium.webdriver")
@@ -189,6 +191,8 @@ def page(driver: Any, server: str) -> Any:
     """The map page, loaded once, its first cells drawn; the tests set the view they need."""
     driver.get(f"{server}/")
     wait_for(driver, lambda: driver.execute_script("return document.body.dataset.state") in ("idle", "error"))
+    wait_for(driver, lambda: driver.execute_script("return window.dggsState.geography") != "loading",
+             message="the countries did not load")
     return driver
 
 
@@ -288,6 +292,24 @@ def is_cell_colour(rgb: np.ndarray) -> np.ndarray:
     return (r > 80) & (r > b + 30)
 
 
+def legend(driver: Any) -> list[dict[str, Any]]:
+    """The legend's classes, lowest first: colour, from, to (as numbers) and the text shown."""
+    return [
+        {"colour": li.get_attribute("data-colour"), "from": float(li.get_attribute("data-from")),
+         "to": float(li.get_attribute("data-to")), "text": li.text}
+        for li in driver.find_elements(By.CSS_SELECTOR, "#legend-steps li")
+    ]
+
+
+def rendered_colours(driver: Any) -> list[str]:
+    """The fill colour MapLibre evaluated for each cell drawn on the map (one entry a rendered feature)."""
+    return driver.execute_script(
+        "return window.dggsMap.queryRenderedFeatures({layers: ['cells-fill']})"
+        ".map(f => { const c = f.layer.paint['fill-color'];"
+        " return [c.r, c.g, c.b].map(x => Math.round(x * 255)).join(','); })"
+    )
+
+
 def level_rows(path: Path, level: int, column: str | None = None, stats: tuple[str, ...] = ("count",)) -> list[dict]:
     with CellStore(path) as store:
         return store.aggregate(level, column, stats)
@@ -306,7 +328,7 @@ def test_page_loads_without_errors(page: Any, server: str) -> None:
     assert urls and all(u.startswith(server) or u.startswith(("blob:", "data:")) for u in urls), urls
     assert page.execute_script("return window.dggsMap.getProjection().type") == "globe"
     # Labelled, focusable controls.
-    for select_id in ("column", "stat", "level"):
+    for select_id in ("column", "stat", "level", "scale"):
         assert page.find_element(By.CSS_SELECTOR, f"label[for={select_id}]").text
     # The keyboard reaches the controls, then the map (the stat select is disabled for the row count).
     page.execute_script("document.activeElement.blur()")
@@ -315,7 +337,7 @@ def test_page_loads_without_errors(page: Any, server: str) -> None:
         ActionChains(page).send_keys(Keys.TAB).perform()
         active = page.switch_to.active_element
         reached.append(active.get_attribute("id") or active.get_attribute("class"))
-    assert reached[:2] == ["column", "level"], reached
+    assert reached[:3] == ["column", "level", "scale"], reached
     assert any("maplibregl-canvas" in r for r in reached), reached
     options = [o.get_attribute("value") for o in Select(page.find_element(By.ID, "column")).options]
     assert options == ["", "pop"]
@@ -401,26 +423,21 @@ def test_value_select_recolours(page: Any, data: dict[str, Any]) -> None:
         choose(page, "column", "")
     s = set_view(page, GLOBE_VIEW)
     level = s["level"]
-    legend_max = page.find_element(By.ID, "legend-max")
     count_max = max(r["count"] for r in level_rows(data["path"], level))
-    assert float(legend_max.get_attribute("data-value")) == count_max
+    assert legend(page)[-1]["to"] == count_max
     paint_before = page.execute_script("return JSON.stringify(window.dggsMap.getPaintProperty('cells-fill', 'fill-color'))")
 
     s = choose(page, "column", "pop")
     assert (s["column"], s["stat"]) == ("pop", "sum")
     sums = level_rows(data["path"], level, "pop", ("count", "sum"))
-    assert float(legend_max.get_attribute("data-value")) == max(r["sum"] for r in sums) != count_max
+    assert legend(page)[-1]["to"] == max(r["sum"] for r in sums) != count_max
     assert page.find_element(By.ID, "legend-title").text == "sum of pop"
+    assert page.find_element(By.ID, "legend-level").text == f"level {level}"
     paint_after = page.execute_script("return JSON.stringify(window.dggsMap.getPaintProperty('cells-fill', 'fill-color'))")
-    assert paint_after != paint_before and str(max(r["sum"] for r in sums)) in paint_after
-    target = os.environ.get("DGGS_SCREENSHOT")  # the picture in the docs: the globe, coloured by a sum
-    if target:
-        page.execute_script("document.activeElement.blur()")
-        Path(target).parent.mkdir(parents=True, exist_ok=True)
-        Path(target).write_bytes(page.get_screenshot_as_png())
+    assert paint_after != paint_before
 
     s = choose(page, "stat", "max")
-    assert float(legend_max.get_attribute("data-value")) == int(data["pop"].max())
+    assert legend(page)[-1]["to"] == int(data["pop"].max())
     assert s["featureCount"] == len(sums)
     assert js_errors(page) == []
     choose(page, "column", "")
@@ -438,3 +455,61 @@ def test_too_many_cells_steps_to_a_coarser_level(page: Any, data: dict[str, Any]
         assert js_errors(page) == []
     finally:
         choose(page, "level", "auto")
+
+
+def test_land_is_drawn_under_the_cells(page: Any) -> None:
+    assert state(page)["geography"] == "loaded"
+    set_view(page, GLOBE_VIEW)
+    counts = page.execute_script(
+        "return ['land', 'coastline', 'borders'].map(id => window.dggsMap.queryRenderedFeatures({layers: [id]}).length)"
+    )
+    assert all(n > 0 for n in counts), counts
+    order = page.execute_script("return window.dggsMap.getStyle().layers.map(l => l.id)")
+    assert max(order.index(n) for n in ("land", "coastline", "borders")) < order.index("cells-fill"), order
+    # On screen: land (no cells there) in the land colour, the open sea in the sea's.
+    shot = Screenshot(page)
+    land = shot.patch(*project(page, *ARABIA)).reshape(-1, 3).mean(axis=0)
+    sea = shot.patch(*project(page, *EMPTY[0])).reshape(-1, 3).mean(axis=0)
+    assert np.abs(land - LAND_COLOUR).max() < 8, land
+    assert np.abs(sea - SEA_COLOUR).max() < 8, sea
+    assert js_errors(page) == []
+
+
+def test_a_skewed_column_spreads_over_the_colour_classes(page: Any, data: dict[str, Any]) -> None:
+    set_view(page, GLOBE_VIEW)
+    s = choose(page, "column", "pop")
+    try:
+        if s["stat"] != "sum":  # the menu keeps what an earlier test chose
+            s = choose(page, "stat", "sum")
+        assert (s["stat"], s["scale"]) == ("sum", "quantile")
+        sums = sorted(r["sum"] for r in level_rows(data["path"], s["level"], "pop", ("count", "sum")))
+        assert sums[-1] > 10 * sums[len(sums) // 2], "the sums are skewed"
+        steps = legend(page)
+        assert len(steps) == 7 and steps[0]["from"] == sums[0] and steps[-1]["to"] == sums[-1]
+        assert all(a["to"] == b["from"] for a, b in zip(steps, steps[1:], strict=False))
+        assert f"level {s['level']}" == page.find_element(By.ID, "legend-level").text
+        # The colours MapLibre drew: quantile classes, each holding a fair share of the cells.
+        colours = rendered_colours(page)
+        shares = sorted((colours.count(c) / len(colours) for c in set(colours)), reverse=True)
+        assert len(shares) >= 4 and shares[0] < 0.3, shares
+        target = os.environ.get("DGGS_SCREENSHOT")  # the picture in the docs
+        if target:
+            page.execute_script("document.activeElement.blur()")
+            Path(target).parent.mkdir(parents=True, exist_ok=True)
+            Path(target).write_bytes(page.get_screenshot_as_png())
+        # Linear classes on the same sums leave most cells in the palest class; logarithmic ones do not.
+        choose(page, "scale", "linear")
+        linear = rendered_colours(page)
+        assert max(linear.count(c) for c in set(linear)) / len(linear) > 0.5
+        choose(page, "scale", "log")
+        log = rendered_colours(page)
+        assert len(set(log)) >= 4
+        bounds = [step["to"] for step in legend(page)[:-1]]
+        ratios = [b / a for a, b in zip(bounds, bounds[1:], strict=False)]
+        assert max(ratios) / min(ratios) < 1.2, bounds  # equal ratios, up to rounding
+        assert js_errors(page) == []
+    finally:
+        if state(page)["scale"] != "quantile":
+            choose(page, "scale", "quantile")
+        if state(page)["column"] is not None:
+            choose(page, "column", "")

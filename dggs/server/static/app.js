@@ -1,6 +1,8 @@
 // The dggs web map: the store's cells on a MapLibre globe, rolled up by the server to a level chosen
-// from the zoom (GET map/layers, GET map/cells), coloured by a value, with a legend and a cell popup.
-// An ES module with no build step; MapLibre GL JS comes from /static/vendor (no internet needed).
+// from the zoom (GET map/layers, GET map/cells), coloured by a value in classes (quantiles, logarithmic or
+// linear) with a legend of the classes, a cell popup, and Natural Earth's coastlines and borders beneath.
+// An ES module with no build step; MapLibre GL JS, the countries (world-atlas, TopoJSON) and
+// topojson-client come from /static/vendor, installed from npm (no internet needed).
 import { Map as MapLibreMap, NavigationControl, Popup } from './vendor/maplibre-gl/maplibre-gl.mjs';
 
 // --- Level from zoom ------------------------------------------------------------------------------
@@ -15,11 +17,17 @@ const LEVEL_PER_ZOOM = Math.log(2) / Math.log(Math.sqrt(3));
 const LEVEL_AT_ZOOM_0 = 2.4;
 const WORLD_BBOX = [-180, -90, 180, 90];
 
-// Colour ramp (ColorBrewer YlOrRd, 5 classes): bright on the dark globe, from the minimum to the maximum.
-const RAMP = ['#ffffb2', '#fecc5c', '#fd8d3c', '#f03b20', '#bd0026'];
+// Colour classes (ColorBrewer YlOrRd, 7 classes): bright on the dark globe, lowest values palest.
+const RAMP = ['#ffffb2', '#fed976', '#feb24c', '#fd8d3c', '#fc4e2a', '#e31a1c', '#b10026'];
 const NO_VALUE_COLOUR = '#8b949e';
-const GLOBE_COLOUR = '#1b2736';
-const GRATICULE_COLOUR = '#3b4d63';
+const GLOBE_COLOUR = '#1b2736';   // the sea
+const LAND_COLOUR = '#2c3a4a';
+const GRATICULE_COLOUR = '#33465c';
+const COAST_COLOUR = '#8fa3b8';
+const BORDER_COLOUR = '#5f7389';
+// Natural Earth 1:50m countries (world-atlas), read with topojson-client; both from npm, like MapLibre.
+const COUNTRIES_URL = new URL('./vendor/world-atlas/countries-50m.json', import.meta.url);
+const TOPOJSON_URL = new URL('./vendor/topojson-client/topojson-client.min.js', import.meta.url);
 const ZONES_PATH = 'dggs/DGGS-Split26-ISEA/zones/';
 
 const $ = (id) => document.getElementById(id);
@@ -27,10 +35,10 @@ const ui = {
   column: $('column'),
   stat: $('stat'),
   level: $('level'),
+  scale: $('scale'),
   legendTitle: $('legend-title'),
-  legendRamp: $('legend-ramp'),
-  legendMin: $('legend-min'),
-  legendMax: $('legend-max'),
+  legendLevel: $('legend-level'),
+  legendSteps: $('legend-steps'),
   status: $('status'),
   subtitle: $('subtitle'),
 };
@@ -43,9 +51,12 @@ const state = {
   lastError: null,
   column: null,         // null: row count; else a numeric column
   stat: 'count',
+  scale: 'quantile',    // colour classes: 'quantile', 'log' or 'linear'
   bbox: null,           // bbox of the last request [w, s, e, n]
-  min: null,            // legend range
+  min: null,            // range of the values in view
   max: null,
+  breaks: [],           // lower bounds of the colour classes after the first
+  geography: 'loading', // Natural Earth's countries: 'loading', 'loaded' or 'missing'
   renders: 0,           // fetches rendered so far
   selected: null,       // zone id of the clicked cell
 };
@@ -104,17 +115,29 @@ const style = {
   projection: { type: 'globe' },
   sources: {
     graticule: { type: 'geojson', data: graticule() },
+    land: { type: 'geojson', data: EMPTY },
+    borders: { type: 'geojson', data: EMPTY },
+    coastline: { type: 'geojson', data: EMPTY },
     cells: { type: 'geojson', data: EMPTY },
   },
   layers: [
     { id: 'background', type: 'background', paint: { 'background-color': GLOBE_COLOUR } },
+    { id: 'land', type: 'fill', source: 'land', paint: { 'fill-color': LAND_COLOUR } },
     {
       id: 'graticule', type: 'line', source: 'graticule',
       paint: { 'line-color': GRATICULE_COLOUR, 'line-width': 1 },
     },
     {
+      id: 'borders', type: 'line', source: 'borders',
+      paint: { 'line-color': BORDER_COLOUR, 'line-width': 0.7, 'line-dasharray': [3, 2] },
+    },
+    {
+      id: 'coastline', type: 'line', source: 'coastline',
+      paint: { 'line-color': COAST_COLOUR, 'line-width': 1 },
+    },
+    {
       id: 'cells-fill', type: 'fill', source: 'cells',
-      paint: { 'fill-color': RAMP[0], 'fill-opacity': 0.9 },
+      paint: { 'fill-color': RAMP[0], 'fill-opacity': 0.8 },
     },
     {
       id: 'cells-line', type: 'line', source: 'cells',
@@ -138,6 +161,66 @@ const map = new MapLibreMap({
 });
 window.dggsMap = map;
 map.addControl(new NavigationControl({ visualizePitch: true }), 'top-right');
+
+// --- Land ------------------------------------------------------------------------------------------
+// The countries' outer edges (arcs of one country only) are the coastline, the shared ones the borders.
+// world-atlas leaves Russia and Fiji crossing the antimeridian (a step from +179.9 to -179.9), writes
+// some points of its cuts along it as -180 between points near +180, and closes Antarctica along the
+// south pole with a step across it: MapLibre would draw those steps across the whole globe. So a ring's
+// longitudes are made continuous (MapLibre wraps them back) and Antarctica's is closed again along the
+// pole; lines are broken at such steps, at the cuts along the antimeridian and along the pole (no coast).
+function unwrap(ring) {
+  const pole = ring.some(([, y]) => y < -89.99);
+  const line = pole ? ring.filter(([, y]) => y >= -89.99) : ring;
+  if (line.length < 3) return ring;
+  let shift = 0;
+  const out = line.map(([x, y], i) => {
+    if (i > 0) shift += 360 * Math.round((line[i - 1][0] - x) / 360);
+    return [x + shift, y];
+  });
+  if (pole) out.push([out[out.length - 1][0], -89.999], [out[0][0], -89.999], out[0]);
+  return out;
+}
+
+function dropCuts(line) {
+  const cut = ([ax, ay], [bx, by]) => (Math.abs(ax) === 180 && Math.abs(bx) === 180) || Math.abs(ax - bx) > 180
+    || (ay < -89.99 && by < -89.99);
+  const parts = [[line[0]]];
+  for (let i = 1; i < line.length; i += 1) {
+    if (cut(line[i - 1], line[i])) parts.push([]);
+    parts[parts.length - 1].push(line[i]);
+  }
+  return parts.filter((part) => part.length > 1);
+}
+
+function polygons(feature) {
+  const g = feature.geometry;
+  const coordinates = g.type === 'Polygon' ? g.coordinates.map(unwrap) : g.coordinates.map((p) => p.map(unwrap));
+  return { ...feature, geometry: { ...g, coordinates } };
+}
+
+function lines(multiLine) {
+  return { type: 'MultiLineString', coordinates: multiLine.coordinates.flatMap(dropCuts) };
+}
+
+async function loadGeography() {
+  try {
+    const [response] = await Promise.all([fetch(COUNTRIES_URL), import(TOPOJSON_URL.href)]);
+    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
+    const topo = await response.json();
+    const { feature, mesh } = window.topojson; // the UMD build sets window.topojson
+    const countries = topo.objects.countries;
+    const land = feature(topo, countries);
+    map.getSource('land').setData({ ...land, features: land.features.map(polygons) });
+    map.getSource('coastline').setData(lines(mesh(topo, countries, (a, b) => a === b)));
+    map.getSource('borders').setData(lines(mesh(topo, countries, (a, b) => a !== b)));
+    state.geography = 'loaded';
+  } catch (err) {
+    // The map works without land (a wheel built without npm lacks it): say so, no more.
+    state.geography = 'missing';
+    console.warn('no coastlines:', String(err.message || err));
+  }
+}
 
 const popup = new Popup({ closeButton: true, closeOnClick: true, maxWidth: '280px' });
 popup.on('close', () => {
@@ -237,42 +320,71 @@ function cellsUrl(level, bbox) {
   return `map/cells?${params}`;
 }
 
-// Fill colour: the ramp from min to max of the values in view; grey where a cell has no value.
-function fillColour(min, max) {
-  if (min === null) return RAMP[0];
-  let ramp;
-  if (max > min) {
-    ramp = ['interpolate', ['linear'], ['get', 'value']];
-    RAMP.forEach((colour, i) => ramp.push(min + ((max - min) * i) / (RAMP.length - 1), colour));
-  } else {
-    ramp = RAMP[RAMP.length - 1];
+// Colour classes for the values in view (sorted, ascending): the lower bounds of classes 2..n.
+// quantile: each class holds about as many cells (the default: sums and counts are skewed, and a few
+// big cells would otherwise leave all the rest in the palest class); log: bounds in equal ratios
+// (offset when values reach 0 or below); linear: equal widths. Log and linear bounds are rounded to two
+// significant digits, for a legend one can read.
+function classBreaks(sorted, scale) {
+  const n = RAMP.length;
+  const lo = sorted[0];
+  const hi = sorted[sorted.length - 1];
+  const shift = lo > 0 ? 0 : 1 - lo; // log of (value + shift), shift making the lowest value 1
+  const cuts = [];
+  for (let i = 1; i < n; i += 1) {
+    if (scale === 'quantile') cuts.push(sorted[Math.floor((i * sorted.length) / n)]);
+    else if (scale === 'log') cuts.push(Number(((lo + shift) * ((hi + shift) / (lo + shift)) ** (i / n) - shift).toPrecision(2)));
+    else cuts.push(Number((lo + ((hi - lo) * i) / n).toPrecision(2)));
   }
-  return ['case', ['==', ['typeof', ['get', 'value']], 'number'], ramp, NO_VALUE_COLOUR];
+  // Strictly ascending and inside (lo, hi], as MapLibre's 'step' needs and no class left empty by design.
+  return cuts.filter((c, i) => c > lo && c <= hi && (i === 0 || c > cuts[i - 1]));
 }
 
-function updateLegend(min, max) {
+// The colour of each class: the whole ramp, spread over fewer classes when there are fewer.
+function classColours(count) {
+  if (count === 1) return [RAMP[RAMP.length - 1]];
+  return Array.from({ length: count }, (_, i) => RAMP[Math.round((i * (RAMP.length - 1)) / (count - 1))]);
+}
+
+// Fill colour: a 'step' over the classes; grey where a cell has no value.
+function fillColour(breaks, colours) {
+  const step = ['step', ['get', 'value'], colours[0]];
+  breaks.forEach((b, i) => step.push(b, colours[i + 1]));
+  return ['case', ['==', ['typeof', ['get', 'value']], 'number'], breaks.length ? step : colours[0], NO_VALUE_COLOUR];
+}
+
+// The legend: one row a class, its colour and its range (the last class ends at the largest value).
+function updateLegend(level, min, max, breaks, colours) {
   ui.legendTitle.textContent = valueLabel();
-  ui.legendRamp.style.background = `linear-gradient(to right, ${RAMP.join(', ')})`;
-  ui.legendMin.textContent = formatNumber(min);
-  ui.legendMax.textContent = formatNumber(max);
-  ui.legendMin.dataset.value = min === null ? '' : String(min);
-  ui.legendMax.dataset.value = max === null ? '' : String(max);
+  ui.legendLevel.textContent = `level ${level}`;
+  ui.legendSteps.replaceChildren();
+  if (min === null) return;
+  const bounds = [min, ...breaks, max];
+  colours.forEach((colour, i) => {
+    const li = document.createElement('li');
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = colour;
+    li.dataset.colour = colour;
+    li.dataset.from = String(bounds[i]);
+    li.dataset.to = String(bounds[i + 1]);
+    li.append(swatch, `${formatNumber(bounds[i])} – ${formatNumber(bounds[i + 1])}`);
+    ui.legendSteps.append(li);
+  });
 }
 
 function render(fc, level, bbox, wanted) {
   if (state.level !== level) popup.remove(); // the clicked cell is gone
-  let min = null;
-  let max = null;
-  for (const f of fc.features) {
-    const v = f.properties.value;
-    if (typeof v !== 'number' || !Number.isFinite(v)) continue;
-    if (min === null || v < min) min = v;
-    if (max === null || v > max) max = v;
-  }
+  const values = fc.features.map((f) => f.properties.value).filter((v) => typeof v === 'number' && Number.isFinite(v));
+  values.sort((a, b) => a - b);
+  const min = values.length ? values[0] : null;
+  const max = values.length ? values[values.length - 1] : null;
+  const breaks = values.length ? classBreaks(values, state.scale) : [];
+  const colours = classColours(breaks.length + 1);
   map.getSource('cells').setData(fc);
-  map.setPaintProperty('cells-fill', 'fill-color', fillColour(min, max));
-  Object.assign(state, { level, featureCount: fc.features.length, min, max, bbox, lastError: null });
-  updateLegend(min, max);
+  map.setPaintProperty('cells-fill', 'fill-color', fillColour(breaks, colours));
+  Object.assign(state, { level, featureCount: fc.features.length, min, max, breaks, bbox, lastError: null });
+  updateLegend(level, min, max, breaks, colours);
   const area = fc.features.length ? fc.features[0].properties.area_km2 : null;
   const areaText = area ? ` · ${formatNumber(Math.round(area))} km² each` : '';
   const coarser = level < wanted ? ` (level ${wanted} has too many cells here)` : '';
@@ -317,7 +429,7 @@ async function refresh() {
   const bbox = viewBbox();
   const wanted = targetLevel();
   let level = wanted;
-  const key = JSON.stringify([wanted, bbox, state.column, state.stat]);
+  const key = JSON.stringify([wanted, bbox, state.column, state.stat, state.scale]);
   if (key === shownKey) {
     // Nothing new to fetch (say, the whole globe turned): the cells on the map stay.
     whenMapIdle(seq, 'idle');
@@ -413,6 +525,7 @@ function readControls() {
   state.column = ui.column.value === '' ? null : ui.column.value;
   ui.stat.disabled = state.column === null;
   state.stat = state.column === null ? 'count' : ui.stat.value;
+  state.scale = ui.scale.value;
 }
 
 function setUpControls() {
@@ -422,7 +535,7 @@ function setUpControls() {
   ui.level.innerHTML = '';
   ui.level.add(new Option('auto (from zoom)', 'auto', true, true));
   for (const level of layers.levels) ui.level.add(new Option(String(level), String(level)));
-  for (const select of [ui.column, ui.stat, ui.level]) {
+  for (const select of [ui.column, ui.stat, ui.level, ui.scale]) {
     select.addEventListener('change', () => {
       readControls();
       refresh();
@@ -458,6 +571,7 @@ async function start() {
     return;
   }
   setUpControls();
+  loadGeography();
   if (layers.stored_level === null || layers.stored_level === undefined || !layers.levels.length) {
     state.loading = false;
     setStatus('The store holds no cells yet.');
