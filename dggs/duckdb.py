@@ -19,7 +19,8 @@ the argument's type to a typed Python function named with a suffix
 NULL in any argument gives NULL.  Invalid ids, coordinates or levels raise a
 DuckDB ``InvalidInputException`` whose message names the function and the
 bad value, e.g. ``InvalidCellError: dggs_get_level: 'X9' is not a valid cell
-id: ...``.  The full list of functions is in ``docs/duckdb.md``.
+id: ...``.  The full list of functions is in ``docs/duckdb.md``; the
+hierarchy, grid, region and vertex functions are in ``dggs/_duckdb_more.py``.
 """
 
 from __future__ import annotations
@@ -56,6 +57,22 @@ _LATLNG = "STRUCT(lat DOUBLE, lng DOUBLE)"
 _LATLNG_ARROW = pa.struct([("lat", pa.float64()), ("lng", pa.float64())])
 _INDEX = re.compile(r" at index \d+")
 
+# the hierarchy, grid, region and vertex functions (dggs/_duckdb_more.py)
+_MORE_FUNCTIONS: dict[str, tuple[str, str, str]] = {
+    "dggs_cell_to_children": ("(cell ID, level BIGINT)", "ID[]", "descendants at level, in id order"),
+    "dggs_cell_to_center_child": ("(cell ID, level BIGINT)", "ID", "descendant at level holding the centre"),
+    "dggs_grid_disk": ("(cell ID, k BIGINT)", "ID[]", "cells within k edge steps, sorted"),
+    "dggs_grid_ring": ("(cell ID, k BIGINT)", "ID[]", "cells exactly k edge steps away, sorted"),
+    "dggs_grid_distance": ("(a ID, b ID)", "BIGINT", "edge steps between cells of one level"),
+    "dggs_compact_cells": ("(cells ID[])", "ID[]", "fewest cells covering the same area, sorted"),
+    "dggs_uncompact_cells": ("(cells ID[], level BIGINT)", "ID[]", "descendants at level, sorted"),
+    "dggs_cell_to_vertexes": ("(cell ID)", "VARCHAR[]", "ids of the 3 corners"),
+    "dggs_cell_to_boundary": ("(cell ID)", "STRUCT(lat DOUBLE, lng DOUBLE)[]", "the 3 corners"),
+    "dggs_cells_to_polygon_wkb": ("(cells ID[])", "BLOB", "WKB of the cells' union, lng/lat"),
+    "dggs_polygon_to_cells": ("(wkb BLOB, level BIGINT, mode VARCHAR)", "BIGINT[]", "polygon fill"),
+    "dggs_polygon_to_cells_str": ("(wkb BLOB, level BIGINT, mode VARCHAR)", "VARCHAR[]", "the same as string ids"),
+}
+
 # name -> (SQL signature, return type, description): what register() adds, for the docs and tests
 FUNCTIONS: dict[str, tuple[str, str, str]] = {
     "dggs_latlng_to_cell": ("(lat DOUBLE, lng DOUBLE, level BIGINT)", "BIGINT", "cell holding each point"),
@@ -70,6 +87,7 @@ FUNCTIONS: dict[str, tuple[str, str, str]] = {
     "dggs_is_valid_cell": ("(cell ID)", "BOOLEAN", "well-formed id (never raises)"),
     "dggs_str_to_int": ("(cell ID)", "BIGINT", "integer id"),
     "dggs_int_to_str": ("(cell ID)", "VARCHAR", "string id"),
+    **_MORE_FUNCTIONS,
 }
 
 
@@ -305,8 +323,11 @@ def register(con: Any) -> Any:
             ["DOUBLE", "DOUBLE", "BIGINT"], "BIGINT")  # fmt: skip
     _create(con, "dggs_latlng_to_cell_str", _latlng_to_cell("dggs_latlng_to_cell_str", "VARCHAR"),
             ["DOUBLE", "DOUBLE", "BIGINT"], "VARCHAR")  # fmt: skip
+    from dggs._duckdb_more import register_more  # imports this module's helpers
+
+    more = register_more(con)
     for name in FUNCTIONS:
-        if name.startswith("dggs_latlng_to_cell"):
+        if name.startswith("dggs_latlng_to_cell") or name in more:
             continue
         overloads = []
         for sql_type, (suffix, _) in _ID_KINDS.items():
