@@ -24,7 +24,7 @@ from collections.abc import AsyncIterator
 from pathlib import Path
 from typing import Any
 
-from fastapi import FastAPI
+from fastapi import FastAPI, Request
 
 from . import mapdata, ogc, zones
 from .errors import head_as_get, install_handlers
@@ -133,6 +133,7 @@ def _serve_openapi_30(app: FastAPI) -> None:
     from fastapi.responses import HTMLResponse, JSONResponse
 
     from .openapi30 import to_openapi_30
+    from .params import negotiate
 
     def openapi() -> dict[str, Any]:
         if app.openapi_schema is None:
@@ -143,11 +144,13 @@ def _serve_openapi_30(app: FastAPI) -> None:
     app.openapi = openapi  # type: ignore[method-assign]
 
     @app.get("/api", include_in_schema=False)
-    def api() -> JSONResponse:
+    def api(request: Request, f: str | None = None) -> JSONResponse:
+        negotiate(request, None if f in (None, "json") else f, ("openapi",))  # f=json names the JSON too
         return JSONResponse(app.openapi(), media_type=OPENAPI_30)
 
     @app.get("/api.html", include_in_schema=False)
-    def api_html() -> HTMLResponse:
+    def api_html(request: Request) -> HTMLResponse:
+        negotiate(request, None, ("html",))
         return get_swagger_ui_html(openapi_url="/api", title=f"{app.title} - API")
 
 

@@ -34,14 +34,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from fastapi import FastAPI, Query
+from fastapi import FastAPI, Query, Request
 from fastapi.responses import JSONResponse, Response
 
 import dggs
 
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
-from .params import Context, check_level, parse_bbox
+from .params import Context, check_level, negotiate, parse_bbox
 from .reader import cells_meeting_bbox
 
 __all__ = ["register", "MAP_STATS"]
@@ -114,15 +114,18 @@ def register(app: FastAPI, ctx: Context) -> None:
     """Add ``/map/layers`` and ``/map/cells``."""
 
     @app.get("/map/layers", tags=["Web map"], summary="What the web map can show")
-    def map_layers() -> JSONResponse:
+    def map_layers(request: Request) -> JSONResponse:
+        negotiate(request, None, ("json",))
         return JSONResponse(layers(ctx))
 
     @app.get("/map/cells", tags=["Web map"], summary="Non-empty cells of a level in a bbox (GeoJSON)",
              response_class=Response, responses={200: {"content": {GEOJSON: {}}}})
     def map_cells(
+        request: Request,
         level: int = Query(..., description="Level 0..stored level"),
         bbox: str | None = Query(None, description="w,s,e,n (degrees; w > e crosses 180); default the world"),
         column: str | None = Query(None, description="A numeric column; default: the row count"),
         stat: str = Query("count", description="count, sum, mean, min or max of the column"),
     ) -> Response:
+        negotiate(request, None, ("geojson", "json"))  # GeoJSON is JSON too
         return cells(ctx, level, bbox, column, stat)

@@ -26,7 +26,8 @@ from fastapi.responses import FileResponse, HTMLResponse, JSONResponse, PlainTex
 
 from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
 from .dggrs import link as _link
-from .params import Context, base_url, check_collection, check_dggrs
+from .encodings import HAS_UBJSON
+from .params import Context, base_url, check_collection, check_dggrs, negotiate
 from .vendor import VENDOR_HELP, missing_vendor
 
 __all__ = ["register", "CONFORMANCE"]
@@ -50,7 +51,8 @@ CONFORMANCE = [
     _DGGS + "data-json",  # DGGS-JSON
     _DGGS + "data-geojson",  # zone data as GeoJSON
     _DGGS + "zone-geojson",  # zone lists as GeoJSON
-]
+    _DGGS + "zone-uint64",  # zone lists as 64-bit integers (application/x-binary)
+] + ([_DGGS + "data-ubjson"] if HAS_UBJSON else [])  # DGGS-UBJSON zone data (application/ubjson), with py-ubjson
 
 
 def landing(ctx: Context, request: Request) -> dict[str, Any]:
@@ -128,25 +130,39 @@ _NO_MAP = """<!doctype html>
 """
 
 
+_F = Query(None, description="json (the only format here; overrides the Accept header)")
+
+
+def _json(request: Request, f: str | None, body: Any) -> JSONResponse:
+    """``body`` as JSON, the one format of the metadata resources.
+
+    400 for another ``f``, 406 for an Accept header without JSON (OGC API - Common /req/core/http).
+    """
+    negotiate(request, f, ("json",))
+    return JSONResponse(body)
+
+
 def register(app: FastAPI, ctx: Context, static: Path) -> None:
     """Add the landing page, conformance, collections and DGGRS routes."""
     page = static / "index.html"
 
     @app.get("/", tags=["Capabilities"], summary="Landing page (the web map for a browser)")
-    def root(request: Request, f: str | None = Query(None, description="json for the landing page")) -> Response:
-        accept = request.headers.get("accept", "")
-        if f is None and "text/html" in accept and page.is_file():
+    def root(request: Request, f: str | None = Query(None, description="json for the landing page, html for the "
+                                                                           "web map (when it is installed)")) -> Response:
+        # /req/landing-page/root-success: JSON, or the web map's HTML page for a client preferring text/html
+        if negotiate(request, f, ("json", "html") if page.is_file() else ("json",)) == "html":
             if missing_vendor(static):  # the page would stay at "Loading..." without MapLibre
                 return HTMLResponse(_NO_MAP.format(help=html.escape(VENDOR_HELP)), status_code=503)
             return FileResponse(page, media_type="text/html")
         return JSONResponse(landing(ctx, request))
 
     @app.get("/conformance", tags=["Capabilities"], summary="Conformance classes")
-    def conformance() -> JSONResponse:
-        return JSONResponse({"conformsTo": CONFORMANCE})
+    def conformance(request: Request, f: str | None = _F) -> JSONResponse:
+        return _json(request, f, {"conformsTo": CONFORMANCE})
 
     @app.get("/collections", tags=["Collections"], summary="Collections (the one store)")
-    def collections(request: Request) -> JSONResponse:
+    def collections(request: Request, f: str | None = _F) -> JSONResponse:
+        negotiate(request, f, ("json",))
         base = base_url(request)
         return JSONResponse({
             "links": [_link(f"{base}/collections", "self")],
@@ -156,9 +172,9 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
         })
 
     @app.get("/collections/{collectionId}", tags=["Collections"], summary="The collection")
-    def one_collection(request: Request, collectionId: str) -> JSONResponse:
+    def one_collection(request: Request, collectionId: str, f: str | None = _F) -> JSONResponse:
         check_collection(ctx, collectionId)
-        return JSONResponse(collection(ctx, request))
+        return _json(request, f, collection(ctx, request))
 
     def described(request: Request, collection_id: str | None, dggrs_id: str) -> dict[str, Any]:
         check_collection(ctx, collection_id)
@@ -167,34 +183,36 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
         return description(base_url(request), prefix, ctx.reader.summary().level, collection_id)
 
     @app.get("/dggs", tags=["DGGS"], summary="DGGRS list")
-    def dggs_root(request: Request) -> JSONResponse:
-        return JSONResponse(dggrs_list(ctx, request, None))
+    def dggs_root(request: Request, f: str | None = _F) -> JSONResponse:
+        return _json(request, f, dggrs_list(ctx, request, None))
 
     @app.get("/dggs/{dggrsId}", tags=["DGGS"], summary="DGGRS description")
-    def dggrs_root(request: Request, dggrsId: str) -> JSONResponse:
-        return JSONResponse(described(request, None, dggrsId))
+    def dggrs_root(request: Request, dggrsId: str, f: str | None = _F) -> JSONResponse:
+        return _json(request, f, described(request, None, dggrsId))
 
     @app.get("/dggs/{dggrsId}/definition", tags=["DGGS"], summary="DGGRS definition (Annex B schema)")
-    def dggrs_definition(dggrsId: str) -> JSONResponse:
+    def dggrs_definition(request: Request, dggrsId: str, f: str | None = _F) -> JSONResponse:
         check_dggrs(dggrsId)
-        return JSONResponse(definition())
+        return _json(request, f, definition())
 
     @app.get("/collections/{collectionId}/dggs", tags=["Collection DGGS"], summary="DGGRS list of the collection")
-    def dggs_collection(request: Request, collectionId: str) -> JSONResponse:
+    def dggs_collection(request: Request, collectionId: str, f: str | None = _F) -> JSONResponse:
         check_collection(ctx, collectionId)
-        return JSONResponse(dggrs_list(ctx, request, collectionId))
+        return _json(request, f, dggrs_list(ctx, request, collectionId))
 
     @app.get("/collections/{collectionId}/dggs/{dggrsId}", tags=["Collection DGGS"], summary="DGGRS description")
-    def dggrs_collection(request: Request, collectionId: str, dggrsId: str) -> JSONResponse:
-        return JSONResponse(described(request, collectionId, dggrsId))
+    def dggrs_collection(request: Request, collectionId: str, dggrsId: str, f: str | None = _F) -> JSONResponse:
+        return _json(request, f, described(request, collectionId, dggrsId))
 
     @app.get("/collections/{collectionId}/dggs/{dggrsId}/definition", tags=["Collection DGGS"],
              summary="DGGRS definition (Annex B schema)")
-    def dggrs_collection_definition(collectionId: str, dggrsId: str) -> JSONResponse:
+    def dggrs_collection_definition(request: Request, collectionId: str, dggrsId: str,
+                                    f: str | None = _F) -> JSONResponse:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return JSONResponse(definition())
+        return _json(request, f, definition())
 
     @app.get("/robots.txt", include_in_schema=False)
-    def robots() -> PlainTextResponse:
+    def robots(request: Request) -> PlainTextResponse:
+        negotiate(request, None, ("text",))
         return PlainTextResponse("User-agent: *\nDisallow: */dggs/*/zones/*\n")

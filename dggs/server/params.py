@@ -19,7 +19,8 @@ import dggs
 
 from .errors import BadRequest, NotAcceptable, NotFound
 
-__all__ = ["Context", "parse_bbox", "parse_zone", "parse_depths", "check_level", "negotiate", "base_url"]
+__all__ = ["Context", "parse_bbox", "parse_zone", "parse_depths", "check_level", "negotiate", "base_url",
+           "MEDIA_TYPES"]
 
 
 @dataclass
@@ -127,18 +128,33 @@ def check_level(name: str, level: int, stored: int | None) -> int:
     return level
 
 
-_FORMATS = {"json": "application/json", "geojson": "application/geo+json"}
+#: The media types of each ``f`` value; a route offers some of them (its ``formats``), the first the default.
+#: ``uint64`` is /req/zone-uint64/content's zone list and ``ubjson`` /req/data-ubjson/content's DGGS-UBJSON;
+#: ``openapi`` is ``/api``'s own type (3.0, /req/oas30/oas-impl-1), which also answers ``application/json``.
+MEDIA_TYPES = {
+    "json": ("application/json",),
+    "geojson": ("application/geo+json",),
+    "html": ("text/html",),
+    "uint64": ("application/x-binary",),
+    "ubjson": ("application/ubjson",),
+    "openapi": ("application/vnd.oai.openapi+json", "application/json"),
+    "text": ("text/plain",),
+}
 
 
 def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "geojson")) -> str:
-    """Pick ``json`` or ``geojson``: from ``f`` if given, else from the Accept header.
+    """Pick one of ``formats``: ``f`` if given, else the best match of the Accept header.
+
+    The ``f`` parameter overrides the header.  In the header, ``q`` weights are honoured (``q=0`` refuses a
+    type), ``*/*`` and ``type/*`` stand for the first of ``formats`` of that type, and among equal weights the
+    header's first entry wins.  No Accept header (or an empty one) gives ``formats[0]``.
 
     Raises
     ------
     BadRequest
-        For an unknown ``f``.
+        For an ``f`` that is not one of ``formats``.
     NotAcceptable
-        When the Accept header names only media types not offered.
+        When the Accept header names only media types not offered (OGC API - Common /req/core/http: 406).
     """
     if f is not None:
         if f not in formats:
@@ -150,18 +166,23 @@ def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "
     best, best_q = None, 0.0
     for part in accept.split(","):
         media, *options = [p.strip() for p in part.split(";")]
+        media = media.lower()
         q = 1.0
         for option in options:
-            if option.startswith("q="):
+            if option.replace(" ", "").lower().startswith("q="):
                 try:
-                    q = float(option[2:])
+                    q = float(option.split("=", 1)[1])
                 except ValueError:
                     q = 0.0
+        if q <= best_q:
+            continue
         for fmt in formats:
-            if media in (_FORMATS[fmt], "*/*", "application/*") and q > best_q:
-                best, best_q = (formats[0] if media in ("*/*", "application/*") else fmt), q
+            types = MEDIA_TYPES[fmt]
+            if media in types or media == "*/*" or (media.endswith("/*") and types[0].startswith(media[:-1])):
+                best, best_q = fmt, q
+                break
     if best is None:
-        offered = ", ".join(_FORMATS[f] for f in formats)
+        offered = ", ".join(MEDIA_TYPES[f][0] for f in formats)
         raise NotAcceptable(f"Accept {accept!r} names no media type offered here ({offered})")
     return best
 

@@ -7,9 +7,11 @@ Each route is served twice: under ``/dggs/{dggrsId}`` (the API's own DGGRS, the
 - ``.../zones/{zoneId}`` — zone information (§7.3, /req/core/zone-info), JSON or a GeoJSON Feature;
 - ``.../zones/{zoneId}/data`` — the store's rows rolled up to the sub-zones (§8,
   /req/data-retrieval/zone-data; ``zone-depth`` of §10, /req/data-custom-depths/zone-depth),
-  as DGGS-JSON (§16, /req/data-json/content) or GeoJSON (/req/data-geojson/content);
-- ``.../zones`` — the zones holding data (§12, /req/zone-query/zones-list), JSON or GeoJSON
-  (/req/zone-geojson/content), with ``zone-level``, ``compact-zones``, ``bbox`` and ``limit``.
+  as DGGS-JSON (§16, /req/data-json/content), DGGS-UBJSON (/req/data-ubjson/content) or GeoJSON
+  (/req/data-geojson/content);
+- ``.../zones`` — the zones holding data (§12, /req/zone-query/zones-list), JSON, GeoJSON
+  (/req/zone-geojson/content) or 64-bit integers (/req/zone-uint64/content), with ``zone-level``,
+  ``parent-zone``, ``compact-zones``, ``bbox`` or ``subset``, ``limit`` and ``offset``.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from fastapi.responses import JSONResponse, Response
 import dggs
 
 from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
+from .encodings import HAS_UBJSON, UBJSON, UINT64, dggs_ubjson, uint64_zone_list
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
 from .params import (
@@ -45,6 +48,8 @@ __all__ = ["register", "STATS", "sub_zone_count"]
 
 #: Statistics of each numeric column in zone data (property ``{column}_{stat}``).
 STATS = ("sum", "mean", "min", "max")
+#: The formats of zone data: DGGS-JSON, GeoJSON and, with py-ubjson installed, DGGS-UBJSON.
+DATA_FORMATS = ("json", "geojson", "ubjson") if HAS_UBJSON else ("json", "geojson")
 
 
 def sub_zone_count(level: int, depth: int) -> int:
@@ -138,8 +143,8 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 
 def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
               f: str | None, geometry: str | None = None) -> Response:
-    """The rows under ``zone`` rolled up to its sub-zones at each requested depth (DGGS-JSON or GeoJSON)."""
-    fmt = negotiate(request, f)
+    """The rows under ``zone`` rolled up to its sub-zones at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON)."""
+    fmt = negotiate(request, f, DATA_FORMATS)
     mode = check_geometry(geometry)
     with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
         return _zone_data(ctx, request, collection, zone, depth, fmt, mode)
@@ -202,14 +207,18 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
             for d, subs, data in per_depth]
         for p in props
     }
+    links = _links(request, collection, zone)
     body = {
         "dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}",
         "zoneId": zone,
         "depths": depths,
         "schema": schema,
         "values": values,
-        "links": _links(request, collection, zone),
+        "links": links,
     }
+    if fmt == "ubjson":  # /req/data-ubjson/content: the DGGS-JSON document in UBJSON
+        links[0]["type"] = UBJSON  # the self link
+        return Response(dggs_ubjson(body), media_type=UBJSON)
     return JSONResponse(body)
 
 
@@ -245,7 +254,7 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
     TooManyZones
         If more zones hold data than the server's ``max_zones`` limit allows.
     """
-    fmt = negotiate(request, f)
+    fmt = negotiate(request, f, ("json", "geojson", "uint64"))
     geometry = check_geometry(q.geometry)
     check_crs("bbox-crs", q.bbox_crs)  # /req/zone-query/bbox-crs
     check_crs("subset-crs", q.subset_crs)  # /req/zone-query/subset-crs
@@ -279,10 +288,12 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
     matched = len(zones)
     if q.limit is not None or q.offset:
         zones = zones[q.offset:None if q.limit is None else q.offset + q.limit]
-    cap = ctx.max_zones if fmt == "json" else ctx.max_features
+    cap = ctx.max_features if fmt == "geojson" else ctx.max_zones
     if len(zones) > cap:
         raise TooManyZones(f"{len(zones)} zones of zone-level {level} hold data, more than this server's limit "
                            f"of {cap}; use a coarser zone-level, a smaller bbox, compact-zones or limit")
+    if fmt == "uint64":  # /req/zone-uint64/content: count then ids, little-endian uint64
+        return Response(uint64_zone_list(zones), media_type=UINT64)
     levels = np.char.str_len(np.array(zones, dtype=str)) - 1 if zones else np.array([], dtype=int)
     per_level = zip(*np.unique(levels, return_counts=True), strict=True)
     area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in per_level))
@@ -303,6 +314,10 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
 # -- routes -------------------------------------------------------------------
 
 _F = Query(None, description="Output format: json (default) or geojson; overrides the Accept header")
+_F_DATA = Query(None, description="Output format: json (DGGS-JSON, default), geojson or ubjson (DGGS-UBJSON); "
+                                  "overrides the Accept header")
+_F_ZONES = Query(None, description="Output format: json (default), geojson or uint64 (application/x-binary: "
+                                   "a little-endian uint64 count, then the uint64 zone ids); overrides Accept")
 _DEPTH = Query(None, alias="zone-depth", description="Relative depth: d, low-high or a,b,c (default 3)")
 _GEOMETRY = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, zone-centroid or none")
 
@@ -334,11 +349,11 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, None, parse_zone(zoneId), f)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-             geometry: str | None = _GEOMETRY, f: str | None = _F) -> Response:
+             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
         check_dggrs(dggrsId)
         return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry)
 
-    def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F) -> Response:
+    def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F_ZONES) -> Response:
         check_dggrs(dggrsId)
         return zones_list(ctx, request, None, q, f)
 
@@ -348,13 +363,13 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, collectionId, parse_zone(zoneId), f)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-               geometry: str | None = _GEOMETRY, f: str | None = _F) -> Response:
+               geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
         return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry)
 
     def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
-                f: str | None = _F) -> Response:
+                f: str | None = _F_ZONES) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
         return zones_list(ctx, request, collectionId, q, f)

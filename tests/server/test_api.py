@@ -144,8 +144,10 @@ def test_openapi_lists_the_routes(client):
 def test_browser_gets_the_web_map_page_when_installed(store_path, tmp_path):
     static = tmp_path / "static"
     static.mkdir()
-    with make_client(store_path, static=static) as c:  # no index.html: JSON for everyone
-        assert c.get("/", headers={"accept": "text/html"}).json()["links"]
+    with make_client(store_path, static=static) as c:  # no index.html: JSON, or a 406 for HTML only
+        assert c.get("/", headers={"accept": "text/html,application/xhtml+xml,*/*;q=0.8"}).json()["links"]
+        assert c.get("/", headers={"accept": "text/html"}).status_code == 406
+        assert c.get("/?f=html").status_code == 400
     (static / "index.html").write_text("<!doctype html><title>map</title>")
     (static / "app.js").write_text("// js")
     (static / "vendor" / "maplibre-gl").mkdir(parents=True)

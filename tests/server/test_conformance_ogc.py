@@ -25,6 +25,13 @@ the uncorrected schema rejecting a document the standard itself requires or show
 4. Errors: the bundled responses list ``application/json`` for exceptions; the server sends RFC 7807's
    ``application/problem+json`` (what OGC API - Common's exception schema is), and the body is validated
    against the standard's ``exception`` schema.
+6. Zone lists: the ``f`` parameter of zone queries lists ``uint64`` and the standard has the ``zone-uint64``
+   class (/req/zone-uint64/content, ``application/x-binary``), but the zone query's 200 response names no
+   ``application/x-binary`` content.  It is added as the binary string the OpenAPI gives its other binary
+   encodings (``image/png``); the layout itself is checked by brute force in ``test_encodings``.
+7. Zone data: the standard has the ``data-ubjson`` class (/req/data-ubjson/content, ``application/ubjson``)
+   but the zone data operation lists neither ``f=ubjson`` nor ``application/ubjson``.  Both are added, the
+   response with the DGGS-JSON schema: the UBJSON body is decoded (py-ubjson) and validated as DGGS-JSON.
 """
 
 from __future__ import annotations
@@ -82,11 +89,34 @@ def corrected() -> dict[str, Any]:
     # DGGRSs and collections.  An implementation's own definition lists its own: this server's.
     schemas["all-dggrs"] = {"type": "string", "enum": [DGGRS]}
     schemas["all-collections"] = {"type": "string", "enum": ["sample"]}
+    zones = _ok_content(doc, "/dggs/{dggrsId}/zones")
+    zones["application/x-binary"] = {"schema": {"type": "string", "format": "binary"}}  # deviation 6
+    doc["components"]["parameters"]["f-zoneData"]["schema"]["enum"].append("ubjson")  # deviation 7
+    data = _ok_content(doc, "/dggs/{dggrsId}/zones/{zoneId}/data")
+    data["application/ubjson"] = copy.deepcopy(data["application/json"])
     return doc
+
+
+def _ok_content(doc: dict[str, Any], path: str) -> dict[str, Any]:
+    """The content of the 200 response of ``GET path`` (the shared response component it refers to)."""
+    ok = doc["paths"][path]["get"]["responses"]["200"]
+    if "$ref" in ok:
+        ok = doc["components"]["responses"][ok["$ref"].rsplit("/", 1)[-1]]
+    return ok["content"]  # type: ignore[no-any-return]
 
 
 def _loads(data: bytes, **media_parameters: str) -> Any:
     return json.loads(data)  # the media type's parameters (version=3.0) say nothing about the JSON
+
+
+def _ubjson(data: bytes, **media_parameters: str) -> Any:
+    import ubjson
+
+    return ubjson.loadb(data)
+
+
+def _binary(data: bytes, **media_parameters: str) -> Any:
+    return data.hex()  # a string, as the schema's binary format has it
 
 
 @cache
@@ -94,7 +124,8 @@ def referee() -> Any:
     from openapi_core import Config, OpenAPI
 
     json_types = (OPENAPI_30, OPENAPI_30.split(";")[0], "application/geo+json")  # JSON under their own types
-    config = Config(extra_media_type_deserializers=dict.fromkeys(json_types, _loads))
+    config = Config(extra_media_type_deserializers={**dict.fromkeys(json_types, _loads),
+                                                    "application/ubjson": _ubjson, "application/x-binary": _binary})
     return OpenAPI.from_dict(copy.deepcopy(corrected()), config=config)
 
 
@@ -161,6 +192,9 @@ for _prefix in (ROOT, COLL):
         f"{_prefix}/zones?zone-level=3&f=geojson",
         f"{_prefix}/zones?zone-level=3&f=geojson&geometry=zone-centroid",
         f"{_prefix}/zones?zone-level=3&f=geojson&geometry=none",
+        f"{_prefix}/zones?zone-level=4&f=uint64",
+        f"{_prefix}/zones?zone-level=5&parent-zone=C52&compact-zones=false&limit=20&offset=5&f=uint64",
+        f"{_prefix}/zones/C52/data?zone-depth=0-2&f=ubjson",
     ]
 ERRORS = [
     "/collections/nope", "/dggs/nope", f"{ROOT}/zones/X9", f"{ROOT}/zones/C4/data?zone-depth=x",
@@ -190,6 +224,22 @@ def test_the_referee_can_fail(client):
     for body in ({"zones": [1, 2]}, {"links": []}):  # ids are strings; zones is required
         with pytest.raises(Exception, match="nvalid|alidation"):
             referee().validate_response(request, MockResponse(json.dumps(body).encode()))
+
+
+def test_the_referee_checks_the_binary_encodings(client):
+    # deviations 6 and 7 add the media types, and the UBJSON is validated as DGGS-JSON: a UBJSON body without
+    # the required members fails, and neither binary type is accepted where the standard does not list it.
+    import ubjson
+    from openapi_core.testing import MockRequest, MockResponse
+
+    data = MockRequest(HOST, "get", f"{ROOT}/zones/C4/data")
+    with pytest.raises(Exception, match="nvalid|alidation"):
+        referee().validate_response(data, MockResponse(ubjson.dumpb({"zoneId": 4}), content_type="application/ubjson"))
+    body = client.get(f"{ROOT}/zones?f=uint64").content
+    with pytest.raises(Exception, match="not found|nvalid|alidation"):
+        referee().validate_response(data, MockResponse(body, content_type="application/x-binary"))
+    zones = MockRequest(HOST, "get", f"{ROOT}/zones")
+    referee().validate_response(zones, MockResponse(body, content_type="application/x-binary"))
 
 
 # -- the deviations of the standard's own files --------------------------------------------
