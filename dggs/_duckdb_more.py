@@ -26,7 +26,7 @@ from dggs.duckdb import (
     _ID_KINDS,
     _LATLNG_ARROW,
     _MORE_FUNCTIONS,
-    _by_level,
+    _cell_at_level,
     _create,
     _ids,
     _ids_out,
@@ -122,16 +122,6 @@ def _children(name: str, sql_type: str) -> Callable[..., Any]:
             return np.asarray(cell_to_children(ids[rows], lv), np.uint64), _children_counts(ids[rows], lv)
 
         return _id_lists(*_ragged_by(levels, compute), valid, sql_type)
-
-    return _sql_errors(name)(fn)
-
-
-def _center_child(name: str, sql_type: str) -> Callable[..., Any]:
-    def fn(cell: Any, level: Any) -> Any:
-        valid = _valid(cell, level)
-        ids, levels = _ids(name, cell, valid), _numbers(level, valid, np.int64)
-        child = _by_level(levels, lambda rows, lv: cell_to_center_child(ids[rows], lv), np.uint64)
-        return _ids_out(child, valid, sql_type)
 
     return _sql_errors(name)(fn)
 
@@ -246,7 +236,7 @@ def _per_kind(name: str, sql_type: str) -> tuple[list[str], str, Callable[..., A
     id_list = f"{sql_type}[]"
     table: dict[str, tuple[list[str], str, Callable[[], Callable[..., Any]]]] = {
         "dggs_cell_to_children": (level, id_list, lambda: _children(name, sql_type)),
-        "dggs_cell_to_center_child": (level, sql_type, lambda: _center_child(name, sql_type)),
+        "dggs_cell_to_center_child": (level, sql_type, lambda: _cell_at_level(name, sql_type, cell_to_center_child)),
         "dggs_grid_disk": (level, id_list, lambda: _disk(name, sql_type, grid_disk)),
         "dggs_grid_ring": (level, id_list, lambda: _disk(name, sql_type, grid_ring)),
         "dggs_grid_distance": ([sql_type, sql_type], "BIGINT", lambda: _distance(name)),

@@ -198,12 +198,13 @@ def _latlng_to_cell(name: str, out_type: str) -> Callable[..., Any]:
     return _sql_errors(name)(fn)
 
 
-def _cell_to_parent(name: str, sql_type: str) -> Callable[..., Any]:
+def _cell_at_level(name: str, sql_type: str, kernel: Callable[[np.ndarray, int], Any]) -> Callable[..., Any]:
+    """``name(cell, level)``: one cell per row, ``kernel(ids, level)`` run once per distinct level."""
     def fn(cell: Any, level: Any) -> Any:
         valid = _valid(cell, level)
         ids, levels = _ids(name, cell, valid), _numbers(level, valid, np.int64)
-        parents = _by_level(levels, lambda rows, lv: cell_to_parent(ids[rows], lv), np.uint64)
-        return _ids_out(parents, valid, sql_type)
+        found = _by_level(levels, lambda rows, lv: kernel(ids[rows], lv), np.uint64)
+        return _ids_out(found, valid, sql_type)
 
     return _sql_errors(name)(fn)
 
@@ -266,7 +267,7 @@ def _per_kind(name: str, sql_type: str) -> tuple[list[str], str, Callable[..., A
     """Parameters, return type and implementation of ``name`` for ids of SQL type ``sql_type``."""
     ident = [sql_type]
     if name == "dggs_cell_to_parent":
-        return [sql_type, "BIGINT"], sql_type, _cell_to_parent(name, sql_type)
+        return [sql_type, "BIGINT"], sql_type, _cell_at_level(name, sql_type, cell_to_parent)
     if name == "dggs_cell_to_latlng":
         return ident, _LATLNG, _cell_to_latlng(name)
     if name == "dggs_cell_to_latlng_lat":
