@@ -44,6 +44,11 @@ def note(msg: str) -> None:
         print(f"note: {msg}", file=sys.stderr, flush=True)
 
 
+def notes_section() -> str:
+    """The recorded notes as a Markdown list under "Notes:" ("" when there are none)."""
+    return "Notes:\n\n" + "\n".join(f"- {n}" for n in NOTES) if NOTES else ""
+
+
 # --------------------------------------------------------------------------- inputs
 
 

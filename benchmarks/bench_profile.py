@@ -31,7 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
 import _common as c  # noqa: E402
-from _common import NOTES, fmt_ns, loadavg  # noqa: E402
+from _common import fmt_ns, loadavg  # noqa: E402
 
 
 def _loop(fn: Any, items: list[Any]) -> Any:
@@ -130,8 +130,7 @@ def render(tables: list[tuple[str, dict[str, Any]]], load: list[list[float]], co
         for name, t in times.items():
             out.append(f"| {name} | {fmt_ns(t['cpu'] / t['units']) if t and t.get('units') else '-'} |")
         out.append("")
-    if NOTES:
-        out.append("Notes:\n\n" + "\n".join(f"- {n}" for n in NOTES))
+    out.append(c.notes_section())
     return "\n".join(out) + "\n"
 
 

@@ -345,7 +345,7 @@ def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
         w.append(f"| peak RSS <= 600 MB | level {rss['level']}, {h:,} x {wd:,} px | {rss['peak'] / 1e6:,.0f} MB | | "
                  f"{'met' if ok else '**missed**'} |")
     if NOTES:
-        w.append("\nNotes:\n\n" + "\n".join(f"- {n}" for n in NOTES))
+        w.append("\n" + c.notes_section())
     return "\n".join(w) + "\n"
 
 
