@@ -31,6 +31,12 @@ TOLERANCE = 1e-5
 #: Sample pixels a tile side for the sagittas (raster.py cuts blocks in tiles of 32: one in four).
 _SAMPLE = 8
 
+# The 16 points round a pixel whose sagittas are measured, clockwise from its top-left corner, four an edge:
+# the corner, then a quarter, half and three quarters along (row and column offsets in pixels).
+_T = np.array([0.0, 0.25, 0.5, 0.75])
+_DR = np.concatenate([0 * _T, _T, 1 + 0 * _T, 1 - _T])
+_DC = np.concatenate([_T, 1 + 0 * _T, 1 - _T, 0 * _T])
+
 
 def points_per_edge(chord_error: float) -> int:
     """Points per edge keeping every piece within :data:`TOLERANCE`, given the error of one point an edge.
@@ -60,13 +66,8 @@ def chord_error(transformer: Any, transform: Any, row: int, col: int, rows: int,
     r = row + np.unique(np.linspace(0, rows - 1, min(rows, _SAMPLE)).astype(np.int64))
     c = col + np.unique(np.linspace(0, cols - 1, min(cols, _SAMPLE)).astype(np.int64))
     rr, cc = np.meshgrid(r.astype(np.float64), c.astype(np.float64), indexing="ij")
-    # 16 points round each pixel, clockwise from its top-left corner, four an edge: the corner, then a
-    # quarter, half and three quarters along
-    t = np.array([0.0, 0.25, 0.5, 0.75])
-    dr = np.concatenate([0 * t, t, 1 + 0 * t, 1 - t])
-    dc = np.concatenate([t, 1 + 0 * t, 1 - t, 0 * t])
     for scale in (1.0, 0.25, 0.0625):
-        lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + scale * dc, rr.reshape(-1, 1) + scale * dr)
+        lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + scale * _DC, rr.reshape(-1, 1) + scale * _DR)
         errors = chord_errors(lat, lng)
         if np.isfinite(errors).any():
             return float(np.nanmax(errors)) / scale
@@ -102,10 +103,7 @@ def tile_chord_errors(transformer: Any, transform: Any, row: int, col: int, rows
     r, tr = _samples(row, rows, tile)
     c, tc = _samples(col, cols, tile)
     rr, cc = np.meshgrid(r.astype(np.float64), c.astype(np.float64), indexing="ij")
-    t = np.array([0.0, 0.25, 0.5, 0.75])  # as chord_error: 16 points round each pixel
-    dr = np.concatenate([0 * t, t, 1 + 0 * t, 1 - t])
-    dc = np.concatenate([t, 1 + 0 * t, 1 - t, 0 * t])
-    lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + dc, rr.reshape(-1, 1) + dr)
+    lat, lng = lnglat(transformer, transform, cc.reshape(-1, 1) + _DC, rr.reshape(-1, 1) + _DR)
     errors = chord_errors(lat, lng)
     which = (tr[:, None] * (tc.max() + 1) + tc[None, :]).ravel()
     out = np.full((tr.max() + 1) * (tc.max() + 1), -np.inf)
