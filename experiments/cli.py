@@ -130,8 +130,9 @@ def tables(quick: bool, dggs_levels: int) -> None:
               help="Chapter 6: scheme(s) to draw (default: all seven, plus Figure 6.18).")
 @click.option("--levels", type=int, default=None,
               help="Chapter 6: deepest level (default: the thesis's depth; globes capped at 5).")
-@click.option("--variant", type=click.Choice(["dggs", "thesis"]), default="dggs", show_default=True,
-              help="thesis: the thesis's rules for 2:6, Catmull-Clark and 1:5 (files *_thesis.png).")
+@click.option("--variant", type=click.Choice(["dggs", "thesis"]), default="thesis", show_default=True,
+              help="Chapter 6 rules for 2:6, Catmull-Clark, 1:5: the thesis's (files *_thesis.png) or dggs's"
+              " (*_dggs.png); each figure names its rule.")
 @click.option("--quick", is_flag=True, help="Coarser samples and chapter 6 to level 3 (a few seconds).")
 def figures(outdir: str, chapter: str | None, schemes: tuple[str, ...], levels: int | None, variant: str,
             quick: bool) -> None:

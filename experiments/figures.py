@@ -32,8 +32,9 @@ from typing import Any
 import numpy as np
 
 from dggs.errors import DggsError
+from dggs.experiments.figures_ch6 import rule_label
 from dggs.experiments.mesh import Mesh
-from dggs.experiments.schemes import SCHEMES, get_scheme, iter_levels
+from dggs.experiments.schemes import SCHEMES, THESIS_SCHEMES, get_scheme, iter_levels
 
 __all__ = [
     "MissingPlotDependency",
@@ -178,7 +179,7 @@ def write_figures(
     schemes: Iterable[str] | None = None,
     levels: int | None = None,
     progress: bool = False,
-    variant: str = "dggs",
+    variant: str = "thesis",
 ) -> list[Path]:
     """Write the highlighting and distribution PNGs for each scheme.
 
@@ -195,8 +196,11 @@ def write_figures(
     progress : bool
         tqdm progress bar.
     variant : str
-        ``"dggs"`` or ``"thesis"`` (the thesis's rules for 2:6, Catmull-Clark
-        and 1:5; their files get a ``_thesis`` suffix).
+        ``"thesis"`` (default: the thesis's rules for 2:6, Catmull-Clark and
+        1:5, as the text beside its figures describes them) or ``"dggs"``
+        (dggs's own).  Those three schemes' files get a ``_thesis`` or
+        ``_dggs`` suffix, and every figure is labelled with its rule
+        (:func:`~dggs.experiments.figures_ch6.rule_label`).
 
     Returns
     -------
@@ -229,15 +233,16 @@ def write_figures(
             ax.set_title(f"level {m.level}: max {m.max_face_error_pct:.2f} %", fontsize=8)
             cb = fig.colorbar(coll, ax=ax, orientation="horizontal", fraction=0.05, pad=0.02)
             cb.ax.tick_params(labelsize=6)
-        fig.suptitle(f"Area highlighting - {scheme.title}{fig_a}; blue larger, purple smaller", fontsize=9)
-        slug = scheme.key.replace(":", "_") + ("_thesis" if scheme.variant == "thesis" else "")
+        rule = rule_label(scheme.key, scheme.variant)
+        fig.suptitle(f"Area highlighting - {scheme.title}{fig_a}; blue larger, purple smaller\n{rule}", fontsize=9)
+        slug = scheme.key.replace(":", "_") + (f"_{scheme.variant}" if scheme.key in THESIS_SCHEMES else "")
         path = out / f"area_highlighting_{slug}.png"
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)
         written.append(path)
         fig, ax = plt.subplots(figsize=(6.0, 3.6))
         plot_error_distribution(ax, {m.level: m.face_errors_pct for _, m in everything})
-        ax.set_title(f"Face area error distribution - {scheme.title}{fig_d}", fontsize=9)
+        ax.set_title(f"Face area error distribution - {scheme.title}{fig_d}\n{rule}", fontsize=9)
         path = out / f"error_distribution_{slug}.png"
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)
@@ -251,7 +256,7 @@ def write_all(
     schemes: Iterable[str] | None = None,
     levels: int | None = None,
     progress: bool = False,
-    variant: str = "dggs",
+    variant: str = "thesis",
     quick: bool = False,
 ) -> list[Path]:
     """Write the figures of the given chapters ("4", "5", "6"); returns the paths.

@@ -1,4 +1,10 @@
-"""Figure 6.18: why Split (1:9)'s edge points must sit symmetrically on each edge (thesis §6.3.5).
+"""Figure 6.18 (Split (1:9)'s symmetric edge points, thesis §6.3.5) and the rule labels of Figures 6.14-6.28.
+
+:func:`rule_label` names the rule a chapter-6 figure is drawn with: the
+thesis's (the default of ``dggs experiments figures``, as the text beside
+the thesis's figures describes them: Catmull-Clark's level 1 "all white",
+Split (2:6)'s errors growing to 16.63 %) or dggs's own (``--variant dggs``:
+Split (2:6) at 0.30 %, Catmull-Clark and Split (1:5) area-preserving).
 
 The thesis: "Split (1:9) appears to have a few degrees of freedom.  A
 trivial test concluded that this is not actually the case ... Each outer
@@ -36,7 +42,45 @@ import numpy as np
 from dggs.experiments.mesh import Mesh, face_areas, icosahedron, normalize
 from dggs.experiments.split_triangles import point_on_edge
 
-__all__ = ["split_1_9_fractions", "write_figure_6_18"]
+__all__ = ["split_1_9_fractions", "write_figure_6_18", "rule_label", "RULE_LABELS"]
+
+#: What each variant of a scheme whose rules differ does, for the figures' labels.
+RULE_LABELS: dict[tuple[str, str], str] = {
+    ("2:6", "thesis"): "thesis's rule: D at the fixed chord fraction 0.345 from C, reused at every level",
+    ("2:6", "dggs"): "dggs's rule, not the thesis's: per-face equal chord areas ('area' placement)",
+    ("catmull-clark", "thesis"): "thesis's rule: Catmull-Clark point rules, radius from the raw mesh, "
+    "projected, no rescale",
+    ("catmull-clark", "dggs"): "dggs's rule, not the thesis's: projected midpoints, rescaled after projecting",
+    ("1:5", "thesis"): "thesis's rule: c_f + 0.634 (m_vw - c_f), never rescaled",
+    ("1:5", "dggs"): "dggs's rule, not the thesis's: (v + w + c_f) / 3, rescaled",
+    ("1:9", "thesis"): "thesis's rule, edge thirds at equal arcs (the thesis does not say where; our choice)",
+    ("1:9", "dggs"): "thesis's rule, edge thirds at equal arcs (the thesis does not say where; our choice)",
+}
+
+
+def rule_label(key: str, variant: str) -> str:
+    """The label naming the rule a chapter-6 figure of scheme ``key`` is drawn with.
+
+    Parameters
+    ----------
+    key : str
+        Scheme key (``"2:6"``, ``"catmull-clark"``, ...).
+    variant : str
+        ``"thesis"`` or ``"dggs"``.
+
+    Examples
+    --------
+    >>> rule_label("2:6", "thesis")
+    "thesis's rule: D at the fixed chord fraction 0.345 from C, reused at every level"
+    >>> rule_label("1:4", "dggs")
+    "thesis's rule (dggs's is the same)"
+    """
+    if (key, variant) in RULE_LABELS:
+        return RULE_LABELS[(key, variant)]
+    if key == "latlng":
+        return "chapter 7's proposal, dggs's construction"
+    return "thesis's rule (dggs's is the same)"
+
 
 #: The nine children of Split (1:9) in terms of the face's corners a, b, c, the two points on each edge
 #: (1 nearer its start corner, 2 nearer its end: ab1, ab2, bc1, bc2, ca1, ca2) and the centre g.
@@ -70,7 +114,7 @@ def split_1_9_fractions(s: float, u: float, mode: str = "face", placement: str =
     ico = icosahedron()
     v, faces = ico.vertices, ico.faces[0]
     wanted: dict[tuple[int, int], list[np.ndarray]] = {}
-    tris = []
+    corners: list[list[np.ndarray]] = []
     for a, b, c in faces:
         pts = {"a": v[a], "b": v[b], "c": v[c], "g": normalize(v[[a, b, c]].mean(axis=0))}
         for (x, y), name in (((a, b), "ab"), ((b, c), "bc"), ((c, a), "ca")):
@@ -82,8 +126,8 @@ def split_1_9_fractions(s: float, u: float, mode: str = "face", placement: str =
                 p2 = point_on_edge(v[[y]], v[[x]], s, 1.0, placement)[0]
             pts[name + "1"], pts[name + "2"] = p1, p2
             wanted.setdefault((min(x, y), max(x, y)), []).append(np.array([p1, p2]) if x < y else np.array([p2, p1]))
-        tris += [[pts[k] for k in child] for child in _CHILDREN]
-    tris = np.array(tris)
+        corners += [[pts[k] for k in child] for child in _CHILDREN]
+    tris = np.array(corners)
     gaps = [float(np.linalg.norm(w[0] - w[1], axis=1).max() / np.linalg.norm(v[i] - v[j]))
             for (i, j), w in wanted.items()]
     flat = Mesh(tris.reshape(-1, 3), (np.arange(len(tris) * 3).reshape(-1, 3),))
