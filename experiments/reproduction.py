@@ -37,11 +37,12 @@ SYMBOLS = {"reproduced": "=", "close": "~", "differs": "x", "": " "}
 
 #: Printed cells that are typos or noise, by (table, scheme, level).
 CELL_NOTES: dict[tuple[str, str, int], str] = {
-    ("6.6", "2:6", 6): "printed 12.96 looks like 12.69 with the digits swapped (12.69 continues the series "
-    "8.92, ..., 16.63; Table 6.7's 2.27e04 is ten times 12.96 % of a face, so that table was derived from "
-    "the printed 6.6)",
-    ("6.7", "2:6", 6): "printed 2.27e04: ten times 12.96 % of a face (2.27e03), itself a typo for 12.69 % "
-    "(2.22e03)",
+    ("6.6", "2:6", 6): "printed 12.96, ours 12.69: likely transposed digits, not proven.  For: the thesis's "
+    "rule reproduces every other cell of the row, and 12.69 continues its steps (+3.09, +3.55, +3.77, +3.94; "
+    "12.96 gives +4.04 then +3.67).  Against: the thesis's own Table 6.7 carries 12.96's digits (2.27e04, ten "
+    "times 12.96 % of a 17,492 km^2 face = 2,267 km^2; 12.69 % gives 2,220), so its run may have printed 12.96",
+    ("6.7", "2:6", 6): "printed 2.27e04: ten times 12.96 % of a face (2,267 km^2, a factor-10 slip); "
+    "12.69 % (ours, Table 6.6's likely transposed cell) gives 2.22e03",
     ("6.7", "1:5", 6): "printed 5.69e05: a typo for 5.69e04 (the series falls by about 2.6 a level)",
     ("6.3", "1:5", 6): "printed 0.00 between 0.10 and 0.01: a typo (Table 6.5's 2.13 km is 0.03 %)",
     ("6.7", "1:3", 1): "printed 85.0 km^2 where Table 6.6 prints 0.00 %: the thesis's rounding noise "

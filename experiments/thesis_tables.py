@@ -131,9 +131,10 @@ DGGS_BEST_MAX_FACE_ERROR_PCT = 16.63
 #: Inconsistencies in the printed tables, as found while transcribing.
 NOTES: tuple[str, ...] = (
     "Table 6.7, 2:6 level 6 prints 2.27e04 km^2; Table 6.6's 12.96 % of "
-    "510,072,000/29,160 km^2 is 2.27e03 (a factor-10 typo).",
-    "Table 6.6, 2:6 level 6 prints 12.96 %; the thesis's own rule gives 12.69 % "
-    "(digits swapped; every other cell of the row reproduces).",
+    "510,072,000/29,160 km^2 is 2.27e03 (a factor-10 slip).",
+    "Table 6.6, 2:6 level 6 prints 12.96 %; the thesis's own rule gives 12.69 %: likely transposed "
+    "digits (every other cell of the row reproduces and 12.69 continues its steps), not proven: "
+    "Table 6.7's 2.27e04 carries 12.96's digits (12.96 % of a face is 2,267 km^2, 12.69 % 2,220).",
     "Table 6.7, 1:5 level 6 prints 5.69e05 km^2, a typo for 5.69e04.",
     "Table 6.7, 1:3 and 1:6 level 1 print 85.0 and 42.5 km^2 where Table 6.6 "
     "prints 0.00 %: about 1e-5 relative, the thesis's floating-point noise.",

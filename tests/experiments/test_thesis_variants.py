@@ -68,7 +68,7 @@ def test_split_2_6_thesis_placement(rows):
     assert _col(r, "max_displacement_pct") == pytest.approx(T64_26, abs=HALF)
     assert _col(r, "avg_displacement_km") == pytest.approx(T65_26, abs=HALF)
     err = _col(r, "max_face_error_pct")
-    # levels 1-4 and 7 to the printed digit; level 5 is 8.914 (printed 8.92); level 6 prints 12.96 for 12.69
+    # levels 1-4 and 7 to the printed digit; level 5 is 8.914 (printed 8.92); level 6 prints 12.96 (likely transposed from 12.69)
     for level in (1, 2, 3, 4, 7):
         assert err[level - 1] == pytest.approx(T66_26[level - 1], abs=HALF), level
     assert err[4] == pytest.approx(T66_26[4], abs=0.01)
@@ -143,3 +143,17 @@ def test_cli_text_marks_cells():
     r = CliRunner().invoke(experiments, ["subdivision", "--scheme", "cc", "--levels", "2", "--variant", "thesis"])
     assert r.exit_code == 0, r.output
     assert "55.78= (55.78)" in r.output and "thesis's rule" in r.output
+
+
+def test_2_6_level_6_is_likely_transposed_not_a_proven_typo():
+    from dggs.experiments.reproduction import CELL_NOTES, mark
+    from dggs.experiments.thesis_tables import NOTES, TABLE_6_2, TABLE_6_6, TABLE_6_7
+
+    note = CELL_NOTES[("6.6", "2:6", 6)]
+    assert "likely transposed" in note and "typo" not in note
+    assert all("likely transposed" in n for n in NOTES if "12.96 %;" in n)
+    # The evidence the note gives, from the printed tables: Table 6.7 carries 12.96's digits.
+    face = 510_072_000 / TABLE_6_2["2:6"][5]
+    assert TABLE_6_7["2:6"][5] / 10 == pytest.approx(TABLE_6_6["2:6"][5] / 100 * face, rel=5e-3)
+    assert TABLE_6_7["2:6"][5] / 10 != pytest.approx(12.69 / 100 * face, rel=5e-3)
+    assert mark("6.6", "2:6", 6, 12.6877, "thesis") == ("differs", note)
