@@ -1,0 +1,355 @@
+"""The vertex-oriented great circle projection of the icosahedron (IVEA), forward and inverse.
+
+van Leeuwen, D. and Strebe, D. (2006), "A 'Slice-and-Dice' approach to area
+equivalence in polyhedral map projections", Cartography and Geographic
+Information Science 33(4): 269-286; thesis §3.1.5 and §3.1.7 (Figures
+3.13-3.14).  An equal-area map of each spherical face onto its planar face,
+like Snyder's (:mod:`.snyder`), with the same faces, the same face frames and
+the same planar triangles, so that the Split (2:6) hierarchy and both id forms
+are unchanged: only the map between a face and its plane differs.
+
+The map works on the *natural triangle* (thesis §3.1.5): the face vertex V,
+the face centre C and the edge midpoint M, which is our level-1 cell.  Its
+angles on the sphere are 36 degrees at V, 60 at C and 90 at M, so its area is
+6 degrees, ``pi / 30`` (one 120th of the sphere).
+
+*Slice* (thesis §3.1.7, first equation): the great circle from V through P
+meets CM at D.  With ``rho`` the angle MVD at V and ``delta`` the angle VDM at
+D, the right triangle VMD has area ``rho + delta - pi / 2`` (Girard); Napier's
+rule in that right triangle gives ``cos delta = cos VM sin rho``, so the area is
+``A(rho) = rho - asin(cos VM sin rho)``.  D' divides M'C' so that triangle V'M'D'
+holds the same share of the planar triangle: ``|M'D'| / |M'C'| = A / (pi / 30)``.
+
+*Dice* (thesis §3.1.7, second equation): P' lies on V'D' with
+``(|V'P'| / |V'D'|)**2 = (1 - cos VP) / (1 - cos VD)``, i.e. ``|V'P'| / |V'D'| =
+sin(VP / 2) / sin(VD / 2)``, where ``tan VD = tan VM / cos rho`` (Napier again).
+
+*Inverse* (derived here; docs/grid.md "The IVEA projection"): the planar point
+gives ``s = |V'P'| / |V'D'|`` and ``t = |M'D'| / |M'C'|`` by one line
+intersection.  ``A = t pi / 30 = rho - asin(k sin rho)`` with ``k = cos VM``
+reads ``k sin rho = sin(rho - A) = sin rho cos A - cos rho sin A``, so
+``tan rho = sin A / (cos A - k)``: a closed form (``cos A >= cos 6° > k = 0.8507``,
+so the denominator never vanishes).  Then ``VD`` from ``rho``, and ``VP`` from
+``sin(VP / 2) = s sin(VD / 2)``.  No iteration.
+
+Examples
+--------
+>>> face, x, y = forward(0.0, 0.0)
+>>> int(face), round(float(x), 8), round(float(y), 8)
+(2, -0.21071309, -0.34773547)
+>>> lat, lng = inverse(face, x, y)
+>>> abs(round(float(lat), 10)), abs(round(float(lng), 10))
+(0.0, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from numba import njit, prange
+
+from dggs.errors import CoordinateError, DggsValueError
+from dggs.geometry._parallel import loops
+from dggs.geometry._validate import as_latlng
+from dggs.geometry.authalic import WGS84, Ellipsoid
+from dggs.geometry.constants import FACE_CIRCUMRADIUS, FACE_INRADIUS, G_ARC, ROT_COS, ROT_SIN, SQRT3, TINY
+from dggs.geometry.icosahedron import ISEA, Orientation
+from dggs.geometry.kernel import nearest_face, sector_of
+from dggs.geometry.snyder import checked_face_xy
+
+__all__ = ["forward", "inverse", "Projection", "face_forward", "face_inverse", "NATURAL_AREA", "VM_ARC"]
+
+_H = 0.5 * SQRT3
+#: Area of the natural triangle on the unit sphere: 36 + 60 + 90 - 180 degrees (Girard).
+NATURAL_AREA = math.pi / 30
+# The natural triangle in face-frame components (c, n, e) = (towards the centre, north, east):
+# V at azimuth 0 and arc g from C; M at azimuth 60 and arc r from C, tan r = tan g cos 60 (Napier).
+_R_IN = math.atan(0.5 * math.tan(G_ARC))
+_V = np.array([math.cos(G_ARC), math.sin(G_ARC), 0.0])
+_M = np.array([math.cos(_R_IN), math.sin(_R_IN) * 0.5, math.sin(_R_IN) * _H])
+_C = np.array([1.0, 0.0, 0.0])
+#: cos VM = cos CV / cos CM (spherical Pythagoras in the right triangle CMV); VM is half an edge.
+COS_VM = math.cos(G_ARC) / math.cos(_R_IN)
+VM_ARC = math.acos(COS_VM)
+_TAN_VM2 = math.tan(VM_ARC) ** 2
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    out: np.ndarray = v / np.linalg.norm(v)
+    return out
+
+
+# Tangent directions at V: towards M, and the one 90 degrees from it on C's side.
+_TM = _unit(_M - (_V @ _M) * _V)
+_TC = _unit(_C - (_V @ _C) * _V)
+_TN = _unit(_TC - (_TC @ _TM) * _TM)
+#: det(V, T_M, T_N) = +-1: the sign that makes the angle at V positive towards C.
+_SGN = float(np.sign(np.linalg.det(np.stack([_V, _TM, _TN]))))
+_VX, _VY, _VZ = (float(v) for v in _V)
+_MX, _MY, _MZ = (float(v) for v in _M)
+_VM = float(_V @ _M)
+_T = (float(_TM[0]), float(_TM[1]), float(_TM[2]), float(_TN[0]), float(_TN[1]), float(_TN[2]))
+# The planar natural triangle: V' = (0, R), M' = r (sin 60, cos 60), C' = (0, 0); (x, y) = (east, north).
+_RV = FACE_CIRCUMRADIUS
+_RM = FACE_INRADIUS
+
+
+# ----------------------------------------------------------------------------
+# The compiled map of the natural triangle (c, n, e) <-> (x, y)
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def natural_forward(c: float, n: float, e: float):
+    """Unit vector (c, n, e) in the natural triangle (azimuth 0..60) -> planar (x, y) (van Leeuwen & Strebe 2006)."""
+    det = _VX * (_MY * e - _MZ * n) - _VY * (_MX * e - _MZ * c) + _VZ * (_MX * n - _MY * c)
+    sin_part = _SGN * det  # |V x M| |V x P| sin rho
+    cos_part = _MX * c + _MY * n + _MZ * e - (_VX * c + _VY * n + _VZ * e) * _VM  # ... cos rho
+    h = math.hypot(sin_part, cos_part)
+    if h == 0.0:  # P = V (or its antipode)
+        return 0.0, _RV
+    rho = math.atan2(sin_part, cos_part)
+    cos_rho = cos_part / h
+    area = rho - math.asin(COS_VM * (sin_part / h))  # rho + delta - pi / 2, delta by Napier's rule
+    cos_vd = cos_rho / math.sqrt(cos_rho * cos_rho + _TAN_VM2)  # tan VD = tan VM / cos rho
+    half_vp = 0.5 * math.sqrt((c - _VX) ** 2 + (n - _VY) ** 2 + (e - _VZ) ** 2)  # sin(VP / 2)
+    s = half_vp / math.sqrt(0.5 * (1.0 - cos_vd))  # the dice: |V'P'| / |V'D'|
+    t = area / NATURAL_AREA  # the slice: |M'D'| / |M'C'|
+    dx, dy = (1.0 - t) * _RM * _H, (1.0 - t) * _RM * 0.5
+    return s * dx, _RV + s * (dy - _RV)
+
+
+@njit(cache=True, nogil=True)
+def natural_inverse(x: float, y: float):
+    """Planar (x, y) in the natural triangle -> unit vector (c, n, e): the closed-form inverse (docs/grid.md)."""
+    qx, qy = x, y - _RV
+    s = (0.5 * qx - _H * qy) / (_H * _RV)  # V' + q / s lies on the line M'C' (azimuth 60)
+    if s <= TINY:
+        return _VX, _VY, _VZ
+    lam = (qx / s) * _H + (_RV + qy / s) * 0.5  # |C'D'|
+    area = (1.0 - lam / _RM) * NATURAL_AREA
+    sin_a, cos_a = math.sin(area), math.cos(area)
+    rho = math.atan2(sin_a, cos_a - COS_VM)  # tan rho = sin A / (cos A - cos VM)
+    sin_rho, cos_rho = math.sin(rho), math.cos(rho)
+    cos_vd = cos_rho / math.sqrt(cos_rho * cos_rho + _TAN_VM2)
+    half = min(s * math.sqrt(0.5 * (1.0 - cos_vd)), 1.0)  # sin(VP / 2)
+    cos_x = 1.0 - 2.0 * half * half
+    sin_x = 2.0 * half * math.sqrt(1.0 - half * half)
+    a, b = sin_x * cos_rho, sin_x * sin_rho
+    return (cos_x * _VX + a * _T[0] + b * _T[3], cos_x * _VY + a * _T[1] + b * _T[4],
+            cos_x * _VZ + a * _T[2] + b * _T[5])
+
+
+@njit(cache=True, nogil=True)
+def face_forward(frames: np.ndarray, face: int, px: float, py: float, pz: float):
+    """Unit vector -> ``(x, y)`` in the frame of ``face`` (as :func:`.kernel.face_forward`, by IVEA)."""
+    c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
+    n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
+    e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
+    k = sector_of(e, n)  # the 120-degree sector by the azimuth of (east, north)
+    rc, rs = ROT_COS[k], ROT_SIN[k]
+    e, n = e * rc - n * rs, n * rc + e * rs  # turned by -120 k degrees
+    mirror = 0.5 * e - _H * n > 0.0  # azimuth past 60: the mirror image across azimuth 60
+    if mirror:
+        n, e = -0.5 * n + _H * e, _H * n + 0.5 * e
+    x, y = natural_forward(c, n, e)
+    if mirror:
+        y, x = -0.5 * y + _H * x, _H * y + 0.5 * x
+    return x * rc + y * rs, y * rc - x * rs
+
+
+@njit(cache=True, nogil=True)
+def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
+    """Unit vector -> ``(face, x, y)``: the nearest face (as :func:`.kernel.forward_unit`), then IVEA."""
+    face = nearest_face(centres, px, py, pz)
+    return (face, *face_forward(frames, face, px, py, pz))
+
+
+@njit(cache=True, nogil=True)
+def face_inverse(frames: np.ndarray, face: int, x: float, y: float):
+    """Face-frame ``(x, y)`` -> unit vector (as :func:`.kernel.inverse_unit`, by IVEA)."""
+    k = sector_of(x, y)
+    rc, rs = ROT_COS[k], ROT_SIN[k]
+    x, y = x * rc - y * rs, y * rc + x * rs
+    mirror = 0.5 * x - _H * y > 0.0
+    if mirror:
+        y, x = -0.5 * y + _H * x, _H * y + 0.5 * x
+    c, n, e = natural_inverse(x, y)
+    if mirror:
+        n, e = -0.5 * n + _H * e, _H * n + 0.5 * e
+    n, e = n * rc - e * rs, e * rc + n * rs
+    ox = c * frames[face, 0, 0] + n * frames[face, 1, 0] + e * frames[face, 2, 0]
+    oy = c * frames[face, 0, 1] + n * frames[face, 1, 1] + e * frames[face, 2, 1]
+    oz = c * frames[face, 0, 2] + n * frames[face, 1, 2] + e * frames[face, 2, 2]
+    return ox, oy, oz
+
+
+def _forward_rad(lat, lng, centres, frames, face, x, y):
+    """Spherical radians -> face, x, y on the unit sphere."""
+    for i in prange(lat.shape[0]):
+        cl = math.cos(lat[i])
+        face[i], x[i], y[i] = forward_unit(centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i]))
+
+
+def _inverse_deg(face, x, y, frames, lat, lng):
+    """Face-frame points -> spherical (lat, lng) degrees."""
+    for i in prange(face.shape[0]):
+        px, py, pz = face_inverse(frames, face[i], x[i], y[i])
+        lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
+        lng[i] = math.degrees(math.atan2(py, px))
+
+
+forward_rad = loops(_forward_rad)
+inverse_deg = loops(_inverse_deg)
+
+
+# ----------------------------------------------------------------------------
+# The checked public API (as dggs.geometry.snyder's)
+# ----------------------------------------------------------------------------
+def _real(value: Any, name: str) -> None:
+    """Raise :class:`CoordinateError` naming a value that is not a real number (str, bool, None...)."""
+    items = value if isinstance(value, (list, tuple)) else [value]
+    arr = np.asarray(value, dtype=object) if isinstance(value, (list, tuple)) else np.asarray(value)
+    if arr.dtype.kind in "iuf":
+        return
+    for i, v in enumerate(np.ravel(np.asarray(items, dtype=object))):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
+            raise CoordinateError(f"{name} {v!r} at index {i} is not a real number")
+
+
+def _run_forward(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
+    geo = orientation.geometry
+    n = lat.shape[0]
+    face, x, y = np.empty(n, dtype=np.intp), np.empty(n), np.empty(n)
+    forward_rad(n, np.ascontiguousarray(lat), np.ascontiguousarray(lng), np.ascontiguousarray(geo.centres),
+                np.ascontiguousarray(geo.frames), face, x, y)
+    return face, x, y
+
+
+def forward(lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, Any, Any]:
+    """Project spherical latitude/longitude (degrees) to a face and face-plane ``(x, y)`` by IVEA.
+
+    The same faces, face frames and planar triangles as :func:`dggs.geometry.snyder.forward`.
+
+    Parameters
+    ----------
+    lat, lng : float or array_like
+        Latitude and longitude on the sphere, degrees.  Longitudes wrap.
+    orientation : Orientation
+        Where the icosahedron sits (default: PROJ's ISEA orientation).
+
+    Returns
+    -------
+    face : int or ndarray of int
+        Face index 0..19 (PROJ's numbering).
+    x, y : float or ndarray
+        Planar coordinates in the face frame, unit sphere.
+
+    Raises
+    ------
+    CoordinateError
+        Coordinates that are not real numbers, NaN, infinite, out of range, or mismatched shapes.
+
+    Examples
+    --------
+    >>> face, x, y = forward([90.0, -90.0], [0.0, 0.0])
+    >>> face.tolist()
+    [0, 16]
+    """
+    _real(lat, "latitude")
+    _real(lng, "longitude")
+    lat_a, lng_a, scalar = as_latlng(lat, lng)
+    face, x, y = _run_forward(np.radians(lat_a), np.radians(lng_a), orientation)
+    if scalar:
+        return int(face[0]), float(x[0]), float(y[0])
+    shape = np.shape(np.broadcast(np.asarray(lat), np.asarray(lng)))
+    return face.reshape(shape), x.reshape(shape), y.reshape(shape)
+
+
+def inverse(face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple[Any, Any]:
+    """Map face-plane ``(x, y)`` on ``face`` back to spherical latitude/longitude (degrees) by IVEA.
+
+    The closed form derived in docs/grid.md ("The IVEA projection"): no iteration.
+
+    Parameters
+    ----------
+    face : int or array_like of int
+        Face index 0..19.
+    x, y : float or array_like
+        Planar coordinates in the face frame, unit sphere.
+    orientation : Orientation
+        The icosahedron's orientation.
+
+    Returns
+    -------
+    lat, lng : float or ndarray
+        Spherical latitude and longitude, degrees; longitude in -180..180.
+
+    Raises
+    ------
+    CoordinateError
+        A face outside 0..19, coordinates that are not real numbers, NaN or infinite, or a point off its face.
+
+    Examples
+    --------
+    >>> lat, lng = inverse(0, 0.0, 0.0)  # the face centre, as Snyder's
+    >>> round(float(lat), 6), round(float(lng), 6)
+    (69.094843, -78.75)
+    """
+    if not isinstance(orientation, Orientation):
+        raise DggsValueError(f"orientation {orientation!r} is not an Orientation")
+    face_a, x_a, y_a, shape, scalar = checked_face_xy(face, x, y)
+    n = face_a.shape[0]
+    lat, lng = np.empty(n), np.empty(n)
+    inverse_deg(n, np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a),
+                np.ascontiguousarray(y_a), np.ascontiguousarray(orientation.geometry.frames), lat, lng)
+    if scalar:
+        return float(lat[0]), float(lng[0])
+    return lat.reshape(shape), lng.reshape(shape)
+
+
+class Projection:
+    """IVEA on an ellipsoid (via authalic latitude) or a sphere, in metres (as :class:`.snyder.Projection`).
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        Default WGS84; use :func:`dggs.geometry.authalic.sphere` for spherical mode.
+    orientation : Orientation
+        Default :data:`dggs.geometry.icosahedron.ISEA`.
+
+    Examples
+    --------
+    >>> p = Projection()
+    >>> face, x, y = p.forward(0.0, 0.0)
+    >>> int(face), round(float(y))
+    (2, -2215425)
+    >>> [abs(round(v, 9)) for v in p.inverse(face, x, y)]
+    [0.0, 0.0]
+    """
+
+    def __init__(self, ellipsoid: Ellipsoid = WGS84, orientation: Orientation = ISEA) -> None:
+        self.ellipsoid = ellipsoid
+        self.orientation = orientation
+        self.radius = ellipsoid.authalic_radius
+
+    def __repr__(self) -> str:
+        return f"ivea.Projection(ellipsoid={self.ellipsoid.name}, orientation={self.orientation})"
+
+    def forward(self, lat: Any, lng: Any) -> tuple[Any, Any, Any]:
+        """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
+        _real(lat, "latitude")
+        _real(lng, "longitude")
+        lat_a, lng_a, scalar = as_latlng(lat, lng)
+        beta = self.ellipsoid.geodetic_to_authalic(np.radians(lat_a))
+        face, x, y = _run_forward(np.asarray(beta, dtype=np.float64), np.radians(lng_a), self.orientation)
+        x, y = x * self.radius, y * self.radius
+        if scalar:
+            return int(face[0]), float(x[0]), float(y[0])
+        return face, x, y
+
+    def inverse(self, face: Any, x: Any, y: Any) -> tuple[Any, Any]:
+        """``(face, x, y)`` in metres -> geodetic ``(lat, lng)`` in degrees."""
+        lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), self.orientation)
+        lat = self.ellipsoid.authalic_to_geodetic_deg(lat)
+        return (float(lat), lng) if np.ndim(lat) == 0 else (lat, lng)
