@@ -39,70 +39,26 @@ from __future__ import annotations
 import copy
 import json
 from functools import cache
-from pathlib import Path
 from typing import Any
 
 import pytest
 
 from .conftest import DGGRS
-
-REF = Path(__file__).resolve().parents[2] / ".." / "shared" / "ref" / "ogcapi-dggs"
-BUNDLED = REF / "ogcapi-dggs-1.bundled.json"
-pytestmark = pytest.mark.skipif(
-    not BUNDLED.is_file(), reason=f"the standard's bundled OpenAPI is not at {BUNDLED.resolve()} (../shared/ref)"
+from .standard import (
+    HOST,
+    OPENAPI_30,
+    REF,
+    corrected,
+    geometry_schemas,
+    oas30_validate,
+    raw_standard,
+    requires_standard,
 )
 
-HOST = "http://testserver"
-OPENAPI_30 = "application/vnd.oai.openapi+json;version=3.0"
+pytestmark = requires_standard
+
 ROOT = f"/dggs/{DGGRS}"
 COLL = f"/collections/sample/dggs/{DGGRS}"
-
-
-def raw_standard() -> dict[str, Any]:
-    """The bundled OpenAPI as published."""
-    return json.loads(BUNDLED.read_text(encoding="utf-8"))  # type: ignore[no-any-return]
-
-
-def geometry_schemas(doc: dict[str, Any]) -> list[dict[str, Any]]:
-    """The standard's own GeoJSON Polygon and MultiPolygon geometry schemas (from its FeatureCollection)."""
-    feature = doc["components"]["schemas"]["FeatureCollection"]["properties"]["features"]["items"]
-    options = feature["properties"]["geometry"]["oneOf"]
-    return [o for o in options if o["title"] in ("GeoJSON Polygon", "GeoJSON MultiPolygon")]
-
-
-@cache
-def corrected() -> dict[str, Any]:
-    """The bundled OpenAPI with the deviations 1 and 2 of the module docstring corrected, served here."""
-    doc = raw_standard()
-    doc["servers"] = [{"url": HOST}]
-    schemas = doc["components"]["schemas"]
-    schemas["extent"] = schemas["extent"]["allOf"][0]  # deviation 1
-    # deviation 2: the zone's Feature (the application/geo+json zone information) moves to its own schema
-    # with a Polygon or MultiPolygon geometry; zone-info's geometry is the bare geometry
-    feature = copy.deepcopy(schemas["zone-info"]["properties"]["geometry"]["allOf"][1])
-    feature["properties"]["geometry"] = {"oneOf": geometry_schemas(doc)}
-    schemas["zone-feature"] = feature
-    schemas["zone-info"]["properties"]["geometry"] = {"oneOf": geometry_schemas(doc)}
-    geo = doc["paths"]["/dggs/{dggrsId}/zones/{zoneId}"]["get"]["responses"]["200"]["content"]["application/geo+json"]
-    geo["schema"]["allOf"][1] = {"$ref": "#/components/schemas/zone-feature"}
-    # deviation 5: the bundled file is the example server's API; its path parameters enumerate that server's
-    # DGGRSs and collections.  An implementation's own definition lists its own: this server's.
-    schemas["all-dggrs"] = {"type": "string", "enum": [DGGRS]}
-    schemas["all-collections"] = {"type": "string", "enum": ["sample"]}
-    zones = _ok_content(doc, "/dggs/{dggrsId}/zones")
-    zones["application/x-binary"] = {"schema": {"type": "string", "format": "binary"}}  # deviation 6
-    doc["components"]["parameters"]["f-zoneData"]["schema"]["enum"].append("ubjson")  # deviation 7
-    data = _ok_content(doc, "/dggs/{dggrsId}/zones/{zoneId}/data")
-    data["application/ubjson"] = copy.deepcopy(data["application/json"])
-    return doc
-
-
-def _ok_content(doc: dict[str, Any], path: str) -> dict[str, Any]:
-    """The content of the 200 response of ``GET path`` (the shared response component it refers to)."""
-    ok = doc["paths"][path]["get"]["responses"]["200"]
-    if "$ref" in ok:
-        ok = doc["components"]["responses"][ok["$ref"].rsplit("/", 1)[-1]]
-    return ok["content"]  # type: ignore[no-any-return]
 
 
 def _loads(data: bytes, **media_parameters: str) -> Any:
@@ -127,18 +83,6 @@ def referee() -> Any:
     config = Config(extra_media_type_deserializers={**dict.fromkeys(json_types, _loads),
                                                     "application/ubjson": _ubjson, "application/x-binary": _binary})
     return OpenAPI.from_dict(copy.deepcopy(corrected()), config=config)
-
-
-def oas30_validate(schema: dict[str, Any], document: Any, doc: dict[str, Any] | None = None) -> None:
-    """Validate ``document`` against an OpenAPI 3.0 schema of the standard ($refs resolved in ``doc``)."""
-    from openapi_schema_validator import OAS30Validator
-    from referencing import Registry, Resource
-    from referencing.jsonschema import DRAFT4
-
-    root = doc if doc is not None else corrected()
-    registry: Registry[Any] = Registry().with_resource("urn:standard", Resource(root, DRAFT4))
-    text = json.dumps(schema).replace('"#/components/', '"urn:standard#/components/')
-    OAS30Validator(json.loads(text), registry=registry).validate(document)
 
 
 def check(client: Any, url: str, headers: dict[str, str] | None = None) -> Any:
