@@ -110,6 +110,9 @@ _LAZY: dict[str, str] = {
     "cell_centers_distance": "dggs.index.lines",
     "geodesic_to_cells": "dggs.index.lines",
     "great_circle_distance": "dggs.index.lines",
+    "grid_path_cells": "dggs.index.paths",
+    "line_to_cells": "dggs.index.paths",
+    "circle_to_cells": "dggs.index.circles",
     # regions and measures
     "polygon_to_cells": "dggs.index.polyfill",
     "cell_area": "dggs.index.measure",
@@ -180,6 +183,9 @@ __all__ = [
     "great_circle_distance",
     "cell_centers_distance",
     "geodesic_to_cells",
+    "grid_path_cells",
+    "line_to_cells",
+    "circle_to_cells",
     # regions and measures
     "polygon_to_cells",
     "cell_area",
@@ -225,6 +231,7 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
+    from dggs.index.circles import circle_to_cells
     from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
     from dggs.index.hierarchy import (
         cell_to_center_child,
@@ -241,6 +248,7 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
     from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
     from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
     from dggs.index.measure import cell_area, level_table
+    from dggs.index.paths import grid_path_cells, line_to_cells
     from dggs.index.points import (
         cell_to_boundary,
         cell_to_latlng,
