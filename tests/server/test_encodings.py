@@ -72,6 +72,40 @@ def test_uint64_zone_list_honours_the_limits_and_bad_input(client, small_client)
     check(client.get(f"{ROOT}/zones/C4", headers={"accept": BINARY}), 406, BINARY)
 
 
+def grid_md_uint64(zone: str) -> int:
+    """A zone's 64-bit id written from docs/grid.md's bit table, by hand (not by ``dggs.str_to_int``).
+
+    Bit 62 the marker, bits 61-57 the face, 56-54 the level-1 digit + 1, then for level k = 2..28 the digit + 1
+    at bits 2(28-k)+1..2(28-k).
+    """
+    value = (1 << 62) | ((ord(zone[0]) - ord("A")) << 57)
+    if len(zone) > 1:
+        value |= (int(zone[1]) + 1) << 54
+    for k, digit in enumerate(zone[2:], start=2):
+        value |= (int(digit) + 1) << (2 * (28 - k))
+    return value
+
+
+def test_grid_md_oracle_matches_its_own_example():
+    assert grid_md_uint64("C401") == 4996743786567565312  # docs/grid.md's worked example
+
+
+@pytest.mark.parametrize(("lat", "lng"), [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (0.0, -180.0), (10.0, 179.9999),
+                                          (58.282525588539, 11.25), (45.0, 7.0)])
+def test_uint64_zone_list_layout_per_the_requirement(client, lat, lng):
+    # /req/zone-uint64/content, each part: a first 64-bit count of the zones returned, then one 64-bit integer per
+    # zone; the DGGRS's own 64-bit ids (docs/grid.md's layout, encoded here by hand); little endian (read byte
+    # by byte, not through numpy's dtype).  Pinned at the poles, the antimeridian and an icosahedron vertex.
+    parent = dggs.latlng_to_cell(lat, lng, 2)
+    query = {"zone-level": 6, "parent-zone": parent, "compact-zones": "false"}
+    listed = client.get(f"{ROOT}/zones", params=query).json()["zones"]
+    body = client.get(f"{ROOT}/zones", params={**query, "f": "uint64"}).content
+    words = [int.from_bytes(body[i:i + 8], "little") for i in range(0, len(body), 8)]
+    assert len(body) == 8 * (1 + len(listed)) and words[0] == len(listed)
+    assert words[1:] == [grid_md_uint64(z) for z in listed]
+    assert parent != dggs.latlng_to_cell(45.0, 7.0, 2) or len(listed) > 5  # the cluster: a real comparison
+
+
 @pytest.mark.parametrize("prefix", [ROOT, COLL])
 @pytest.mark.parametrize(("zone", "depth"), [("C4", "2"), ("C52", "0-3"), ("A", "0,2"), (None, "1")])
 def test_ubjson_zone_data_is_the_dggs_json_document(client, points, prefix, zone, depth):
