@@ -1,0 +1,185 @@
+"""Directed edge ids in any container: to their shadow cells and back.
+
+An edge's integer id with the sign bit cleared is a valid cell id one level
+finer than its origin, its "shadow" (:mod:`dggs.index._kernel.edges`), and its
+string id is the origin's string, a dot and the direction (``"C401.2"``),
+whose shadow is the string without the dot (``"C4012"``).  So edges go through
+the cell converters (:mod:`dggs.index._convert`) as their shadows: these
+functions map every leaf of a container (a str or int, lists and tuples,
+numpy arrays, pandas Series and Index, pyarrow arrays, list arrays and
+ChunkedArrays) between the two forms, keeping the container.  A leaf that is
+no edge becomes an invalid shadow ("" or 0), which the cell converter refuses;
+:func:`first_bad` then finds it to name it.
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import Any
+
+import numpy as np
+
+from dggs.errors import InvalidCellError
+
+from ._convert import Kind, cells_in, cells_out
+from ._convert.strings import parse_str, valid_int
+
+__all__ = ["EDGE", "SEP", "edges_in", "edges_out", "to_shadow", "is_edge"]
+
+#: The sign bit: set in every directed edge id.
+EDGE = 1 << 63
+#: Between the origin's string id and the direction digit.
+SEP = "."
+_LOW54 = (1 << 54) - 1
+_L1_SHIFT = 54
+_U_EDGE = np.uint64(EDGE)
+
+
+def _str_shadow(s: str) -> str:
+    if len(s) >= 3 and s[-2] == SEP and s[-1] in "012":
+        return s[:-2] + s[-1]
+    return ""
+
+
+def _int_shadow(v: int) -> int:
+    if v >> 63 != 1:
+        return 0
+    v ^= EDGE
+    if not v & _LOW54 and (v >> _L1_SHIFT) & 7 > 3:  # a level-0 origin: directions 0-2 only
+        return 0
+    return v
+
+
+def _leaf(x: Any, back: bool) -> Any:
+    """One leaf to its shadow (``back``: a shadow to its edge); anything else unchanged."""
+    if isinstance(x, str):
+        if back:
+            return x[:-1] + SEP + x[-1] if x else x
+        return _str_shadow(x)
+    if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):
+        x = int(x) & ((1 << 64) - 1)  # int64 edges are negative
+        return (x | EDGE if x else 0) if back else _int_shadow(x)
+    return x
+
+
+def _ints(a: np.ndarray, back: bool) -> np.ndarray:
+    u = a.view(np.uint64) if a.dtype.kind == "i" and a.dtype.itemsize == 8 else a.astype(np.uint64)
+    if back:
+        out = np.where(u != 0, u | _U_EDGE, u)
+    else:
+        low = (u & np.uint64(_LOW54)) == 0
+        bad = ((u >> np.uint64(63)) != 1) | (low & (((u >> np.uint64(_L1_SHIFT)) & np.uint64(7)) > 3))
+        out = np.where(bad, np.uint64(0), u ^ _U_EDGE)
+    return out.view(a.dtype) if a.dtype.kind == "i" and a.dtype.itemsize == 8 else out.astype(a.dtype)
+
+
+def _numpy(a: np.ndarray, back: bool) -> np.ndarray:
+    if a.dtype.kind in "iu":
+        return _ints(a, back)
+    if a.dtype.kind == "S":
+        flat = [_leaf(x.decode("ascii", "replace"), back).encode("ascii") for x in a.reshape(-1).tolist()]
+        return np.array(flat, dtype="S").reshape(a.shape)
+    flat = [_leaf(x, back) for x in a.reshape(-1).tolist()]
+    if a.dtype.kind == "U":
+        return np.array(flat, dtype=str).reshape(a.shape) if flat else a
+    out = np.empty(a.shape, dtype=a.dtype if a.dtype.kind == "O" else object)
+    out.reshape(-1)[:] = flat
+    return out if a.dtype.kind == "O" else out.astype(a.dtype)
+
+
+def _arrow(arr: Any, back: bool, pa: Any) -> Any:
+    if isinstance(arr, pa.ChunkedArray):
+        return pa.chunked_array([_arrow(c, back, pa) for c in arr.chunks], type=arr.type)
+    t = arr.type
+    if pa.types.is_list(t) or pa.types.is_large_list(t):
+        return type(arr).from_arrays(arr.offsets, _arrow(arr.values, back, pa))
+    if pa.types.is_fixed_size_list(t):
+        return pa.FixedSizeListArray.from_arrays(_arrow(arr.values, back, pa), t.list_size)
+    if pa.types.is_integer(t):
+        values = arr.to_numpy(zero_copy_only=False)
+        if values.dtype.kind not in "iu":  # nulls: the converter names them
+            return arr
+        mask = arr.is_null().to_numpy(zero_copy_only=False) if arr.null_count else None
+        return pa.array(_ints(values, back), type=t, mask=mask)
+    return pa.array([_leaf(x, back) if x is not None else None for x in arr.to_pylist()], type=t)
+
+
+def _map(obj: Any, back: bool) -> Any:
+    """``obj`` with every leaf mapped, in the same container."""
+    if isinstance(obj, (list, tuple)):
+        return type(obj)(_map(x, back) for x in obj)
+    if isinstance(obj, np.ndarray):
+        return _numpy(obj, back)
+    pd, pa = sys.modules.get("pandas"), sys.modules.get("pyarrow")
+    if pd is not None and isinstance(obj, (pd.Series, pd.Index)):
+        values = obj.to_numpy()
+        if values.dtype.kind in "iu":
+            new: Any = _ints(values, back)
+        else:
+            new = np.empty(len(values), dtype=object)
+            new[:] = [_map(x, back) for x in values.tolist()]
+        if isinstance(obj, pd.Index):
+            return pd.Index(new, name=obj.name, dtype=obj.dtype)
+        return pd.Series(new, index=obj.index, name=obj.name, dtype=obj.dtype)
+    if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
+        return _arrow(obj, back, pa)
+    return _leaf(obj, back)
+
+
+def to_shadow(obj: Any) -> Any:
+    """Edges in any container to their shadow cells, in the same container (no edge: "" or 0)."""
+    return _map(obj, False)
+
+
+def is_edge(x: Any) -> bool:
+    """Whether one leaf is a well-formed edge id of either form (its shadow is a valid cell)."""
+    s = _leaf(x, False) if isinstance(x, (str, int, np.integer)) else None
+    if isinstance(s, str):
+        return bool(s) and parse_str(s) != 0
+    return isinstance(s, int) and s != 0 and valid_int(s)
+
+
+def _leaves(obj: Any) -> list[Any]:
+    if isinstance(obj, (list, tuple)):
+        return [y for x in obj for y in _leaves(x)]
+    if isinstance(obj, np.ndarray):
+        return obj.reshape(-1).tolist()
+    if hasattr(obj, "to_pylist"):
+        return list(obj.to_pylist())
+    if hasattr(obj, "tolist"):
+        return list(obj.tolist())
+    return [obj]
+
+
+def first_bad(obj: Any) -> InvalidCellError:
+    """The error naming the first leaf of ``obj`` that is no edge id."""
+    leaves = _leaves(obj)
+    for i, x in enumerate(leaves):
+        if not is_edge(x):
+            where = "" if len(leaves) == 1 and not isinstance(obj, (list, tuple, np.ndarray)) else f" at index {i}"
+            return InvalidCellError(
+                f"{x!r}{where} is not a valid directed edge id: expected a cell's string id, '{SEP}' and a direction "
+                "0-2 (such as 'C401.2'), or its 64-bit integer form (sign bit set)"
+            )
+    return InvalidCellError(f"{obj!r} is not a valid directed edge id")
+
+
+def edges_in(obj: Any) -> tuple[np.ndarray, Kind]:
+    """Edge ids in any container as a flat uint64 array (sign bit set), and the container's kind (of the shadows).
+
+    Raises
+    ------
+    InvalidCellError
+        A leaf that is no directed edge id (the message names it and its index).
+    """
+    try:
+        ids, kind = cells_in(to_shadow(obj))
+    except InvalidCellError:
+        raise first_bad(obj) from None
+    return ids | _U_EDGE, kind
+
+
+def edges_out(edges: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> Any:
+    """Edge ids (uint64, sign bit set; 0 for none) in the container of ``kind`` (as :func:`cells_out` does cells)."""
+    shadows = np.where(edges != 0, edges & ~_U_EDGE, edges)
+    return _map(cells_out(shadows, kind, trailing), True)
