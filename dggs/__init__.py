@@ -100,6 +100,20 @@ _LAZY: dict[str, str] = {
     "grid_disk": "dggs.index.grid",
     "grid_distance": "dggs.index.grid",
     "grid_ring": "dggs.index.grid",
+    # positions and directed edges
+    "cell_to_child_pos": "dggs.index.local",
+    "child_pos_to_cell": "dggs.index.local",
+    "cell_to_local_ij": "dggs.index.local",
+    "local_ij_to_cell": "dggs.index.local",
+    "cells_to_directed_edge": "dggs.index.edges",
+    "directed_edge_to_cells": "dggs.index.edges",
+    "origin_to_directed_edges": "dggs.index.edges",
+    "get_directed_edge_origin": "dggs.index.edges",
+    "get_directed_edge_destination": "dggs.index.edges",
+    "directed_edge_to_boundary": "dggs.index.edges",
+    "reverse_directed_edge": "dggs.index.edges",
+    "is_valid_directed_edge": "dggs.index.edges",
+    "edge_length": "dggs.index.edges",
     # vertices, distances, lines
     "cell_to_vertexes": "dggs.index.vertex",
     "grid_disk_vertex": "dggs.index.vertex",
@@ -115,6 +129,7 @@ _LAZY: dict[str, str] = {
     "circle_to_cells": "dggs.index.circles",
     # regions and measures
     "polygon_to_cells": "dggs.index.polyfill",
+    "Grid": "dggs.index.projection",
     "cell_area": "dggs.index.measure",
     "level_table": "dggs.index.measure",
 }
@@ -173,6 +188,20 @@ __all__ = [
     "grid_disk",
     "grid_ring",
     "grid_distance",
+    # positions and directed edges
+    "cell_to_child_pos",
+    "child_pos_to_cell",
+    "cell_to_local_ij",
+    "local_ij_to_cell",
+    "cells_to_directed_edge",
+    "directed_edge_to_cells",
+    "origin_to_directed_edges",
+    "get_directed_edge_origin",
+    "get_directed_edge_destination",
+    "directed_edge_to_boundary",
+    "reverse_directed_edge",
+    "is_valid_directed_edge",
+    "edge_length",
     # vertices, distances, lines
     "cell_to_vertexes",
     "vertex_to_latlng",
@@ -188,6 +217,7 @@ __all__ = [
     "circle_to_cells",
     # regions and measures
     "polygon_to_cells",
+    "Grid",
     "cell_area",
     "level_table",
 ]
@@ -232,6 +262,17 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
     from dggs.index.circles import circle_to_cells
+    from dggs.index.edges import (
+        cells_to_directed_edge,
+        directed_edge_to_boundary,
+        directed_edge_to_cells,
+        edge_length,
+        get_directed_edge_destination,
+        get_directed_edge_origin,
+        is_valid_directed_edge,
+        origin_to_directed_edges,
+        reverse_directed_edge,
+    )
     from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
     from dggs.index.hierarchy import (
         cell_to_center_child,
@@ -247,6 +288,7 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
     )
     from dggs.index.ids import MAX_LEVEL, int_to_str, str_to_int
     from dggs.index.lines import cell_centers_distance, geodesic_to_cells, great_circle_distance
+    from dggs.index.local import cell_to_child_pos, cell_to_local_ij, child_pos_to_cell, local_ij_to_cell
     from dggs.index.measure import cell_area, level_table
     from dggs.index.paths import grid_path_cells, line_to_cells
     from dggs.index.points import (
@@ -257,6 +299,7 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
         latlng_to_cell,
     )
     from dggs.index.polyfill import polygon_to_cells
+    from dggs.index.projection import Grid
     from dggs.index.vertex import (
         cell_to_vertexes,
         grid_disk_vertex,
