@@ -1,7 +1,8 @@
 """Landing page, conformance, collections and DGGRS resources (OGC API - Common, DGGS Part 1 §7, §14, §15).
 
 - ``/`` landing page (OGC API - Common Part 1, ``openapi/schemas/common-core/landingPage.yaml``);
-  a browser (``Accept: text/html``) gets the web map instead, when it is installed;
+  a browser (``Accept: text/html``) gets the web map instead, or, when it is not installed, the landing
+  page as HTML with its links;
 - ``/conformance`` the classes implemented (``confClasses.yaml``);
 - ``/collections`` and ``/collections/{collectionId}`` (Common Part 2, ``collections.yaml``,
   ``collectionDesc.yaml``): one collection, the store, named after its file;
@@ -122,12 +123,38 @@ def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> dic
     return {"links": links, "dggrs": [item(base, prefix)]}
 
 
-_NO_MAP = """<!doctype html>
-<html lang="en"><head><meta charset="utf-8"><title>dggs: the web map is not installed</title></head>
-<body><h1>The web map is not installed</h1><p id="status" role="alert">{help}.</p>
-<p>The OGC API answers as usual: <a href="/?f=json">landing page</a>, <a href="/api.html">API</a>.</p>
+_LANDING_HTML = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{title}</title></head>
+<body><h1>{title}</h1><p>{description}</p>
+<p id="status" role="alert">{why}</p>
+<ul>
+{links}
+</ul>
 </body></html>
 """
+
+
+def landing_html(document: dict[str, Any], why: str) -> str:
+    """The landing page ``document`` as HTML for a browser when the web map cannot be shown, saying ``why``.
+
+    Every link of the JSON landing page is a link here (title, relation and media type shown).
+
+    Examples
+    --------
+    >>> doc = {"title": "t", "description": "d", "links": [{"href": "/api", "rel": "service-desc", "title": "OpenAPI"}]}
+    >>> '<a href="/api">OpenAPI</a>' in landing_html(doc, "no map")
+    True
+    """
+    items = "\n".join(
+        f'<li><a href="{html.escape(link["href"])}">{html.escape(link.get("title", link["href"]))}</a> '
+        f'({html.escape(link["rel"])}{", " + html.escape(link["type"]) if "type" in link else ""})</li>'
+        for link in document["links"]
+    )
+    return _LANDING_HTML.format(title=html.escape(document["title"]), description=html.escape(document["description"]),
+                                why=html.escape(why), links=items)
+
+
+_NO_PAGE = "The web map is not part of this server (its static folder has no index.html); the API answers below."
 
 
 _F = Query(None, description="json (the only format here; overrides the Accept header)")
@@ -148,11 +175,16 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
 
     @app.get("/", tags=["Capabilities"], summary="Landing page (the web map for a browser)")
     def root(request: Request, f: str | None = Query(None, description="json for the landing page, html for the "
-                                                                           "web map (when it is installed)")) -> Response:
-        # /req/landing-page/root-success: JSON, or the web map's HTML page for a client preferring text/html
-        if negotiate(request, f, ("json", "html") if page.is_file() else ("json",)) == "html":
-            if missing_vendor(static):  # the page would stay at "Loading..." without MapLibre
-                return HTMLResponse(_NO_MAP.format(help=html.escape(VENDOR_HELP)), status_code=503)
+                                                                           "web map (or the landing page as HTML "
+                                                                           "when the map is not installed)")) -> Response:
+        # /req/landing-page/root-success: JSON, or for a client preferring text/html (a browser) the web map's
+        # page; without the map, the landing page as HTML with its links and the reason, never a 406 or a
+        # page that waits forever for MapLibre.
+        if negotiate(request, f, ("json", "html")) == "html":
+            if not page.is_file():
+                return HTMLResponse(landing_html(landing(ctx, request), _NO_PAGE))
+            if missing_vendor(static):
+                return HTMLResponse(landing_html(landing(ctx, request), VENDOR_HELP + "."))
             return FileResponse(page, media_type="text/html")
         return JSONResponse(landing(ctx, request))
 

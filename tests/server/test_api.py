@@ -5,6 +5,7 @@ from __future__ import annotations
 import doctest
 import importlib
 import json
+import re
 import socket
 import subprocess
 import sys
@@ -17,6 +18,8 @@ import jsonschema
 import numpy as np
 import pytest
 import shapely
+from hypothesis import given
+from hypothesis import strategies as st
 from shapely.geometry import Point, box, shape
 
 import dggs
@@ -163,10 +166,18 @@ def test_openapi_lists_the_routes(client):
 def test_browser_gets_the_web_map_page_when_installed(store_path, tmp_path):
     static = tmp_path / "static"
     static.mkdir()
-    with make_client(store_path, static=static) as c:  # no index.html: JSON, or a 406 for HTML only
-        assert c.get("/", headers={"accept": "text/html,application/xhtml+xml,*/*;q=0.8"}).json()["links"]
-        assert c.get("/", headers={"accept": "text/html"}).status_code == 406
-        assert c.get("/?f=html").status_code == 400
+    with make_client(store_path, static=static) as c:  # no index.html: the landing page as HTML, never a 406
+        landing = c.get("/?f=json").json()
+        for req in ({"headers": {"accept": "text/html,application/xhtml+xml,*/*;q=0.8"}},  # a browser's
+                    {"headers": {"accept": "text/html"}}, {"params": {"f": "html"}}):
+            res = c.get("/", **req)
+            assert res.status_code == 200 and res.headers["content-type"].startswith("text/html"), req
+            hrefs = set(re.findall(r'<a href="([^"]+)"', res.text))
+            assert hrefs == {link["href"] for link in landing["links"]}  # every link of the landing page
+            assert "index.html" in res.text  # and why there is no map
+        for href in hrefs:  # each one usable
+            assert c.get(href.replace("http://testserver", "")).status_code == 200, href
+        assert c.get("/", headers={"accept": "application/json"}).json() == landing
     (static / "index.html").write_text("<!doctype html><title>map</title>")
     (static / "app.js").write_text("// js")
     (static / "vendor" / "maplibre-gl").mkdir(parents=True)
@@ -178,6 +189,24 @@ def test_browser_gets_the_web_map_page_when_installed(store_path, tmp_path):
         assert c.get("/", headers={"accept": "application/json"}).json()["links"]
         assert c.get("/?f=json", headers={"accept": "text/html"}).json()["links"]
         assert c.get("/static/app.js").text == "// js"
+
+
+_OTHER_TYPES = ["application/json", "application/xhtml+xml", "application/xml", "image/webp", "image/png",
+                "*/*", "text/*", "application/*", "text/plain"]
+
+
+@given(others=st.lists(st.tuples(st.sampled_from(_OTHER_TYPES), st.sampled_from(["", ";q=0.9", ";q=0.5", ";q=0"])),
+                       max_size=4),
+       html_q=st.sampled_from(["", ";q=1", ";q=0.8", ";q=0.1"]), at=st.integers(0, 4))
+def test_a_browser_at_the_root_never_gets_a_406(tmp_path_factory, store_path, others, html_q, at):
+    # an Accept naming text/html with q > 0 (anywhere, with anything else) gets an answer at /, map or not
+    static = tmp_path_factory.mktemp("nomap")
+    parts = [m + q for m, q in others]
+    parts.insert(min(at, len(parts)), "text/html" + html_q)
+    with make_client(store_path, static=static) as c:
+        res = c.get("/", headers={"accept": ", ".join(parts)})
+    assert res.status_code == 200, parts
+    assert res.headers["content-type"].split(";")[0] in ("text/html", "application/json")
 
 
 def test_collection_extent_is_the_points_bbox(client, points):

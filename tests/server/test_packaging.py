@@ -29,7 +29,8 @@ def _page_folder(tmp_path: Path) -> Path:
 def test_the_page_without_maplibre_says_what_is_missing(store_path, tmp_path):
     with make_client(store_path, static=_page_folder(tmp_path)) as client:
         page = client.get("/", headers={"accept": "text/html"})
-        assert page.headers["content-type"].startswith("text/html")
+        assert page.status_code == 200 and page.headers["content-type"].startswith("text/html")
+        assert 'href="http://testserver/api.html"' in page.text  # the landing page's links, usable
         assert "Loading" not in page.text and "<script" not in page.text  # not the page that waits forever
         assert "MapLibre" in page.text and "make static" in page.text and "docs/serve.md" in page.text
         assert client.get("/?f=json").json()["links"]  # the API itself answers
