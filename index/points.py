@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiPolygon, Polygon, mapping
+from shapely.geometry import mapping
 
 from ._checks import check_densify, check_level, property_rows
 from ._convert import CELL as _CELL
@@ -233,6 +233,9 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
     """
     ids, kind = cells_in(cells)
     polys = geometries(ids, None if densify is None else check_densify(densify), max_points)
+    # RFC 7946's winding in one call (shapely >= 2.1) rather than shapely.geometry.polygon.orient one polygon
+    # at a time: the same rings, faster (benchmarks/bench_handwritten.py); mapping() is most of the time
+    polys = shapely.orient_polygons(polys, exterior_cw=False)
     n = ids.shape[0]
     rows = property_rows(properties, n)
     lv = kh.levels(ids)
@@ -244,14 +247,9 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
             {
                 "type": "Feature",
                 "id": key,
-                "geometry": mapping(_orient(poly)),
+                "geometry": mapping(poly),
                 "properties": {"cell": key, "level": level, **props},
             }
         )
     return {"type": "FeatureCollection", "features": features}
 
-
-def _orient(poly: Any) -> Any:
-    if isinstance(poly, Polygon):
-        return shapely.geometry.polygon.orient(poly, 1.0)
-    return MultiPolygon([shapely.geometry.polygon.orient(p, 1.0) for p in poly.geoms])
