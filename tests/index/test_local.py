@@ -1,0 +1,156 @@
+"""Local (i, j) coordinates around an anchor: exact inverses, one pair per cell, and the lattice's geometry.
+
+Oracles: brute-force enumeration of every cell of a level; the anchor's range
+from the faces' own adjacency (``edge_neighbors`` of the base cells); and the
+geometry of the 30-60-90 tiling: a cell's neighbour across an edge is its
+mirror image, so their centroids are twice the centroid-to-side distance
+apart.  In a right triangle with legs 1 and sqrt(3) those distances are
+sqrt(3)/3, 1/3 and sqrt(3)/6 of the short leg, squared in the ratio 12 : 4 : 3; in the
+lattice's basis (two axes 120 degrees apart) the squared length of (i, j) is
+i^2 + j^2 - i j, so the three neighbours of every cell must sit at exactly
+{3, 4, 12} (the level's unit is the same everywhere, the unfolded faces included).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pyarrow as pa
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+import dggs
+from dggs.errors import DggsValueError, InvalidCellError, LevelMismatchError
+
+from ..strategies import cells, examples, special_points
+
+
+def all_cells(level):
+    return list(dggs.get_base_cells()) if level == 0 else dggs.cell_to_children(list(dggs.get_base_cells()), level)
+
+
+def region_faces(anchor: str) -> set[str]:
+    """The anchor's face and the three across its edges (from the base cells' adjacency)."""
+    return {anchor[0], *dggs.edge_neighbors(anchor[0])}
+
+
+def norm(i, j):
+    return i * i + j * j - i * j
+
+
+def special_cells(level: int) -> list[str]:
+    lat, lng = zip(*special_points(), strict=True)
+    return sorted(set(dggs.latlng_to_cell(list(lat), list(lng), level)))
+
+
+@pytest.mark.parametrize("level", [0, 1, 2, 3])
+def test_exhaustive_round_trip_and_uniqueness(level):
+    every = all_cells(level)
+    rng = np.random.default_rng(level)
+    anchors = sorted(set(special_cells(level)) | set(rng.choice(every, 8).tolist()))
+    for anchor in anchors:
+        faces = region_faces(anchor)
+        inside = [c for c in every if c[0] in faces]
+        outside = [c for c in every if c[0] not in faces]
+        i, j = dggs.cell_to_local_ij(anchor, inside)
+        assert dggs.cell_to_local_ij(anchor, anchor) == (0, 0)
+        assert len(set(zip(i, j, strict=True))) == len(inside)  # one pair per cell
+        assert dggs.local_ij_to_cell(anchor, i, j) == inside
+        ai = dggs.str_to_int(anchor)
+        assert dggs.local_ij_to_cell(ai, np.array(i), np.array(j)).tolist() == dggs.str_to_int(inside)
+        for c in outside[:: max(1, len(outside) // 10)]:
+            with pytest.raises(DggsValueError, match=c):
+                dggs.cell_to_local_ij(anchor, c)
+        # every other integer pair in the box names no cell
+        taken = set(zip(i, j, strict=True))
+        box = [(a, b) for a in range(min(i) - 2, max(i) + 3, 3) for b in range(min(j) - 2, max(j) + 3, 2) if (a, b) not in taken]
+        for a, b in box[:: max(1, len(box) // 25)]:
+            with pytest.raises(DggsValueError, match=f"\\({a}, {b}\\)"):
+                dggs.local_ij_to_cell(anchor, a, b)
+
+
+@pytest.mark.parametrize("level", [0, 1, 2, 3])
+def test_neighbours_are_mirror_images(level):
+    """Every cell's three edge neighbours (within the range) at squared lattice lengths {3, 4, 12}, across face edges too."""
+    every = all_cells(level)
+    for anchor in special_cells(level)[:6]:
+        faces = region_faces(anchor)
+        inside = [c for c in every if c[0] in faces]
+        ij = dict(zip(inside, zip(*dggs.cell_to_local_ij(anchor, inside), strict=True), strict=True))
+        crossings = 0
+        for c in inside:
+            near = [n for n in dggs.edge_neighbors(c) if n in ij]
+            got = {norm(ij[n][0] - ij[c][0], ij[n][1] - ij[c][1]) for n in near}
+            crossings += sum(n[0] != c[0] for n in near)
+            if level == 0:  # the faces: equilateral triangles, their centroids one step apart
+                assert got == {1}
+            elif len(near) == 3:
+                assert got == {3, 4, 12}, (c, near)
+            else:
+                assert got <= {3, 4, 12}
+        assert crossings > 0  # face edges crossed
+
+
+@settings(max_examples=examples(100))
+@given(anchor=cells(max_level=28), k=st.integers(1, 4), as_int=st.booleans())
+@example(anchor="A" + "0" * 28, k=3, as_int=False)
+@example(anchor="T5" + "2" * 27, k=3, as_int=True)
+@example(anchor="C", k=1, as_int=True)
+def test_round_trip_around_any_anchor(anchor, k, as_int):
+    """All cells of a disk around the anchor: on the range, exact inverses; off it, refused (their face tells)."""
+    disk = dggs.grid_disk(anchor, k)
+    faces = region_faces(anchor)
+    inside = [c for c in disk if c[0] in faces]
+    outside = [c for c in disk if c[0] not in faces]
+    a = dggs.str_to_int(anchor) if as_int else anchor
+    ids = dggs.str_to_int(inside) if as_int else inside
+    i, j = dggs.cell_to_local_ij(a, ids)
+    assert len(set(zip(i, j, strict=True))) == len(inside)
+    assert dggs.local_ij_to_cell(a, i, j) == ids
+    for c, n in zip(inside, dggs.edge_neighbors(inside), strict=True):
+        for m in n:
+            if m in inside:
+                di = i[inside.index(m)] - i[inside.index(c)]
+                dj = j[inside.index(m)] - j[inside.index(c)]
+                assert norm(di, dj) in ({3, 4, 12} if len(anchor) > 1 else {1})
+    for c in outside:
+        with pytest.raises(DggsValueError):
+            dggs.cell_to_local_ij(a, dggs.str_to_int(c) if as_int else c)
+
+
+@pytest.mark.parametrize("level", [5, 17, 28])
+def test_special_cells(level):
+    """Anchors at poles, the antimeridian, icosahedron vertices and edges: their neighbours and back."""
+    for anchor in special_cells(level):
+        ring = [c for c in dggs.grid_disk(anchor, 2) if c[0] in region_faces(anchor)]
+        i, j = dggs.cell_to_local_ij(anchor, ring)
+        assert dggs.local_ij_to_cell(anchor, i, j) == ring
+        assert {norm(a, b) for a, b, c in zip(i, j, ring, strict=True) if c in dggs.edge_neighbors(anchor)} <= {3, 4, 12}
+
+
+def test_containers_and_broadcasting():
+    i, j = dggs.cell_to_local_ij(np.array(["C401", "C401"]), np.array(["C402", "C400"]))
+    assert isinstance(i, np.ndarray) and i.tolist() == [4, -1] and j.tolist() == [2, 1]
+    s = dggs.cell_to_local_ij("C401", pd.Series(["C402", "C400"], index=[7, 8]))
+    assert s[0].index.tolist() == [7, 8] and s[0].tolist() == [4, -1]
+    assert dggs.cell_to_local_ij("C401", pa.array(["C402"]))[1].to_pylist() == [2]
+    out = dggs.local_ij_to_cell(dggs.str_to_int("C401"), pd.Series([4, -1]), pd.Series([2, 1]))
+    assert isinstance(out, pd.Series) and out.tolist() == dggs.str_to_int(["C402", "C400"])
+    assert dggs.local_ij_to_cell(["C401", "C402"], 0, 0) == ["C401", "C402"]
+
+
+def test_invalid_inputs():
+    with pytest.raises(LevelMismatchError, match="C40"):
+        dggs.cell_to_local_ij("C401", "C40")
+    with pytest.raises(InvalidCellError, match="Z1"):
+        dggs.cell_to_local_ij("Z1", "C4")
+    with pytest.raises(DggsValueError, match="'T'"):  # T shares no edge with A
+        dggs.cell_to_local_ij("A", "T")
+    for bad in (1.5, True, None, "1"):
+        with pytest.raises(DggsValueError, match="must be an integer"):
+            dggs.local_ij_to_cell("C401", bad, 0)
+    with pytest.raises(DggsValueError, match="names no cell"):
+        dggs.local_ij_to_cell("C401", 1, 0)
+    with pytest.raises(DggsValueError, match="names no cell"):
+        dggs.local_ij_to_cell("C401", 10**9, -(10**9))
