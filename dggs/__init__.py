@@ -83,6 +83,7 @@ _LAZY: dict[str, str] = {
     "cell_to_polygon": "dggs.index.points",
     "cells_to_geojson": "dggs.index.points",
     "latlng_to_cell": "dggs.index.points",
+    "cells_to_polygons": "dggs.index.dissolve",
     # hierarchy
     "cell_to_center_child": "dggs.index.hierarchy",
     "cell_to_children": "dggs.index.hierarchy",
@@ -171,6 +172,7 @@ __all__ = [
     "cell_to_boundary",
     "cell_to_polygon",
     "cells_to_geojson",
+    "cells_to_polygons",
     # hierarchy
     "get_level",
     "get_face",
@@ -273,6 +275,7 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
         origin_to_directed_edges,
         reverse_directed_edge,
     )
+    from dggs.index.dissolve import cells_to_polygons
     from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
     from dggs.index.hierarchy import (
         cell_to_center_child,
