@@ -1,0 +1,339 @@
+"""Paths, lines and circles against oracles that share no code with them.
+
+- ``grid_path_cells``: a breadth-first search over the edge graph built from
+  the cells' corners (two cells are neighbours when they share two corners,
+  matched as points on the sphere), over every cell of levels 1-3.
+- ``line_to_cells``: the cells of points sampled densely along each segment's
+  geodesic (``pyproj.Geod.npts``), and neighbours by shared corners.
+- ``circle_to_cells``: every cell of a low level, measured with
+  ``pyproj.Geod`` distances to its centre and to its densified boundary.
+"""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import itertools
+import math
+from collections import deque
+from functools import cache
+
+import numpy as np
+import pandas as pd
+import pyproj
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+from shapely.geometry import LineString, MultiLineString, Polygon
+
+import dggs
+from dggs.errors import (
+    CoordinateError,
+    DggsValueError,
+    InvalidCellError,
+    LevelError,
+    LevelMismatchError,
+    TooManyCellsError,
+)
+
+from ..strategies import examples, special_points
+
+GEOD = pyproj.Geod(ellps="WGS84")
+SPECIAL = special_points()
+
+
+def all_cells(level: int) -> list[str]:
+    """Every cell of a level, spelled out from docs/grid.md's id rules."""
+    faces = "ABCDEFGHIJKLMNOPQRST"
+    if level == 0:
+        return list(faces)
+    return [f + d1 + "".join(rest) for f in faces for d1 in "012345" for rest in itertools.product("012", repeat=level - 1)]
+
+
+def _xyz(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:
+    la, lo = np.radians(lat), np.radians(lng)
+    return np.stack([np.cos(la) * np.cos(lo), np.cos(la) * np.sin(lo), np.sin(la)], axis=-1)
+
+
+def corner_classes(cells: list[str]) -> np.ndarray:
+    """(N, 3) ids of the cells' corners, equal where two corners are one point (within 1e-9 of the unit sphere)."""
+    b = np.asarray(dggs.cell_to_boundary(np.array(cells), densify=0), dtype=np.float64)  # (N, 3, 2) lat, lng
+    v = _xyz(b[..., 0], b[..., 1]).reshape(-1, 3)
+    cls = np.empty(v.shape[0], dtype=np.int64)
+    for lo in range(0, v.shape[0], 512):
+        d = np.linalg.norm(v[lo : lo + 512, None, :] - v[None, :, :], axis=-1)
+        cls[lo : lo + 512] = np.argmax(d < 1e-9, axis=1)  # the first corner at the same point
+    return cls.reshape(-1, 3)
+
+
+def shares_edge(a: str, b: str) -> bool:
+    cls = corner_classes([a, b])
+    return len(set(cls[0]) & set(cls[1])) == 2
+
+
+@cache
+def corner_graph(level: int) -> tuple[list[str], dict[str, list[str]]]:
+    """Every cell of a level and its edge neighbours, from shared corners alone."""
+    cells = all_cells(level)
+    cls = corner_classes(cells)
+    by_edge: dict[frozenset[int], list[str]] = {}
+    for c, (p, q, r) in zip(cells, cls.tolist(), strict=True):
+        for e in ({p, q}, {q, r}, {r, p}):
+            by_edge.setdefault(frozenset(e), []).append(c)
+    graph: dict[str, list[str]] = {c: [] for c in cells}
+    for owners in by_edge.values():
+        assert len(owners) == 2, owners  # every edge has a cell on each side
+        graph[owners[0]].append(owners[1])
+        graph[owners[1]].append(owners[0])
+    return cells, graph
+
+
+def bfs(graph: dict[str, list[str]], a: str) -> dict[str, int]:
+    dist = {a: 0}
+    todo = deque([a])
+    while todo:
+        c = todo.popleft()
+        for n in graph[c]:
+            if n not in dist:
+                dist[n] = dist[c] + 1
+                todo.append(n)
+    return dist
+
+
+def special_cells(level: int) -> list[str]:
+    return sorted({str(dggs.latlng_to_cell(lat, lng, level)) for lat, lng in SPECIAL})
+
+
+# --------------------------------------------------------------------------- grid_path_cells
+
+
+def check_path(path: list[str], a: str, b: str, graph: dict[str, list[str]], dist: dict[str, int] | None = None) -> None:
+    assert path[0] == a and path[-1] == b
+    assert len(path) == (dist or bfs(graph, a))[b] + 1
+    for x, y in zip(path[:-1], path[1:], strict=True):
+        assert y in graph[x], (x, y)
+
+
+@pytest.mark.parametrize("level", [1, 2, 3])
+def test_paths_from_special_cells_against_bfs(level):
+    """From cells at the poles, the antimeridian, the vertices and the face edges to every cell of the level."""
+    cells, graph = corner_graph(level)
+    for a in special_cells(level)[:: max(1, len(SPECIAL) // 12)]:
+        paths, dist = dggs.grid_path_cells(a, cells), bfs(graph, a)
+        assert len(paths) == len(cells)
+        for b, path in zip(cells, paths, strict=True):
+            check_path(path, a, b, graph, dist)
+
+
+@settings(max_examples=examples(100))
+@given(st.integers(1, 3), st.integers(0, 10**9), st.integers(0, 10**9))
+@example(3, 0, 0)
+def test_path_is_shortest_str_and_int(level, i, j):
+    cells, graph = corner_graph(level)
+    a, b = cells[i % len(cells)], cells[j % len(cells)]
+    path = dggs.grid_path_cells(a, b)
+    check_path(path, a, b, graph)
+    ints = dggs.grid_path_cells(dggs.str_to_int(a), dggs.str_to_int(b))
+    assert all(type(x) is int for x in ints)
+    assert [dggs.int_to_str(x) for x in ints] == path
+    assert dggs.grid_path_cells(a, b) == path  # deterministic
+
+
+@settings(max_examples=examples(50))
+@given(st.sampled_from(SPECIAL), st.floats(-3, 3), st.floats(-3, 3), st.sampled_from([6, 9, 12]))
+def test_fine_paths_step_across_shared_edges(p, dlat, dlng, level):
+    """Finer levels, near the poles, the antimeridian and the vertices: the length is the distance, each step a shared edge."""
+    lat, lng = p
+    a = dggs.latlng_to_cell(lat, lng, level)
+    b = dggs.latlng_to_cell(max(-90.0, min(90.0, lat + dlat)), lng + dlng, level)
+    path = dggs.grid_path_cells(a, b)
+    assert path[0] == a and path[-1] == b and len(path) == dggs.grid_distance(a, b) + 1
+    assert len(set(path)) == len(path)
+    if len(path) > 1:
+        cls = corner_classes(path)
+        assert all(len(set(cls[k]) & set(cls[k + 1])) == 2 for k in range(len(path) - 1))
+
+
+def test_path_kinds_and_broadcasting():
+    a, b = "C4010", "C4222"
+    one = dggs.grid_path_cells(a, b)
+    assert isinstance(one, list)
+    many = dggs.grid_path_cells(np.array([a, b]), np.array([b, a]))
+    assert isinstance(many, list) and isinstance(many[0], np.ndarray) and many[0].tolist() == one
+    assert many[1][0] == b and many[1][-1] == a and len(many[1]) == len(one)
+    ints = dggs.grid_path_cells(np.array([dggs.str_to_int(a)], dtype=np.uint64), dggs.str_to_int(b))
+    assert ints[0].dtype == np.uint64 and [dggs.int_to_str(int(x)) for x in ints[0]] == one
+    assert dggs.grid_path_cells([a, a], b) == [one, one]  # one against many
+    series = dggs.grid_path_cells(pd.Series([a]), pd.Series([b]))
+    assert list(series[0]) == one
+
+
+def test_path_errors():
+    with pytest.raises(LevelMismatchError, match="C401"):
+        dggs.grid_path_cells("C401", "C40")
+    with pytest.raises(InvalidCellError, match="Z1"):
+        dggs.grid_path_cells("Z1", "C40")
+    with pytest.raises(DggsValueError, match="cannot pair"):
+        dggs.grid_path_cells(["C40", "C41"], ["C40", "C41", "C42"])
+    with pytest.raises(TooManyCellsError):
+        dggs.grid_path_cells("A10", "T31", max_cells=3)
+    with pytest.raises(DggsValueError, match="max_cells"):
+        dggs.grid_path_cells("A10", "T31", max_cells=-1)
+
+
+# --------------------------------------------------------------------------- line_to_cells
+
+
+def sampled_cells(points: np.ndarray, level: int) -> set[str]:
+    """The cells of points every twentieth of a short edge along each segment's geodesic."""
+    edge = dggs.level_table(level)[level]["short_edge_m"]
+    out: set[str] = set()
+    for (la1, lo1), (la2, lo2) in zip(points[:-1], points[1:], strict=True):
+        _, _, d = GEOD.inv(lo1, la1, lo2, la2)
+        n = int(min(20000, max(2, math.ceil(20 * d / edge))))
+        pts = np.array(GEOD.npts(lo1, la1, lo2, la2, n)).reshape(-1, 2)
+        lat = np.concatenate([[la1], pts[:, 1], [la2]])
+        lng = np.concatenate([[lo1], pts[:, 0], [lo2]])
+        out |= set(np.asarray(dggs.latlng_to_cell(lat, lng, level)).tolist())
+    return out
+
+
+def check_line(cells: np.ndarray, points: np.ndarray, level: int) -> None:
+    got = [str(c) for c in cells]
+    assert got[0] == dggs.latlng_to_cell(*points[0], level) and got[-1] == dggs.latlng_to_cell(*points[-1], level)
+    assert sampled_cells(points, level) <= set(got)
+    assert all(x != y for x, y in zip(got[:-1], got[1:], strict=True))
+    if len(got) > 1:
+        cls = corner_classes(got)
+        assert all(len(set(cls[k]) & set(cls[k + 1])) == 2 for k in range(len(got) - 1))
+
+
+@settings(max_examples=examples(40))
+@given(st.lists(st.sampled_from(SPECIAL), min_size=1, max_size=3), st.lists(st.tuples(st.floats(-2, 2), st.floats(-2, 2)), min_size=2, max_size=4),
+       st.sampled_from([4, 6, 8]))
+@example([(0.0, 180.0)], [(0.5, -1.0), (0.5, 2.0)], 6)  # across the antimeridian and back
+@example([(90.0, 0.0)], [(-1.0, 0.0), (-1.0, 180.0)], 6)  # over the North Pole
+def test_line_covers_sampled_cells(anchors, offsets, level):
+    lat0, lng0 = anchors[0]
+    pts = np.array([(max(-90.0, min(90.0, lat0 + dy)), lng0 + dx) for dy, dx in offsets])
+    cells = dggs.line_to_cells(pts, level)
+    check_line(cells, pts, level)
+    ints = dggs.line_to_cells(pts, level, as_int=True)
+    assert ints.dtype == np.uint64 and [dggs.int_to_str(int(x)) for x in ints] == cells.tolist()
+
+
+def test_line_orders_and_parts():
+    pts = np.array([(51.05, -114.07), (49.28, -123.12), (47.61, -122.33)])
+    by_array = dggs.line_to_cells(pts, 7)
+    by_shapely = dggs.line_to_cells(LineString(pts[:, ::-1]), 7)
+    assert by_array.tolist() == by_shapely.tolist() == dggs.line_to_cells(pts.tolist(), 7).tolist()
+    check_line(by_array, pts, 7)
+    multi = dggs.line_to_cells(MultiLineString([pts[:2, ::-1], pts[1:, ::-1]]), 7)
+    assert set(multi.tolist()) == set(by_array.tolist())
+    assert dggs.line_to_cells([(10.0, 20.0)], 5).tolist() == [dggs.latlng_to_cell(10.0, 20.0, 5)]
+    assert dggs.line_to_cells(np.zeros((0, 2)), 5).size == 0
+    # a repeated point and a segment ending where it started
+    again = dggs.line_to_cells([(1.0, 1.0), (1.0, 1.0), (1.0, 3.0), (1.0, 1.0)], 6).tolist()
+    assert all(x != y for x, y in zip(again[:-1], again[1:], strict=True))
+
+
+def test_line_errors():
+    with pytest.raises(DggsValueError, match="Polygon"):
+        dggs.line_to_cells(Polygon([(0, 0), (1, 0), (1, 1)]), 3)
+    with pytest.raises(CoordinateError):
+        dggs.line_to_cells([(91.0, 0.0), (0.0, 0.0)], 3)
+    with pytest.raises(CoordinateError):
+        dggs.line_to_cells([(math.nan, 0.0), (0.0, 0.0)], 3)
+    with pytest.raises(CoordinateError, match="shape"):
+        dggs.line_to_cells(np.zeros((3, 3)), 3)
+    with pytest.raises(CoordinateError):
+        dggs.line_to_cells("line", 3)
+    with pytest.raises(LevelError):
+        dggs.line_to_cells([(0.0, 0.0), (1.0, 1.0)], 29)
+    with pytest.raises(TooManyCellsError):
+        dggs.line_to_cells([(0.0, 0.0), (10.0, 10.0)], 12, max_cells=100)
+
+
+# --------------------------------------------------------------------------- circle_to_cells
+
+
+@cache
+def measured(level: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Every cell of a level, its centre, and its boundary sampled with 15 points an edge."""
+    cells = np.array(all_cells(level))
+    clat, clng = (np.asarray(x, dtype=np.float64) for x in dggs.cell_to_latlng(cells))
+    bnd = np.asarray(dggs.cell_to_boundary(cells, densify=15), dtype=np.float64)
+    return cells, clat, clng, bnd
+
+
+def oracle(lat: float, lng: float, level: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(cells, distance to centre, nearest and farthest boundary sample, sample spacing), metres."""
+    cells, clat, clng, bnd = measured(level)
+    n, m = bnd.shape[:2]
+    _, _, dc = GEOD.inv(np.full(n, lng), np.full(n, lat), clng, clat)
+    _, _, db = GEOD.inv(np.full(n * m, lng), np.full(n * m, lat), bnd[..., 1].ravel(), bnd[..., 0].ravel())
+    db = db.reshape(n, m)
+    nxt = np.roll(bnd, -1, axis=1)
+    _, _, step = GEOD.inv(bnd[..., 1].ravel(), bnd[..., 0].ravel(), nxt[..., 1].ravel(), nxt[..., 0].ravel())
+    return cells, np.asarray(dc), db.min(axis=1), db.max(axis=1), step.reshape(n, m).max(axis=1)
+
+
+@settings(max_examples=examples(60))
+@given(st.sampled_from(SPECIAL), st.floats(-5, 5), st.floats(-5, 5), st.floats(50_000, 3_000_000), st.sampled_from([2, 3]))
+@example((90.0, 0.0), 0.0, 0.0, 1_000_000.0, 3)
+@example((-90.0, 0.0), 0.0, 0.0, 2_500_000.0, 2)
+@example((0.0, 180.0), 0.0, 0.0, 800_000.0, 3)
+def test_circle_against_brute_force(p, dlat, dlng, radius, level):
+    lat, lng = max(-90.0, min(90.0, p[0] + dlat)), p[1] + dlng
+    cells, dc, dmin, dmax, step = oracle(lat, lng, level)
+    tol = 1e-3 * dggs.level_table(level)[level]["short_edge_m"]
+    got = {m: set(dggs.circle_to_cells(lat, lng, radius, level, mode=m).tolist()) for m in ("center", "contains", "intersects")}
+    clear = np.abs(dc - radius) > 1e-3
+    assert got["center"] & set(cells[clear]) == set(cells[clear & (dc <= radius)])
+    # contains: every sampled point within the radius, and nothing between samples farther than half a step
+    assert set(cells[dmax + step / 2 <= radius - tol]) <= got["contains"] <= set(cells[dmax <= radius + tol])
+    # intersects: a sampled point within the radius or the centre inside; nothing nearer than half a step less
+    home = str(dggs.latlng_to_cell(lat, lng, level))
+    assert set(cells[dmin <= radius - tol]) | {home} <= got["intersects"]
+    assert got["intersects"] <= set(cells[dmin - step / 2 <= radius + tol]) | {home}
+    assert got["contains"] <= got["center"] | got["contains"] and got["center"] <= got["intersects"]
+    as_int = dggs.circle_to_cells(lat, lng, radius, level, as_int=True)
+    assert {dggs.int_to_str(int(x)) for x in as_int} == got["center"]
+
+
+def test_circle_fine_level_covers_its_rim():
+    """At level 10 across the antimeridian: the cells of points on the rim are all in "intersects"."""
+    lat, lng, r = -16.5, 179.8, 40_000.0
+    cells = set(dggs.circle_to_cells(lat, lng, r, 10, mode="intersects").tolist())
+    az = np.linspace(0, 360, 2000, endpoint=False)
+    rlng, rlat, _ = GEOD.fwd(np.full(az.size, lng), np.full(az.size, lat), az, np.full(az.size, r))
+    assert set(np.asarray(dggs.latlng_to_cell(rlat, rlng, 10)).tolist()) <= cells
+    centre = set(dggs.circle_to_cells(lat, lng, r, 10).tolist())
+    clat, clng = np.asarray(dggs.cell_to_latlng(np.array(sorted(centre))))
+    _, _, d = GEOD.inv(np.full(clat.size, lng), np.full(clat.size, lat), clng, clat)
+    assert (d <= r).all() and centre <= cells
+
+
+def test_circle_errors():
+    with pytest.raises(CoordinateError):
+        dggs.circle_to_cells(91, 0, 1000, 3)
+    with pytest.raises(CoordinateError):
+        dggs.circle_to_cells("a", 0, 1000, 3)
+    with pytest.raises(DggsValueError, match="radius_m"):
+        dggs.circle_to_cells(0, 0, -1, 3)
+    with pytest.raises(DggsValueError, match="radius_m"):
+        dggs.circle_to_cells(0, 0, math.nan, 3)
+    with pytest.raises(DggsValueError, match="radius_m"):
+        dggs.circle_to_cells(0, 0, 2e7, 3)
+    with pytest.raises(DggsValueError, match="mode"):
+        dggs.circle_to_cells(0, 0, 1000, 3, mode="overlaps")
+    with pytest.raises(LevelError):
+        dggs.circle_to_cells(0, 0, 1000, -1)
+    with pytest.raises(TooManyCellsError):
+        dggs.circle_to_cells(0, 0, 1_000_000, 12, max_cells=1000)
+
+
+@pytest.mark.parametrize("name", ["dggs.index.paths", "dggs.index.circles"])
+def test_doctests(name):
+    result = doctest.testmod(importlib.import_module(name), optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0 and result.attempted > 0
