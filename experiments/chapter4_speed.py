@@ -88,10 +88,10 @@ def timing_rows(qualities=QUALITIES, repeats: int = 7, tol: float = TOL) -> list
         face, x, y = _all_faces(q)
         ap, area = _sector_azimuths(x, y)
         # this quality's arrays are bound as defaults (B023), as the method name is
-        whole = {m: (lambda name=name, face=face, x=x, y=y:
+        whole: dict[str, Callable[..., Any]] = {m: (lambda name=name, face=face, x=x, y=y:
                      thesis_inverse.inverse_xyz(face, x, y, method=name, degree=3, tol=tol))
                  for m, name in methods.items()}
-        step = {
+        step: dict[str, Callable[..., Any]] = {
             "O": lambda area=area, ap=ap: thesis_inverse.newton(area, ap, tol, 20),
             "I": lambda area=area, ap=ap: thesis_inverse.newton(area, thesis_inverse.az_poly(ap, 3), tol, 20),
             "E": lambda ap=ap: thesis_inverse.az_poly(ap, 3),

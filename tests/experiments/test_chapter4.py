@@ -40,7 +40,7 @@ def fits() -> dict[int, dict]:
 
 # --------------------------------------------------------------------------- Table 4.1
 def test_thesis_variances_imply_about_5870_samples():
-    # gnuplot: var = SS / (N - p); every row but degree 2 (a typo) agrees on N.
+    # gnuplot: var = SS / (N - p); every row but degree 2 (one of its pair misprinted) agrees on N.
     ns = [ss / var + d + 1 for d, (ss, var) in THESIS_4_1.items() if d != 2]
     assert all(5840 < n < 5900 for n in ns)
     assert 5840 < c4.implied_sample_size() < 5900
@@ -48,7 +48,8 @@ def test_thesis_variances_imply_about_5870_samples():
 
 @pytest.mark.parametrize("degree", [1, 3, 5, 7])
 def test_odd_degree_ss_matches_thesis(fits, degree):
-    # Full 120-degree sector, radians, area-spaced Az': odd degrees reproduce to 10 %.
+    # Full 120-degree sector, radians, area-spaced Az': odd degrees come within 10 % (1-3 %: not
+    # reproduced, see test_chapter4_marks.py).
     ss, var = THESIS_4_1[degree]
     assert fits[degree]["ss"] == pytest.approx(ss, rel=0.10)
     assert fits[degree]["var"] == pytest.approx(var, rel=0.10)
@@ -160,14 +161,23 @@ def test_elimination_errors_finite_and_ordered(quick, fit):
 
 
 def test_thesis_distance_errors_are_radius_fractions(quick):
-    # Read as fractions of the radius (not %), the thesis's Table 4.3 matches our
-    # full-sector cubic: the max (at a face vertex) within 20 %, the average within 30 %.
+    # Read as fractions of the radius (not %), the thesis's Table 4.3 comes near our
+    # full-sector cubic: the max (on the quality-25 grid) within 20 %, the average within 30 %
+    # (not reproduced: 7 % and 10-21 % off, see test_chapter4_marks.py).
     d3 = _errors(quick, "thesis", 3)
     for q, avg in THESIS_AVG_DIST.items():
         assert d3[q]["dist_max"] == pytest.approx(THESIS_MAX_DIST, rel=0.20)
         assert d3[q]["dist_avg"] == pytest.approx(avg, rel=0.30)
     # As per cent (5.9 m on the Earth) they are out of a cubic's reach.
     assert min(r["dist_avg"] for r in quick["table_4_3"] if r["degree"] == 3) > 10 * 9.379e-7
+
+
+def test_run_carries_the_marks(quick):
+    assert len(quick["table_4_1_marks"]) == 14 and len(quick["table_4_3_marks"]) == 16
+    assert min(quick["procedures"], key=lambda n: quick["procedures"][n]["score"]) == "area-120"
+    text = c4._format(quick)
+    assert "0 reproduced, 0 close, 14 differs of 14 cells" in text
+    assert "0 reproduced, 0 close, 16 differs of 16 cells" in text
 
 
 def test_degree7_iteration_claim_not_reproduced(quick):
