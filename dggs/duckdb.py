@@ -327,6 +327,9 @@ def register(con: Any) -> Any:
     from dggs._duckdb_more import register_more  # imports this module's helpers
 
     more = register_more(con)
+    from dggs._duckdb_paths import register_paths  # paths, lines, circles
+
+    register_paths(con)
     for name in FUNCTIONS:
         if name.startswith("dggs_latlng_to_cell") or name in more:
             continue

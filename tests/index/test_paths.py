@@ -337,3 +337,49 @@ def test_circle_errors():
 def test_doctests(name):
     result = doctest.testmod(importlib.import_module(name), optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0 and result.attempted > 0
+
+
+# --------------------------------------------------------------------------- DuckDB
+
+
+@pytest.fixture(scope="module")
+def con():
+    duckdb = pytest.importorskip("duckdb")
+    from dggs.duckdb import register
+
+    return register(duckdb.connect())
+
+
+def test_duckdb_paths_row_by_row(con):
+    """Each row equals the Python API; NULL in, NULL out; int, uint and str ids; poles and the antimeridian."""
+    rng = np.random.default_rng(21)
+    pts = [*SPECIAL[:8], *zip(rng.uniform(-90, 90, 8).tolist(), rng.uniform(-180, 180, 8).tolist(), strict=True)]
+    a = [dggs.latlng_to_cell(lat, lng, 5) for lat, lng in pts]
+    b = [dggs.latlng_to_cell(max(-90.0, lat - 4), lng + 4, 5) for lat, lng in pts]
+    rows = con.sql("SELECT dggs_grid_path_cells(a, b) FROM (SELECT unnest(?) AS a, unnest(?) AS b)", params=[a + [None], b + ["C4"]]).fetchall()
+    assert [r[0] for r in rows] == [dggs.grid_path_cells(x, y) for x, y in zip(a, b, strict=True)] + [None]
+    ia = [dggs.str_to_int(x) for x in a]
+    ib = [dggs.str_to_int(x) for x in b]
+    got = con.sql("SELECT dggs_grid_path_cells(a::BIGINT, b::BIGINT), dggs_grid_path_cells(a::UBIGINT, b::UBIGINT) "
+                  "FROM (SELECT unnest(?) AS a, unnest(?) AS b)", params=[ia, ib]).fetchall()
+    assert [list(r[0]) for r in got] == [list(r[1]) for r in got] == [dggs.grid_path_cells(x, y) for x, y in zip(ia, ib, strict=True)]
+    with pytest.raises(Exception, match="dggs_grid_path_cells.*different levels"):
+        con.sql("SELECT dggs_grid_path_cells('C401', 'C4')").fetchall()
+
+
+def test_duckdb_lines_and_circles(con):
+    import shapely
+
+    line = shapely.LineString([(179.5, 0.0), (-179.5, 0.5), (-178.0, 2.0)])
+    wkb = shapely.to_wkb(line)
+    got = con.sql("SELECT dggs_line_to_cells_str(?, 7), dggs_line_to_cells(?, 7), dggs_line_to_cells(NULL, 7)", params=[wkb, wkb]).fetchall()[0]
+    assert got[0] == dggs.line_to_cells(line, 7).tolist() and got[1] == dggs.line_to_cells(line, 7, as_int=True).tolist() and got[2] is None
+    for lat, lng, r, m in [(90.0, 0.0, 300_000.0, "intersects"), (0.0, 180.0, 100_000.0, "contains"), (10.0, 20.0, 50_000.0, "center")]:
+        row = con.sql("SELECT dggs_circle_to_cells_str(?, ?, ?, 7, ?), dggs_circle_to_cells(?, ?, ?, 7, ?)", params=[lat, lng, r, m] * 2).fetchall()[0]
+        assert row[0] == dggs.circle_to_cells(lat, lng, r, 7, mode=m).tolist()
+        assert row[1] == dggs.circle_to_cells(lat, lng, r, 7, mode=m, as_int=True).tolist()
+    assert con.sql("SELECT dggs_circle_to_cells(0, 0, NULL, 7, 'center')").fetchall() == [(None,)]
+    with pytest.raises(Exception, match="dggs_circle_to_cells.*mode"):
+        con.sql("SELECT dggs_circle_to_cells(0, 0, 10.0, 7, 'nope')").fetchall()
+    with pytest.raises(Exception, match="dggs_line_to_cells.*WKB"):
+        con.sql("SELECT dggs_line_to_cells('\\x00'::BLOB, 7)").fetchall()
