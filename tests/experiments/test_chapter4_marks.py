@@ -129,6 +129,16 @@ def test_best_reading_is_area_spaced_over_the_full_sector():
     assert rec.best_procedure() == "area-120" == min(scores, key=scores.get)
     # the text's "60 degrees" and degrees as unit are far off, every reading misses
     assert scores["uniform-60"] > 1 and scores["area-120-degrees"] > 5 and scores["area-120"] > 0.05
+    # a fit without constant term gains at even degrees, as the thesis's does, but doubles every SS
+    origin = [ss for ss, _ in rec.procedure_fits("origin-area-120")]
+    assert all(origin[d] < 0.95 * origin[d - 1] for d in (1, 3, 5))
+    assert all(o > 1.3 * THESIS_TABLE_4_1[d][0] for d, o in enumerate(origin, 1))
+
+
+def test_density_does_not_move_the_variance():
+    sparse, dense = rec.procedure_fits("area-120", 2000), rec.procedure_fits("area-120", 20000)
+    for (_, v1), (_, v2) in zip(sparse, dense, strict=True):
+        assert v1 == pytest.approx(v2, rel=0.005)
 
 
 @settings(max_examples=40, deadline=None)
