@@ -44,7 +44,8 @@ def feature_collection(
 ) -> str:
     """A FeatureCollection as text: feature ``id`` = zone id, geometry text as given, then ``extra`` members.
 
-    Properties and ``extra`` are written compactly, in UTF-8 (numpy scalars as numbers, NaN as null).
+    Properties and ``extra`` are written compactly, in UTF-8 (numpy scalars as numbers, NaN as null, keys
+    that are not strings as strings, as the json module writes them).
     """
     fragment = orjson.Fragment
     features = [
@@ -52,4 +53,4 @@ def feature_collection(
         for i, g, p in zip(ids, geometries, properties, strict=True)
     ]
     document = {"type": "FeatureCollection", "features": features, **extra}
-    return orjson.dumps(document, option=orjson.OPT_SERIALIZE_NUMPY).decode()
+    return orjson.dumps(document, option=orjson.OPT_SERIALIZE_NUMPY | orjson.OPT_NON_STR_KEYS).decode()
