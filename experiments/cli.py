@@ -124,7 +124,7 @@ def tables(quick: bool, dggs_levels: int) -> None:
 
 @experiments.command()
 @click.argument("outdir", type=click.Path(file_okay=False))
-@click.option("--chapter", "chapter", type=click.Choice(["4", "5", "6", "all"]), default=None,
+@click.option("--chapter", "chapter", type=click.Choice(["3", "4", "5", "6", "all"]), default=None,
               help="Figures of one chapter (default: all; only 6 when --scheme is given).")
 @click.option("--scheme", "schemes", multiple=True,
               help="Chapter 6: scheme(s) to draw (default: all seven, plus Figure 6.18).")
@@ -136,7 +136,7 @@ def tables(quick: bool, dggs_levels: int) -> None:
 @click.option("--quick", is_flag=True, help="Coarser samples and chapter 6 to level 3 (a few seconds).")
 def figures(outdir: str, chapter: str | None, schemes: tuple[str, ...], levels: int | None, variant: str,
             quick: bool) -> None:
-    """Write the thesis's figures as PNG: chapters 4 (4.1-4.5), 5 (5.1-5.22), 6 (6.14-6.28)."""
+    """Write the thesis's figures as PNG: chapters 3 (3.13-3.14), 4 (4.1-4.5), 5 (5.1-5.22), 6 (6.14-6.28)."""
     from dggs.experiments.figures import CHAPTERS, write_all
 
     if chapter is None:
@@ -144,3 +144,22 @@ def figures(outdir: str, chapter: str | None, schemes: tuple[str, ...], levels: 
     chapters = CHAPTERS if chapter == "all" else (chapter,)
     for path in write_all(outdir, chapters, schemes or None, levels, _progress(), variant, quick):
         click.echo(path)
+
+
+@experiments.command()
+@click.option("--level", type=int, default=5, show_default=True, help="Level whose cells' edge ratios are measured.")
+@click.option("--samples", type=int, default=120, show_default=True,
+              help="Barycentric steps a side of the natural triangle's sample (about samples**2 / 2 points).")
+@click.option("--json", "as_json", is_flag=True, help="Print a JSON list, one object per projection.")
+def projections(level: int, samples: int, as_json: bool) -> None:
+    """Angular distortion of Snyder's ISEA and the vertex-oriented great circle IVEA side by side (thesis §3.1.7)."""
+    from dggs.experiments.projections import distortion_table, format_table
+
+    rows = distortion_table(level, samples)
+    if as_json:
+        click.echo(json.dumps(rows, indent=1))
+        return
+    click.echo(format_table(rows))
+    click.echo("ω: maximum angular deformation 2 asin((a - b) / (a + b)) of the Tissot indicatrix over the sample"
+               " (Snyder 1992 gives ISEA's supremum, 17.27°, at the face centre);\nedge ratio: longest over"
+               " shortest geodesic corner-to-corner edge of each cell (2 for the planar 30-60-90 cell).")

@@ -46,7 +46,7 @@ __all__ = [
 ]
 
 #: Chapters with figures (``dggs experiments figures --chapter``).
-CHAPTERS = ("4", "5", "6")
+CHAPTERS = ("3", "4", "5", "6")
 
 #: Above this many faces a globe is drawn without edges and rasterized (levels 6-7).
 _BIG = 20_000
@@ -259,7 +259,7 @@ def write_all(
     variant: str = "thesis",
     quick: bool = False,
 ) -> list[Path]:
-    """Write the figures of the given chapters ("4", "5", "6"); returns the paths.
+    """Write the figures of the given chapters ("3", "4", "5", "6"); returns the paths.
 
     Chapter 6 is :func:`write_figures` (``schemes``, ``levels``, ``variant``)
     plus Figure 6.18 when Split (1:9) is among the schemes.  ``quick`` makes
@@ -278,6 +278,10 @@ def write_all(
         raise ValueError(f"no figures for chapter(s) {', '.join(bad)}; choose from {', '.join(CHAPTERS)}")
     _plt()
     written: list[Path] = []
+    if "3" in chapters:  # Figures 3.13-3.14 and the angular deformation of ISEA and IVEA
+        from dggs.experiments.projections import write_projection_figures
+
+        written += write_projection_figures(outdir, quick)
     if "4" in chapters:
         from dggs.experiments.figures_ch4 import write_chapter4
 

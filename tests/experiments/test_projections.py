@@ -49,3 +49,19 @@ def test_figures(tmp_path):
     assert [p.name for p in paths] == ["figure_3_13_vertex_oriented_slice.png", "figure_3_14_vertex_oriented_dice.png",
                                        "projections_angular_deformation.png"]
     assert all(p.stat().st_size > 10_000 for p in paths)
+
+
+def test_cli_prints_the_table_and_draws_chapter_3(tmp_path):
+    from click.testing import CliRunner
+
+    from dggs.experiments.cli import experiments
+
+    r = CliRunner().invoke(experiments, ["projections", "--level", "1", "--samples", "10"])
+    assert r.exit_code == 0, r.output
+    assert "| ISEA |" in r.output and "| IVEA |" in r.output and "120 |" in r.output
+    r = CliRunner().invoke(experiments, ["projections", "--level", "0", "--samples", "5", "--json"])
+    assert r.exit_code == 0 and '"projection": "IVEA"' in r.output
+    pytest.importorskip("matplotlib")
+    r = CliRunner().invoke(experiments, ["figures", str(tmp_path), "--chapter", "3", "--quick"])
+    assert r.exit_code == 0, r.output
+    assert "figure_3_13_vertex_oriented_slice.png" in r.output
