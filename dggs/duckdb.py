@@ -330,6 +330,9 @@ def register(con: Any) -> Any:
     from dggs._duckdb_paths import register_paths  # paths, lines, circles
 
     register_paths(con)
+    from dggs._duckdb_edges import register_edges  # child positions, local (i, j), directed edges
+
+    register_edges(con)
     for name in FUNCTIONS:
         if name.startswith("dggs_latlng_to_cell") or name in more:
             continue
