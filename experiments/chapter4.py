@@ -18,8 +18,8 @@ tries every reading the text allows and marks each cell):
 * The two columns are gnuplot's ``fit`` summary (the thesis's Figure 4.1 was
   made with gnuplot 4.2): "final sum of squares of residuals" (WSSR) and
   "variance of residuals (reduced chisquare) = WSSR/ndf", ``ndf = N - p``.
-  SS / var then gives ``N - p`` of about 5,845-5,891 for every degree but
-  degree 2 (whose pair gives 5,586: one of the two is misprinted); we take
+  SS / var + p then gives ``N`` = 5,853-5,893 for every degree but
+  degree 2 (whose pair gives 5,587: one of the two is misprinted); we take
   ``N`` = the median implied sample size, 5,871.
 * Azimuths are in radians (in degrees every SS would be 3,283 times larger).
 * The fit spans the full 120-degree vertex-to-vertex sector, not the text's

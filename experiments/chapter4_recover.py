@@ -250,7 +250,7 @@ def _reason_4_1(degree: int, name: str) -> str:
 
 #: Degree 2's printed pair disagrees with the other rows on N (gnuplot: var = SS / (N - p)).
 DEGREE_2_NOTE = (f"its SS / var implies N = {THESIS_TABLE_4_1[2][0] / THESIS_TABLE_4_1[2][1] + 3:,.0f} against "
-                 "5,845-5,891 for the other degrees, so one of the pair is misprinted (9.72e-01 would give 5,858)")
+                 "5,853-5,893 for the other degrees, so one of the pair is misprinted (9.72e-01 would give 5,858)")
 
 
 def table_4_1_marks(name: str | None = None) -> list[dict[str, Any]]:

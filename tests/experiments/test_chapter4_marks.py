@@ -179,3 +179,11 @@ def test_table_4_3_marks():
     assert all(0.05 < by[(q, "max dist")]["rel_diff"] < 0.09 for q in THESIS_TABLE_4_3)
     assert by[(25, "max area %")]["printed"] == pytest.approx(100 * THESIS_TABLE_4_3[25][3])
     assert [m["status"] for m in marks].count("differs") == 16
+
+
+def test_degree_2_pair_disagrees_on_n():
+    # gnuplot: var = SS / (N - p).  Every printed pair but degree 2's implies the same N to rounding.
+    n = {d: ss / var + d + 1 for d, (ss, var) in THESIS_TABLE_4_1.items()}
+    assert all(5850 < v < 5895 for d, v in n.items() if d != 2) and n[2] < 5600
+    assert 5850 < 0.972 / 1.66e-4 + 3 < 5895  # the evidence the note gives: 9.72e-01 would fit
+    assert "5,587" in rec.DEGREE_2_NOTE and "5,853-5,893" in rec.DEGREE_2_NOTE
