@@ -16,6 +16,8 @@ Examples
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 __all__ = [
     "TABLE_5_1",
     "TABLE_6_1",
@@ -115,7 +117,7 @@ TABLE_6_7: dict[str, tuple[float, ...]] = {
 }
 
 #: All chapter-6 tables by number, with their captions.
-TABLES_6: dict[str, tuple[str, dict[str, tuple[float, ...]]]] = {
+TABLES_6: dict[str, tuple[str, Mapping[str, tuple[float, ...]]]] = {
     "6.1": ("Global area deviation (%)", TABLE_6_1),
     "6.2": ("Face count", TABLE_6_2),
     "6.3": ("Average spherical displacement (%)", TABLE_6_3),
