@@ -19,6 +19,8 @@ where the projection bends most (tests/index/test_area.py).
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ._kernel import hierarchy as kh
@@ -46,16 +48,17 @@ def _geod() -> object:
     return Geod(ellps="WGS84")
 
 
-def needed_densify(ids: np.ndarray, area_tolerance: float = AREA_TOLERANCE) -> np.ndarray:
+def needed_densify(ids: np.ndarray, area_tolerance: float = AREA_TOLERANCE, rings: Any = None) -> np.ndarray:
     """Points per edge each cell of ``ids`` (valid uint64 ids) needs, from :data:`STEPS`.
 
-    ``area_tolerance`` is relative to the cell's area.
+    ``area_tolerance`` is relative to the cell's area.  ``rings`` is the boundary kernel loop
+    (default ISEA's ``points.boundaries``; ``dggs.Grid("IVEA")`` passes its own).
     """
     n = ids.shape[0]
     if n == 0:
         return np.zeros(0, dtype=np.int64)
     ring = np.empty((n, 6, 2))
-    kp.boundaries(n * 2, ids, 1, ring, False)  # (lat, lng): corner, midpoint, corner, midpoint, ...
+    (kp.boundaries if rings is None else rings)(n * 2, ids, 1, ring, False)  # (lat, lng): corner, midpoint, corner, midpoint, ...
     lat0, lng0 = ring[:, 0::2, 0].ravel(), ring[:, 0::2, 1].ravel()
     lat1, lng1 = np.roll(ring[:, 0::2, 0], -1, axis=1).ravel(), np.roll(ring[:, 0::2, 1], -1, axis=1).ravel()
     geod = _geod()

@@ -170,7 +170,7 @@ def test_ivea_polygons_have_the_cell_area():
         poly = IVEA.cell_to_polygon(cell)
         assert poly.is_valid
         area, _ = GEOD.geometry_area_perimeter(poly)
-        assert abs(area) == pytest.approx(IVEA.cell_area(cell), rel=1e-5), cell
+        assert abs(area) == pytest.approx(IVEA.cell_area(cell), rel=2e-6), cell  # the default densify aims at 1e-6
 
 
 def test_ivea_whole_level_tiles_the_globe():
