@@ -91,9 +91,19 @@ def grid_path_cells(a: Any, b: Any, max_cells: int | None = None) -> Any:
     check_max_cells(max_cells)
     ia, ib, kind = pair(a, b)
     out, offsets = _paths(ia, ib, max_cells)
+    flat = cells_out_flat(out, kind)  # every id converted at once, then cut into paths
     if kind.scalar:
-        return cells_out_flat(out, kind)
-    return [cells_out_flat(out[offsets[i] : offsets[i + 1]], kind) for i in range(ia.shape[0])]
+        return flat
+    if ia.shape[0] == 0:
+        return []
+    bounds = offsets.tolist()
+    if isinstance(flat, np.ndarray):
+        return np.split(flat, bounds[1:-1])
+    if hasattr(flat, "iloc"):  # a pandas Series: each path with its own 0-based index
+        return [flat.iloc[s:e].reset_index(drop=True) for s, e in zip(bounds[:-1], bounds[1:], strict=True)]
+    if hasattr(flat, "slice"):  # pyarrow
+        return [flat.slice(s, e - s) for s, e in zip(bounds[:-1], bounds[1:], strict=True)]
+    return [flat[s:e] for s, e in zip(bounds[:-1], bounds[1:], strict=True)]
 
 
 def _parts(line: Any) -> list[np.ndarray]:

@@ -2,7 +2,7 @@
 
 - ``grid_path_cells``: a breadth-first search over the edge graph built from
   the cells' corners (two cells are neighbours when they share two corners,
-  matched as points on the sphere), over every cell of levels 1-3.
+  matched as points on the sphere), over every cell of levels 0-3.
 - ``line_to_cells``: the cells of points sampled densely along each segment's
   geodesic (``pyproj.Geod.npts``), and neighbours by shared corners.
 - ``circle_to_cells``: every cell of a low level, measured with
@@ -114,7 +114,7 @@ def check_path(path: list[str], a: str, b: str, graph: dict[str, list[str]], dis
         assert y in graph[x], (x, y)
 
 
-@pytest.mark.parametrize("level", [1, 2, 3])
+@pytest.mark.parametrize("level", [0, 1, 2, 3])
 def test_paths_from_special_cells_against_bfs(level):
     """From cells at the poles, the antimeridian, the vertices and the face edges to every cell of the level."""
     cells, graph = corner_graph(level)
@@ -126,7 +126,7 @@ def test_paths_from_special_cells_against_bfs(level):
 
 
 @settings(max_examples=examples(100))
-@given(st.integers(1, 3), st.integers(0, 10**9), st.integers(0, 10**9))
+@given(st.integers(0, 3), st.integers(0, 10**9), st.integers(0, 10**9))
 @example(3, 0, 0)
 def test_path_is_shortest_str_and_int(level, i, j):
     cells, graph = corner_graph(level)
@@ -166,6 +166,11 @@ def test_path_kinds_and_broadcasting():
     assert dggs.grid_path_cells([a, a], b) == [one, one]  # one against many
     series = dggs.grid_path_cells(pd.Series([a]), pd.Series([b]))
     assert list(series[0]) == one
+    import pyarrow as pa
+
+    arrow = dggs.grid_path_cells(pa.array([a, b]), pa.array([b, b]))
+    assert arrow[0].to_pylist() == one and arrow[1].to_pylist() == [b]
+    assert dggs.grid_path_cells([], []) == []
 
 
 def test_path_errors():
