@@ -1,0 +1,70 @@
+"""Benchmark the IVEA projection and grid against ISEA's, operation by operation, in one run.
+
+N random points uniform on the sphere (fixed seed).  Rows: the checked projections
+(``dggs.geometry.snyder`` / ``dggs.geometry.ivea`` ``forward`` and ``inverse`` on the unit sphere),
+then the grids (``dggs.Grid("ISEA")``, which is the module-level verbs, and ``dggs.Grid("IVEA")``):
+point location at level 15, cell centres, and boundaries (3 corners, and ``densify=8``).
+Every case runs in turn in each round (``_common.interleaved``: medians of ``--repeats``), after an
+untimed warm-up (numba's compilation or cache load).  Reports ns per item and IVEA's time over ISEA's.
+One thread unless ``--threads`` is given (``DGGS_THREADS`` is read at import).
+
+Run::
+
+    DGGS_THREADS=1 .venv/bin/python benchmarks/bench_ivea.py                 # 1,000,000 points
+    DGGS_THREADS=1 .venv/bin/python benchmarks/bench_ivea.py --points 100000
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import dggs  # noqa: E402
+from dggs.geometry import ivea, snyder  # noqa: E402
+
+import _common  # noqa: E402
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Print the table (Markdown) of ISEA against IVEA."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--points", type=int, default=1_000_000)
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--level", type=int, default=15)
+    args = parser.parse_args(argv)
+    lat, lng = _common.points(args.points)
+    grids = {"ISEA": dggs.Grid("ISEA"), "IVEA": dggs.Grid("IVEA")}
+    projections = {"ISEA": snyder, "IVEA": ivea}
+    planar = {k: m.forward(lat, lng) for k, m in projections.items()}
+    ids = dggs.latlng_to_cell(lat, lng, args.level, as_int=True)
+    cases = {}
+    for name in ("ISEA", "IVEA"):
+        m, g, fxy = projections[name], grids[name], planar[name]
+        cases[("projection forward", name)] = (lambda m=m: m.forward(lat, lng), args.points)
+        cases[("projection inverse", name)] = (lambda m=m, fxy=fxy: m.inverse(*fxy), args.points)
+        cases[(f"latlng_to_cell level {args.level}", name)] = (
+            lambda g=g: g.latlng_to_cell(lat, lng, args.level, as_int=True), args.points)
+        cases[("cell_to_latlng", name)] = (lambda g=g: g.cell_to_latlng(ids), args.points)
+        cases[("cell_to_boundary", name)] = (lambda g=g: g.cell_to_boundary(ids), args.points)
+        cases[("cell_to_boundary densify=8", name)] = (lambda g=g: g.cell_to_boundary(ids, densify=8), args.points)
+    res = _common.interleaved(cases, args.repeats, budget=60.0)
+    print(f"{args.points:,} points, DGGS_THREADS={os.environ.get('DGGS_THREADS', 'unset')}, "
+          f"load average {_common.loadavg()}\n")
+    print("| operation | ISEA ns/item | IVEA ns/item | IVEA / ISEA |")
+    print("|---|---:|---:|---:|")
+    for op in dict.fromkeys(k[0] for k in cases):
+        a, b = res.get((op, "ISEA")), res.get((op, "IVEA"))
+        if a is None or b is None:
+            continue
+        ta, tb = a["wall"] / a["units"], b["wall"] / b["units"]
+        print(f"| {op} | {_common.fmt_ns(ta)} | {_common.fmt_ns(tb)} | {tb / ta:.2f} |")
+    if _common.NOTES:
+        print("\n" + _common.notes_section())
+
+
+if __name__ == "__main__":
+    main()
