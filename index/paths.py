@@ -8,6 +8,7 @@ distance of a point are :func:`dggs.circle_to_cells` (:mod:`dggs.index.circles`)
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -18,7 +19,8 @@ from ._checks import check_level, check_max_cells, check_size
 from ._convert import cells_out_flat, id_name, ids_array, pair
 from ._kernel import paths as kpaths
 from .grid import are_neighbor_cells, grid_distance
-from .lines import geodesic_to_cells
+from .measure import level_table
+from .points import latlng_to_cell
 
 __all__ = ["grid_path_cells", "line_to_cells"]
 
@@ -127,23 +129,124 @@ def _parts(line: Any) -> list[np.ndarray]:
     return [xy] if xy.shape[0] else []
 
 
-def _joined(chunks: list[np.ndarray]) -> np.ndarray:
-    """Consecutive cells, repeats at the joins dropped, gaps (never seen) closed by a shortest path."""
-    cells = np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.uint64)
-    if cells.size > 1:
-        cells = cells[np.concatenate([[True], cells[1:] != cells[:-1]])]
-    if cells.size > 1:
-        gaps = np.flatnonzero(~np.asarray(are_neighbor_cells(cells[:-1], cells[1:])))
-        if gaps.size:  # a join whose two ends fell in cells that only share a corner
-            pieces, prev = [], 0
-            for g in gaps.tolist():
-                pieces.append(cells[prev : g + 1])
-                path, _ = _paths(cells[g : g + 1], cells[g + 1 : g + 2], None)
-                pieces.append(path[1:-1])
-                prev = g + 1
-            pieces.append(cells[prev:])
-            cells = np.concatenate(pieces)
-    return cells
+#: Samples per short cell edge along each geodesic, as :func:`dggs.geodesic_to_cells` (gaps are bisected).
+_SAMPLES_PER_EDGE = 4
+#: Bisection stops at this length (metres): cells that still meet only at a corner are joined by a shortest path.
+_CORNER_M = 1e-4
+#: Cells per short edge of length, plus cells per segment, in the size bound checked before sampling
+#: (:data:`dggs.index.lines._CELLS_PER_EDGE`'s reasoning: a segment crosses at most 1.98 cells a short edge).
+_CELLS_PER_EDGE, _CELLS_EXTRA = 3.0, 24
+
+
+@lru_cache(maxsize=1)
+def _geod() -> Any:
+    import pyproj
+
+    return pyproj.Geod(ellps="WGS84")
+
+
+def _at(lat: np.ndarray, lng: np.ndarray, az: np.ndarray, s: np.ndarray, level: int) -> np.ndarray:
+    """The cells at distances ``s`` along the geodesics from (lat, lng) with azimuths ``az``."""
+    x, y, _ = _geod().fwd(lng, lat, az, s)
+    ids: np.ndarray = latlng_to_cell(np.asarray(y, dtype=np.float64), np.asarray(x, dtype=np.float64), level, as_int=True)
+    return ids
+
+
+def _bisect(gaps: list[tuple[int, float, int, float, int]], lat: np.ndarray, lng: np.ndarray, az: np.ndarray,
+            level: int) -> list[list[int]]:
+    """The cells strictly between each gap's ends, in order: all gaps bisected together, a round at a time.
+
+    A gap is (segment, distance of its last sample in cell a, a, distance of
+    the first sample in cell b, b).  Each round samples every open stretch's
+    midpoint; a stretch closes when its end cells share an edge, or, shorter
+    than :data:`_CORNER_M`, through a shortest grid path around the corner.
+    """
+    out: list[list[Any]] = [[] for _ in gaps]
+    open_ = [(g, seg, sa, ca, sb, cb, out[g]) for g, (seg, sa, ca, sb, cb) in enumerate(gaps)]
+    while open_:
+        seg = np.array([o[1] for o in open_], dtype=np.int64)
+        sa, sb = np.array([o[2] for o in open_]), np.array([o[4] for o in open_])
+        sm = 0.5 * (sa + sb)
+        cm = _at(lat[seg], lng[seg], az[seg], sm, level)
+        nxt = []
+        for (g, sg, a_s, ca, b_s, cb, slot), m_s, cmid in zip(open_, sm.tolist(), cm.tolist(), strict=True):
+            parts: list[Any] = []
+            for x_s, cx, y_s, cy in ((a_s, ca, m_s, cmid), (m_s, cmid, b_s, cb)):
+                if cx == cy:
+                    continue
+                inner: list[Any] = []
+                parts.append(inner)
+                nxt.append((g, sg, x_s, cx, y_s, cy, inner))
+                if cy != cb:
+                    parts.append(cy)
+            slot.extend(parts)
+        open_ = _close(nxt)
+    return [list(_flat(o)) for o in out]
+
+
+def _close(stretches: list[Any]) -> list[Any]:
+    """The stretches still open: those whose cells share no edge, closing the short ones around their corner."""
+    if not stretches:
+        return []
+    a = np.array([o[3] for o in stretches], dtype=np.uint64)
+    b = np.array([o[5] for o in stretches], dtype=np.uint64)
+    shared = np.asarray(are_neighbor_cells(a, b))
+    still = []
+    for o, ok in zip(stretches, shared.tolist(), strict=True):
+        if ok:
+            continue
+        if o[4] - o[2] < _CORNER_M:
+            path, _ = _paths(np.array([o[3]], np.uint64), np.array([o[5]], np.uint64), None)
+            o[6].extend(int(c) for c in path[1:-1])
+        else:
+            still.append(o)
+    return still
+
+
+def _flat(items: list[Any]) -> Any:
+    for x in items:
+        if isinstance(x, list):
+            yield from _flat(x)
+        else:
+            yield x
+
+
+def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
+    """The cells along one polyline of (lat, lng) points (at least two), all segments sampled at once."""
+    lat0, lng0, lat1, lng1 = xy[:-1, 0], xy[:-1, 1], xy[1:, 0], xy[1:, 1]
+    bad = ~(np.isfinite(xy).all(axis=1) & (np.abs(xy[:, 0]) <= 90.0))
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise CoordinateError(f"point ({float(xy[i, 0])!r}, {float(xy[i, 1])!r}) at index {i} is not a finite latitude in -90..90 and a finite longitude")
+    az, _, dist = _geod().inv(lng0, lat0, lng1, lat1)
+    az, dist = np.asarray(az, dtype=np.float64), np.asarray(dist, dtype=np.float64)
+    edge = level_table(level)[level]["short_edge_m"]
+    check_size(int(np.ceil(_CELLS_PER_EDGE * dist / edge).sum()) + _CELLS_EXTRA * dist.size, max_cells, "line_to_cells")
+    n = np.maximum(np.ceil(dist * _SAMPLES_PER_EDGE / edge).astype(np.int64), 1)  # steps per segment
+    seg = np.repeat(np.arange(dist.size), n + 1)
+    k = np.arange(seg.size) - np.repeat(np.cumsum(n + 1) - (n + 1), n + 1)
+    s = k * (dist / n)[seg]
+    ends = np.cumsum(n + 1) - 1
+    s[ends] = dist
+    cells = _at(lat0[seg], lng0[seg], az[seg], s, level)
+    cells[ends - n] = latlng_to_cell(lat0, lng0, level, as_int=True)  # the points themselves
+    cells[ends] = latlng_to_cell(lat1, lng1, level, as_int=True)
+    keep = np.ones(cells.size, dtype=bool)
+    keep[1:] = cells[1:] != cells[:-1]
+    first = np.flatnonzero(keep)  # the first sample of each run of one cell
+    run = cells[first]
+    gaps = np.flatnonzero(~np.asarray(are_neighbor_cells(run[:-1], run[1:]))) if run.size > 1 else np.zeros(0, np.int64)
+    if gaps.size == 0:
+        return run
+    j = first[gaps + 1]  # the stretch is between samples j - 1 and j (one segment: joins repeat a point)
+    fill = _bisect([(int(seg[i]), float(s[i - 1]), int(cells[i - 1]), float(s[i]), int(cells[i])) for i in j.tolist()],
+                   lat0, lng0, az, level)
+    pieces, prev = [], 0
+    for g, f in zip(gaps.tolist(), fill, strict=True):
+        pieces += [run[prev : g + 1], np.array(f, dtype=np.uint64)]
+        prev = g + 1
+    pieces.append(run[prev:])
+    return np.concatenate(pieces)
 
 
 def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | None = None) -> np.ndarray:
@@ -207,13 +310,7 @@ def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | 
     parts = _parts(line)
     chunks: list[np.ndarray] = []
     for xy in parts:
-        if xy.shape[0] == 1:
-            xy = np.vstack([xy, xy])
-        segments = [
-            geodesic_to_cells(xy[i, 0], xy[i, 1], xy[i + 1, 0], xy[i + 1, 1], level, as_int=True, max_cells=max_cells)
-            for i in range(xy.shape[0] - 1)
-        ]
-        chunks.append(_joined(segments))
+        chunks.append(_trace(np.vstack([xy, xy]) if xy.shape[0] == 1 else xy, level, max_cells))
     cells = np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.uint64)
     if cells.size > 1:  # parts that end and start in one cell
         cells = cells[np.concatenate([[True], cells[1:] != cells[:-1]])]

@@ -227,6 +227,15 @@ def test_line_covers_sampled_cells(anchors, offsets, level):
     assert ints.dtype == np.uint64 and [dggs.int_to_str(int(x)) for x in ints] == cells.tolist()
 
 
+@settings(max_examples=examples(50))
+@given(st.sampled_from(SPECIAL), st.floats(-3, 3), st.floats(-3, 3), st.integers(2, 14))
+def test_one_segment_is_geodesic_to_cells(p, dlat, dlng, level):
+    """A segment's cells are dggs.geodesic_to_cells's (the one-geodesic verb, sampled and bisected on its own)."""
+    lat2 = max(-90.0, min(90.0, p[0] + dlat))
+    got = dggs.line_to_cells([p, (lat2, p[1] + dlng)], level).tolist()
+    assert got == dggs.geodesic_to_cells(p[0], p[1], lat2, p[1] + dlng, level).tolist()
+
+
 def test_line_orders_and_parts():
     pts = np.array([(51.05, -114.07), (49.28, -123.12), (47.61, -122.33)])
     by_array = dggs.line_to_cells(pts, 7)
