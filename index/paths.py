@@ -145,6 +145,12 @@ def _geod() -> Any:
     return pyproj.Geod(ellps="WGS84")
 
 
+@lru_cache(maxsize=32)
+def _short_edge(level: int) -> float:
+    edge: float = level_table(level)[level]["short_edge_m"]
+    return edge
+
+
 def _at(lat: np.ndarray, lng: np.ndarray, az: np.ndarray, s: np.ndarray, level: int) -> np.ndarray:
     """The cells at distances ``s`` along the geodesics from (lat, lng) with azimuths ``az``."""
     x, y, _ = _geod().fwd(lng, lat, az, s)
@@ -220,7 +226,7 @@ def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
         raise CoordinateError(f"point ({float(xy[i, 0])!r}, {float(xy[i, 1])!r}) at index {i} is not a finite latitude in -90..90 and a finite longitude")
     az, _, dist = _geod().inv(lng0, lat0, lng1, lat1)
     az, dist = np.asarray(az, dtype=np.float64), np.asarray(dist, dtype=np.float64)
-    edge = level_table(level)[level]["short_edge_m"]
+    edge = _short_edge(level)
     check_size(int(np.ceil(_CELLS_PER_EDGE * dist / edge).sum()) + _CELLS_EXTRA * dist.size, max_cells, "line_to_cells")
     n = np.maximum(np.ceil(dist * _SAMPLES_PER_EDGE / edge).astype(np.int64), 1)  # steps per segment
     seg = np.repeat(np.arange(dist.size), n + 1)
