@@ -33,7 +33,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
-           "bench_handwritten.py": 900, "bench_edges.py": 600}  # seconds (bench_raster: the 1.8 GB globe's memory run)
+           "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600}  # seconds (bench_raster: the 1.8 GB globe's memory run)
 
 
 def run_script(name: str, args: list[str], env: dict[str, str]) -> tuple[str, str | None, float]:
@@ -86,6 +86,7 @@ def main() -> None:
             ("bench_workflow.py", ["--points", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
             ("bench_raster.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_profile.py", ["--quick"] if args.quick else [], thread_env(True)),
+            ("bench_paths.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_handwritten.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_edges.py", ["--quick"] if args.quick else [], thread_env(False)),
         ]
