@@ -22,7 +22,8 @@ import numpy as np
 from dggs.errors import InvalidCellError
 
 from ._convert import Kind, cells_in, cells_out
-from ._convert.strings import parse_str, valid_int
+from ._convert.kind import SCALAR_INT, SCALAR_STR
+from ._convert.strings import format_int, parse_str, valid_int
 
 __all__ = ["EDGE", "SEP", "edges_in", "edges_out", "to_shadow", "is_edge"]
 
@@ -172,6 +173,15 @@ def edges_in(obj: Any) -> tuple[np.ndarray, Kind]:
     InvalidCellError
         A leaf that is no directed edge id (the message names it and its index).
     """
+    if type(obj) is str:  # a lone id: no containers
+        s = _str_shadow(obj)
+        v = parse_str(s) if s else 0
+        if v:
+            return np.array([v | EDGE], dtype=np.uint64), SCALAR_STR
+    elif type(obj) is int:
+        v = _int_shadow(obj)
+        if v and valid_int(v):
+            return np.array([v | EDGE], dtype=np.uint64), SCALAR_INT
     try:
         ids, kind = cells_in(to_shadow(obj))
     except InvalidCellError:
@@ -181,5 +191,11 @@ def edges_in(obj: Any) -> tuple[np.ndarray, Kind]:
 
 def edges_out(edges: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> Any:
     """Edge ids (uint64, sign bit set; 0 for none) in the container of ``kind`` (as :func:`cells_out` does cells)."""
+    if kind.scalar and not trailing and edges.shape == (1,) and edges[0]:  # a lone edge
+        v = int(edges[0])
+        if kind.form == "int":
+            return v
+        s = format_int(v ^ EDGE) or ""
+        return s[:-1] + SEP + s[-1]
     shadows = np.where(edges != 0, edges & ~_U_EDGE, edges)
     return _map(cells_out(shadows, kind, trailing), True)

@@ -13,6 +13,7 @@ The kernels are in :mod:`dggs.index._kernel.local`.
 
 from __future__ import annotations
 
+import math
 import sys
 from typing import Any
 
@@ -57,8 +58,20 @@ def _local_ij(anchors: np.ndarray, ids: np.ndarray) -> tuple[np.ndarray, np.ndar
     return i, j
 
 
-_CHILD_POS = Op(many=_child_pos, out=VALUE)
-_LOCAL_IJ = Op(many=_local_ij, out=VALUE)
+def _one_child_pos(cell: int, parent_level: int) -> int | None:
+    """A lone id's position, or None (a miss: the general path explains it)."""
+    r = int(kl.one_child_pos(cell, parent_level))
+    return r if r >= 0 else None
+
+
+def _one_local_ij(anchor: int, cell: int) -> tuple[float, float]:
+    """A lone pair's (i, j), or NaNs (a miss: the general path explains it)."""
+    i, j, ok = kl.one_local_ij(anchor, cell)
+    return (int(i), int(j)) if ok else (math.nan, math.nan)  # type: ignore[return-value]
+
+
+_CHILD_POS = Op(many=_child_pos, out=VALUE, one=_one_child_pos)
+_LOCAL_IJ = Op(many=_local_ij, out=VALUE, one=_one_local_ij)
 
 
 def _ints_in(obj: Any, name: str) -> tuple[np.ndarray, Kind | None]:

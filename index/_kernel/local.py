@@ -35,7 +35,8 @@ from dggs.geometry._parallel import loops
 from . import bits
 from .points import encode_point, triangle
 
-__all__ = ["OUT_OF_RANGE", "child_pos", "child_pos_cells", "local_ij", "local_cells", "UNFOLD_FACE"]
+__all__ = ["OUT_OF_RANGE", "child_pos", "child_pos_cells", "local_ij", "local_cells", "one_child_pos", "one_local_ij",
+           "UNFOLD_FACE"]
 
 #: Marks a cell that has no coordinates around its anchor (in ``i``).
 OUT_OF_RANGE = np.iinfo(np.int64).min
@@ -72,6 +73,21 @@ def _child_pos(ids, parent_level, out):
 
 
 child_pos = loops(_child_pos)
+
+
+@njit(cache=True, nogil=True)
+def one_child_pos(cell: int, parent_level: int) -> int:
+    """The single-id entry of :func:`child_pos`: -1 for an invalid id or a cell coarser than ``parent_level``."""
+    c = np.uint64(cell)
+    if not bits.is_valid(c):
+        return -1
+    level = bits.level_of(c)
+    if level < parent_level:
+        return -1
+    pos = 0
+    for lv in range(parent_level + 1, level + 1):
+        pos = pos * (6 if lv == 1 else 3) + bits.digit_of(c, lv)
+    return pos
 
 
 def _child_pos_cells(pos, parents, level, out):
@@ -175,6 +191,16 @@ def _local_ij(anchors, ids, i_out, j_out):
 
 
 local_ij = loops(_local_ij)
+
+
+@njit(cache=True, nogil=True)
+def one_local_ij(anchor: int, cell: int):
+    """The single-pair entry of :func:`local_ij`: ``(i, j, ok)``, not ok for invalid ids, two levels or no pair."""
+    a, c = np.uint64(anchor), np.uint64(cell)
+    if not bits.is_valid(a) or not bits.is_valid(c) or bits.level_of(a) != bits.level_of(c):
+        return np.int64(0), np.int64(0), False
+    i, j = _one_ij(a, c)
+    return i, j, i != OUT_OF_RANGE
 
 
 @njit(cache=True, nogil=True)
