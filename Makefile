@@ -13,7 +13,7 @@ BENCH_STAMP := $(BENCH_VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster]'
+	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster,spark]'
 	touch $(STAMP)
 
 # The web map's front-end dependencies from npm, pinned by the lock file: MapLibre GL JS, Natural Earth's
