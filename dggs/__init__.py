@@ -148,6 +148,7 @@ _SUBMODULES = frozenset(
         "index",
         "pandas",
         "server",
+        "spark",
         "storage",
         "xdggs",
     }
