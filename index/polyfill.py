@@ -11,6 +11,7 @@ from shapely.geometry import MultiPolygon, Polygon, box
 
 from dggs.errors import DggsValueError, TooManyCellsError
 
+from ._bbox_fill import bbox_fill
 from ._checks import check_level, check_max_cells, check_size
 from ._convert import ids_array
 from ._kernel import fill as kfill
@@ -22,7 +23,7 @@ from ._shapes import geometries
 __all__ = ["polygon_to_cells", "FILL_MODES"]
 
 #: The fill modes of :func:`polygon_to_cells`.
-FILL_MODES = ("center", "contains", "overlaps")
+FILL_MODES = ("center", "contains", "overlaps", "overlapping_bbox")
 
 def _wrap_polygon(poly: Any) -> Any:
     """Fold parts of a lng/lat polygon beyond +-180 back into -180..180."""
@@ -128,7 +129,8 @@ def _children(ids: np.ndarray, level: int) -> np.ndarray:
 
 
 def polygon_to_cells(
-    polygon: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
+    polygon: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None,
+    *, projection: str = "ISEA",
 ) -> np.ndarray:
     """Cells at ``level`` whose centres lie in, that lie wholly in, or that touch a polygon (lng/lat, WGS84).
 
@@ -147,6 +149,11 @@ def polygon_to_cells(
       ``"center"``).
     - ``"overlaps"``: every cell that touches the polygon, its boundary
       included; their union covers the polygon (a superset of ``"center"``).
+    - ``"overlapping_bbox"``: every cell whose lng/lat bounding box (of each
+      part of its :func:`dggs.cell_to_polygon` polygon, split at the
+      antimeridian) meets the polygon, boundary included: h3's experimental
+      ``CONTAINMENT_OVERLAPPING_BBOX``, a superset of ``"overlaps"``
+      (:mod:`dggs.index._bbox_fill`).
 
     Cells have curved edges.  ``"contains"`` and ``"overlaps"`` judge each
     boundary cell by its densified polygon, exactly the one
@@ -165,13 +172,15 @@ def polygon_to_cells(
         Coordinates as (lng, lat) degrees.
     level : int
         Level of the cells to return.
-    mode : {"center", "contains", "overlaps"}
+    mode : {"center", "contains", "overlaps", "overlapping_bbox"}
         Which cells to return (above).
     as_int : bool
         Return 64-bit integer ids (uint64) instead of strings.
     max_cells : int, optional
         Refuse to return more cells than this (default ``dggs.index.hierarchy.MAX_CELLS``);
         checked level by level before anything large is allocated.
+    projection : {"ISEA", "IVEA"}
+        The grid's projection (``dggs.Grid(projection).polygon_to_cells`` passes it; docs/grid.md).
 
     Returns
     -------
@@ -203,26 +212,34 @@ def polygon_to_cells(
         raise DggsValueError(f"mode {mode!r} must be one of {', '.join(map(repr, FILL_MODES))}")
     if not isinstance(polygon, (Polygon, MultiPolygon)):
         raise DggsValueError(f"polygon must be a shapely Polygon or MultiPolygon, not {type(polygon).__name__}")
-    found = _fill(polygon, level, max_cells, mode=mode) if not polygon.is_empty else np.zeros(0, dtype=np.uint64)
+    if projection not in ("ISEA", "IVEA"):
+        raise DggsValueError(f"projection {projection!r} is not one of ISEA, IVEA")
+    found = (_fill(polygon, level, max_cells, mode=mode, projection=projection) if not polygon.is_empty
+             else np.zeros(0, dtype=np.uint64))
     return ids_array(found, as_int)
 
 
-def _cell_geometries(ids: np.ndarray, level: int) -> np.ndarray:
+def _cell_geometries(ids: np.ndarray, level: int, projection: str = "ISEA") -> np.ndarray:
     """The cells' polygons as :func:`dggs.cell_to_polygon` draws them (default densification, cell by cell)."""
+    if projection == "IVEA":
+        from ._ivea_shapes import geometries as ivea_geometries
+
+        return ivea_geometries(ids, None)
     return geometries(ids, None)
 
 
-def _edge_test(target: Any, ids: np.ndarray, level: int, mode: str) -> np.ndarray:
+def _edge_test(target: Any, ids: np.ndarray, level: int, mode: str, projection: str = "ISEA") -> np.ndarray:
     """Which cells lie wholly in (``"contains"``) or touch (``"overlaps"``) the target."""
     if ids.size == 0:
         return np.zeros(0, dtype=bool)
-    geoms = _cell_geometries(ids, level)
+    geoms = _cell_geometries(ids, level, projection)
     test: np.ndarray = shapely.contains(target, geoms) if mode == "contains" else shapely.intersects(target, geoms)
     return test
 
 
 def _fill(
-    polygon: Any, level: int, max_cells: int | None, work: dict[str, int] | None = None, mode: str = "center"
+    polygon: Any, level: int, max_cells: int | None, work: dict[str, int] | None = None, mode: str = "center",
+    projection: str = "ISEA",
 ) -> np.ndarray:
     """Sorted uint64 ids of the cells at ``level`` in ``polygon`` by ``mode`` (see :func:`polygon_to_cells`).
 
@@ -246,8 +263,16 @@ def _fill(
     limit = check_max_cells(max_cells)
     target = _wrap_polygon(polygon)
     shapely.prepare(target)
+    if mode == "overlapping_bbox":
+        return bbox_fill(target, level, limit)
     x0, y0, x1, y1, frame, start, items, empty = _edge_index(target) or _NO_GRID
-    ids, flags, n, status, cand, insides, tested, classified = kfill.descend(
+    fill: Any = kfill
+    points: Any = kp
+    if projection == "IVEA":  # the same descent compiled on IVEA's inverse (its footprint bound holds too)
+        from ._kernel import ivea_fill, ivea_points
+
+        fill, points = ivea_fill, ivea_points
+    ids, flags, n, status, cand, insides, tested, classified = fill.descend(
         level, mode == "center", _DIRECT, x0, y0, x1, y1, frame, start, items, empty, miny, maxy, limit
     )
     if work is not None:
@@ -261,9 +286,9 @@ def _fill(
     unsure = np.flatnonzero(flags == kfill.CENTRE)
     if unsure.size:
         lat, lng = np.empty(unsure.size), np.empty(unsure.size)
-        kp.centres(unsure.size, ids[unsure], lat, lng)
+        points.centres(unsure.size, ids[unsure], lat, lng)
         keep[unsure] = shapely.contains_xy(target, lng, lat)
     edge = np.flatnonzero(flags == kfill.EDGE)
     if edge.size:
-        keep[edge] = _edge_test(target, ids[edge], level, mode)
+        keep[edge] = _edge_test(target, ids[edge], level, mode, projection)
     return _children(ids[keep], level)

@@ -17,15 +17,13 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-import shapely
 
 from dggs.errors import DggsValueError
 
-from ._checks import check_densify, check_level, check_point_count
+from . import _ivea_shapes as ivea_shapes
+from ._checks import check_densify, check_level
 from ._convert import CELL, VALUE, Op, apply, apply_points, check_points
-from ._densify import needed_densify
 from ._kernel import ivea_points as ki
-from ._shapes import densify_groups, ring_to_geometry, special_rings
 from .grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
 from .hierarchy import (
     cell_to_center_child,
@@ -40,6 +38,7 @@ from .hierarchy import (
 from .ids import int_to_str, str_to_int
 from .measure import cell_area
 from .points import cell_to_boundary, cell_to_latlng, cell_to_polygon, latlng_to_cell
+from .polyfill import polygon_to_cells
 
 __all__ = ["Grid", "PROJECTIONS"]
 
@@ -60,37 +59,11 @@ def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lat, lng
 
 
-def _rings(ids: np.ndarray, densify: int, lnglat: bool = False, max_points: int | None = None) -> np.ndarray:
-    check_point_count(ids.shape[0], 3 * (densify + 1) + int(lnglat), max_points)
-    out = np.empty((ids.shape[0], 3 * (densify + 1) + int(lnglat), 2))
-    ki.boundaries(ids.shape[0] * (densify + 1), ids, densify, out, lnglat)
-    return out
-
-
-def _polygons(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> np.ndarray:
-    """As :func:`dggs.index._shapes.geometries`: ordinary rings in one shapely call, the few special ones exactly."""
-    out = np.empty(ids.shape[0], dtype=object)
-    if densify is None:  # the points per edge IVEA's own edge bulges need for 1e-6 of the area
-        need = needed_densify(ids, rings=ki.boundaries)
-        groups = [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
-    else:
-        groups = densify_groups(ids, densify)
-    for rows, d in groups:
-        coords = _rings(ids[rows], d, True, max_points)
-        special = special_rings(coords)
-        out[rows[~special]] = shapely.polygons(coords[~special])
-        buf = np.empty((3 * (d + 1) + ki.SPECIAL_EXTRA, 2))
-        for i in rows[special].tolist():
-            m = ki.special_ring(ids[i], d, buf)
-            out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
-    return out
-
-
 _IVEA_LOCATE = Op(many=_locate, out=CELL, one=ki.one_point, form="str")
 _IVEA_LOCATE_INT = Op(many=_locate, out=CELL, one=ki.one_point, form="int")
 _IVEA_CENTRE = Op(many=_centres, out=VALUE, one=ki.centre_of)
-_IVEA_BOUNDARY = Op(many=_rings, out=VALUE)
-_IVEA_POLYGON = Op(many=_polygons, out=VALUE)
+_IVEA_BOUNDARY = Op(many=ivea_shapes.boundaries, out=VALUE)
+_IVEA_POLYGON = Op(many=ivea_shapes.geometries, out=VALUE)
 
 
 class Grid:
@@ -168,6 +141,15 @@ class Grid:
         if self.projection == "ISEA":
             return cell_to_polygon(cell, densify, max_points)
         return apply(_IVEA_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
+
+    def polygon_to_cells(
+        self, polygon: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
+    ) -> np.ndarray:
+        """Cells at ``level`` in a (lng, lat) polygon by ``mode``; see :func:`dggs.polygon_to_cells`.
+
+        The same compiled descent on either projection, with the centres and cell polygons of this grid.
+        """
+        return polygon_to_cells(polygon, level, mode, as_int, max_cells, projection=self.projection)
 
     # --- what does not ---------------------------------------------------------------------
     @staticmethod

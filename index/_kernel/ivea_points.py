@@ -39,26 +39,37 @@ def _ivea_kernel() -> types.ModuleType:
     return mod
 
 
-#: The globals the rebuilt functions see: :mod:`.points`' own, with ``gk`` and the rebuilt names replaced.
-_GLOBALS: dict[str, Any] = dict(vars(_points))
-_GLOBALS["gk"] = _ivea_kernel()
+IVEA_KERNEL = _ivea_kernel()
 
 
-def _rebuilt(name: str) -> Any:
-    """The plain function ``name`` of :mod:`.points`, over :data:`_GLOBALS`, renamed ``ivea__<name>``."""
-    obj = getattr(_points, name)
-    body = getattr(obj, "py_func", obj)
-    twin = types.FunctionType(body.__code__, _GLOBALS, body.__name__, body.__defaults__, body.__closure__)
-    twin.__qualname__ = f"ivea__{body.__qualname__}"
-    twin.__doc__ = body.__doc__
-    return twin
+def rebuilder(module: types.ModuleType) -> tuple[dict[str, Any], Any, Any]:
+    """``(globals, rebuilt, compiled)`` for rebuilding functions of a kernel ``module`` on IVEA.
+
+    ``globals`` is a copy of the module's namespace with ``gk`` bound to :data:`IVEA_KERNEL`;
+    ``rebuilt(name)`` gives the plain function ``name`` over it, renamed ``ivea__<name>``;
+    ``compiled(name, **options)`` compiles that (``cache=True, nogil=True`` unless given) and puts it in
+    ``globals``, so that functions rebuilt after it call it.
+    """
+    space: dict[str, Any] = dict(vars(module))
+    space["gk"] = IVEA_KERNEL
+
+    def rebuilt(name: str) -> Any:
+        obj = getattr(module, name)
+        body = getattr(obj, "py_func", obj)
+        twin = types.FunctionType(body.__code__, space, body.__name__, body.__defaults__, body.__closure__)
+        twin.__qualname__ = f"ivea__{body.__qualname__}"
+        twin.__doc__ = body.__doc__
+        return twin
+
+    def compiled(name: str, **options: Any) -> Any:
+        fn = numba.njit(**(options or {"cache": True, "nogil": True}))(rebuilt(name))
+        space[name] = fn
+        return fn
+
+    return space, rebuilt, compiled
 
 
-def _compiled(name: str) -> Any:
-    fn = numba.njit(cache=True, nogil=True)(_rebuilt(name))
-    _GLOBALS[name] = fn  # later rebuilt functions call this one
-    return fn
-
+_GLOBALS, _rebuilt, _compiled = rebuilder(_points)
 
 # the per-item functions that reach the projection, callees first
 one_point = _compiled("one_point")
@@ -75,4 +86,5 @@ centres = loops(_rebuilt("_centres"))
 boundaries = loops(_rebuilt("_boundaries"))
 SPECIAL_EXTRA = _points.SPECIAL_EXTRA
 
-__all__ = ["one_point", "centre_of", "special_ring", "locate", "centres", "boundaries", "SPECIAL_EXTRA"]
+__all__ = ["one_point", "centre_of", "special_ring", "locate", "centres", "boundaries", "SPECIAL_EXTRA",
+           "IVEA_KERNEL", "rebuilder"]

@@ -19,6 +19,9 @@ import numpy as np
 import pandas as pd
 import pyproj
 import pytest
+import shapely
+import shapely.affinity
+import shapely.geometry
 from hypothesis import example, given, settings
 
 import dggs
@@ -211,3 +214,39 @@ def test_ivea_gives_back_the_kind_it_was_given():
     assert isinstance(IVEA.cell_to_boundary("C401"), tuple)
     assert IVEA.cell_to_boundary(np.array(["C401", "C402"]), densify=1).shape == (2, 6, 2)
     assert IVEA.cell_to_polygon(np.array(["C401"]))[0].geom_type == "Polygon"
+
+
+# --- polygon fill ----------------------------------------------------------------------------------
+FILL_TARGETS = {
+    "box": shapely.geometry.box(-10, -10, 10, 10),
+    "antimeridian": shapely.geometry.box(170, -20, 190, 5),
+    "polar": shapely.geometry.Polygon([(-180, 70), (180, 70), (180, 90), (-180, 90)]),
+    "vertex": shapely.geometry.Point(11.25, 58.2825).buffer(6.0),
+}
+
+
+@pytest.mark.parametrize("name", list(FILL_TARGETS))
+def test_ivea_fill_is_the_brute_force_over_every_cell(name):
+    """Every level-5 cell tested by its IVEA centre (center), and its IVEA polygon (contains, overlaps)."""
+    polygon = FILL_TARGETS[name]
+    level = 5
+    ids = np.asarray(dggs.cell_to_children(dggs.get_base_cells(as_int=True), level), dtype=np.uint64)
+    lat, lng = IVEA.cell_to_latlng(ids)
+    target = shapely.union_all([shapely.affinity.translate(polygon, xoff=k * 360.0) for k in (-1, 0, 1)])
+    target = target.intersection(shapely.geometry.box(-180, -90, 180, 90))
+    centre = set(ids[shapely.contains_xy(target, lng, lat)].tolist())
+    got = set(IVEA.polygon_to_cells(polygon, level, as_int=True).tolist())
+    assert got == centre and len(got) > 10
+    polys = IVEA.cell_to_polygon(ids)
+    near = shapely.intersects(target, polys)
+    assert set(IVEA.polygon_to_cells(polygon, level, "overlaps", as_int=True).tolist()) == set(ids[near].tolist())
+    inside = shapely.contains(target, polys)
+    assert set(IVEA.polygon_to_cells(polygon, level, "contains", as_int=True).tolist()) == set(ids[inside].tolist())
+    # and not ISEA's cells
+    if name == "box":
+        assert got != set(dggs.polygon_to_cells(polygon, level, as_int=True).tolist())
+
+
+def test_fill_projection_checked():
+    with pytest.raises(DggsValueError, match="projection 'X'"):
+        dggs.polygon_to_cells(shapely.geometry.box(0, 0, 1, 1), 3, projection="X")
