@@ -401,3 +401,50 @@ def test_duckdb_lines_and_circles(con):
         con.sql("SELECT dggs_circle_to_cells(0, 0, 10.0, 7, 'nope')").fetchall()
     with pytest.raises(Exception, match="dggs_line_to_cells.*WKB"):
         con.sql("SELECT dggs_line_to_cells('\\x00'::BLOB, 7)").fetchall()
+
+
+# --------------------------------------------------------------------------- polygon_to_cells(mode="overlapping_bbox")
+
+
+def bbox_oracle(poly, level: int) -> set[str]:
+    """Every cell of the level whose polygon's parts' lng/lat boxes meet the polygon (folded into -180..180)."""
+    import shapely
+
+    folded = shapely.union_all([shapely.affinity.translate(poly, xoff=dx).intersection(shapely.box(-180, -90, 180, 90))
+                                for dx in (-360.0, 0.0, 360.0)])
+    cells = np.array(all_cells(level))
+    parts, owner = shapely.get_parts(np.asarray(dggs.cell_to_polygon(cells), dtype=object), return_index=True)
+    hit = shapely.intersects(folded, shapely.box(*shapely.bounds(parts).T))
+    return set(cells[np.unique(owner[hit])].tolist())
+
+
+@pytest.mark.parametrize("level", [2, 3, 4])
+@pytest.mark.parametrize("coords", [
+    [(-10, -10), (10, -10), (10, 10), (-10, 10)],
+    [(170, -20), (190, -25), (185, 10)],  # across the antimeridian, beyond 180
+    [(-180, 70), (-60, 75), (60, 72), (180, 70), (180, 89), (-180, 89)],  # a polar band
+    [(0, 0), (30, 5), (5, 30)],
+    [(10.0, 57.0), (13.0, 58.0), (11.0, 60.0)],  # round the icosahedron vertex at 58.28N 11.25E
+])
+def test_overlapping_bbox_against_every_cell(level, coords):
+    from shapely.geometry import Polygon as P
+
+    poly = P(coords)
+    got = set(dggs.polygon_to_cells(poly, level, mode="overlapping_bbox").tolist())
+    assert got == bbox_oracle(poly, level)
+    assert set(dggs.polygon_to_cells(poly, level, mode="overlaps").tolist()) <= got
+    ints = dggs.polygon_to_cells(poly, level, mode="overlapping_bbox", as_int=True)
+    assert {dggs.int_to_str(int(x)) for x in ints} == got
+
+
+@settings(max_examples=examples(30))
+@given(st.sampled_from(SPECIAL), st.floats(0.5, 8), st.floats(0.5, 8), st.sampled_from([5, 7]))
+def test_overlapping_bbox_is_a_superset_of_overlaps(p, w, h, level):
+    from shapely.geometry import box
+
+    lat, lng = p
+    poly = box(lng - w, max(-90.0, lat - h), lng + w, min(90.0, lat + h))
+    got = set(dggs.polygon_to_cells(poly, level, mode="overlapping_bbox").tolist())
+    assert set(dggs.polygon_to_cells(poly, level, mode="overlaps").tolist()) <= got
+    with pytest.raises(TooManyCellsError):
+        dggs.polygon_to_cells(poly, level, mode="overlapping_bbox", max_cells=max(len(got) - 1, 0))
