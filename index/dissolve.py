@@ -31,7 +31,7 @@ from ._convert import cells_in
 from ._densify import needed_densify
 from ._kernel import dissolve as kd
 from ._kernel import hierarchy as kh
-from ._kernel import points as kp
+from ._shapes import geometries
 
 __all__ = ["cells_to_polygons", "GLOBE"]
 
@@ -91,15 +91,32 @@ def _split_pinches(ring: np.ndarray, corner: np.ndarray) -> list[np.ndarray]:
     return _split_pinches(inner, corner[p:q]) + _split_pinches(outer, np.concatenate([corner[q:], corner[:p]]))
 
 
-def _regions(ring: np.ndarray) -> list[Polygon]:
-    """The (lng, lat) region left of a (lat, lng) ring on the sphere, cut into the window -180..180."""
-    ys, xs = ring[:, 0], ring[:, 1]
+def _steps(ys: np.ndarray, xs: np.ndarray) -> np.ndarray:
+    """Longitude steps to the next point: the short way, but along a pole the way the set lies (on the left)."""
     steps = np.diff(np.concatenate([xs, xs[:1]]))
     steps = (steps + 180.0) % 360.0 - 180.0
     along = (np.abs(ys) == 90.0) & (np.roll(ys, -1) == ys)  # the ring runs along a pole: west at the North Pole
     if along.any():
         raw = np.roll(xs, -1)[along] - xs[along]
         steps[along] = np.where(ys[along] > 0, -((-raw) % 360.0), raw % 360.0)
+    return steps
+
+
+def _regions(ring: np.ndarray) -> tuple[list[Polygon], bool]:
+    """The (lng, lat) region left of a (lat, lng) ring on the sphere, cut into the window -180..180.
+
+    Returns the pieces and whether the ring goes round a pole (its region is then closed over the pole).
+    """
+    ys, xs = ring[:, 0], ring[:, 1]
+    steps = _steps(ys, xs)
+    # a step along a pole past the antimeridian gets a point there (the kernel puts one on every other crossing)
+    cross = (np.abs(ys) == 90.0) & (np.floor((xs + steps + 180.0) / 360.0) != np.floor((xs + 180.0) / 360.0))
+    cross &= (np.abs(xs) != 180.0) & (np.abs(xs + steps) % 360.0 != 180.0)
+    if cross.any():
+        at = np.flatnonzero(cross)
+        ys = np.insert(ys, at + 1, ys[at])
+        xs = np.insert(xs, at + 1, np.where(steps[at] > 0, 180.0, -180.0))
+        steps = _steps(ys, xs)
     turns = int(round(float(np.sum(steps)) / 360.0))
     if turns:  # round a pole: start on the antimeridian, so that the closure over the pole runs along it
         at = np.flatnonzero(np.abs(xs) == 180.0)
@@ -128,37 +145,37 @@ def _regions(ring: np.ndarray) -> list[Polygon]:
     out: list[Polygon] = []
     for p in pieces:
         out.extend(g for g in getattr(p, "geoms", [p]) if isinstance(g, Polygon) and g.area > 0.0)
-    return out
+    return out, turns != 0
 
 
-def _even_odd(regions: list[Polygon], inside: tuple[float, float]) -> Polygon | MultiPolygon:
-    """The points inside an odd (or even) number of ``regions``, whichever holds the point ``inside`` (lng, lat)."""
-    geoms = np.array(regions + [GLOBE], dtype=object)
-    n = len(regions)
-    tree = shapely.STRtree(geoms[:n])
-    within, around = tree.query(geoms[:n], predicate="covered_by")
-    keep = within != around
-    within, around = within[keep], around[keep]
-    depth = np.bincount(within, minlength=n)
-    if int(shapely.covers(geoms[:n], shapely.Point(*inside)).sum()) % 2 == 0:
-        depth += 1  # the set is outside the outermost regions: the globe is the outermost one
-    else:
-        geoms = geoms[:n]
-    full = np.concatenate([depth, [0]])[: geoms.shape[0]]
-    direct = full[within] == full[around] + 1
-    holes: dict[int, list[int]] = {}
-    for a, b in zip(around[direct].tolist(), within[direct].tolist(), strict=True):
-        holes.setdefault(a, []).append(b)
-    if geoms.shape[0] > n:  # the globe holds the regions of depth 1
-        holes[n] = np.flatnonzero(full[:n] == 1).tolist()
-    parts: list[Polygon] = []
-    for i in np.flatnonzero(full % 2 == 0).tolist():
-        g = geoms[i]
-        if i in holes:
-            g = shapely.difference(g, shapely.union_all(geoms[holes[i]]))
-        parts.extend(p for p in getattr(g, "geoms", [g]) if isinstance(p, Polygon) and not p.is_empty)
-    parts = [orient(p, 1.0) for p in parts]
-    return parts[0] if len(parts) == 1 else MultiPolygon(parts)
+def _even_odd(plain: list[Polygon], polar: list[Polygon], inside: tuple[float, float]) -> Polygon | MultiPolygon:
+    """The points inside an odd (or even) number of regions, whichever holds the point ``inside`` (lng, lat).
+
+    The ``plain`` regions are nested or apart: each at an even depth (the regions it lies in), less the
+    regions right inside it.  The few ``polar`` ones (closed over a pole) are then added by symmetric difference.
+    """
+    geoms = np.array(plain, dtype=object)
+    n = len(plain)
+    parts: list[Any] = []
+    if n:
+        tree = shapely.STRtree(geoms)
+        within, around = tree.query(geoms, predicate="covered_by")
+        keep = within != around
+        within, around = within[keep], around[keep]
+        depth = np.bincount(within, minlength=n)
+        direct = depth[within] == depth[around] + 1
+        holes: dict[int, list[int]] = {}
+        for a, b in zip(around[direct].tolist(), within[direct].tolist(), strict=True):
+            holes.setdefault(a, []).append(b)
+        for i in np.flatnonzero(depth % 2 == 0).tolist():
+            parts.append(shapely.difference(geoms[i], shapely.union_all(geoms[holes[i]])) if i in holes else geoms[i])
+    shape: Any = MultiPolygon([p for g in parts for p in getattr(g, "geoms", [g]) if isinstance(p, Polygon)])
+    for region in polar:
+        shape = shapely.symmetric_difference(shape, region)
+    if not shape.covers(shapely.Point(*inside)):
+        shape = shapely.difference(GLOBE, shape)
+    out = [orient(p, 1.0) for p in getattr(shape, "geoms", [shape]) if isinstance(p, Polygon) and not p.is_empty]
+    return out[0] if len(out) == 1 else MultiPolygon(out)
 
 
 def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | MultiPolygon:
@@ -208,9 +225,10 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
     >>> shape = cells_to_polygons(blob)
     >>> shape.geom_type, len(shape.interiors)
     ('Polygon', 0)
-    >>> ring = cells_to_polygons(dggs.grid_ring("C4010", 2))
-    >>> len(ring.interiors)
-    1
+    >>> around = dggs.uncompact_cells(dggs.grid_disk_vertex("C4010", 1), 6)
+    >>> frame = cells_to_polygons([c for c in around if not c.startswith("C4010")])
+    >>> frame.geom_type, len(frame.interiors)
+    ('Polygon', 1)
     >>> cells_to_polygons(dggs.get_base_cells()).equals(GLOBE)
     True
     """
@@ -237,12 +255,15 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
     ends = np.empty(starts.shape[0] - 1, dtype=np.int64)
     kd.ring_points(cell, col, steps, starts, out, corner, ends)
     _snap_corners(out, corner)
-    regions: list[Polygon] = []
+    plain: list[Polygon] = []
+    polar: list[Polygon] = []
     begin = 0
     for end in ends.tolist():
         for loop in _split_pinches(out[begin:end], corner[begin:end]):
-            regions.extend(_regions(loop))
+            pieces, round_pole = _regions(loop)
+            (polar if round_pole else plain).extend(pieces)
         begin = end
-    lat, lng = np.empty(1), np.empty(1)
-    kp.centres(1, ids[:1], lat, lng)
-    return _even_odd(regions, (float(lng[0]), float(lat[0])))
+    # a point inside the set: inside the first outline cell's polygon drawn as the outline is (its edges on the
+    # outline are the outline's, the others inside the set), not its centre, which a coarse drawing may leave out
+    inside = geometries(cell[:1], int(steps[0]) - 1)[0].representative_point()
+    return _even_odd(plain, polar, (inside.x, inside.y))

@@ -33,11 +33,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, prange
 
+from dggs.geometry import kernel as gk
 from dggs.geometry._parallel import loops
 
 from .bits import level_of, range_end, shift_of
 from .grid import _neighbour
-from .points import _POLE_LEAD, _crossing, _lat_lng_at, _pole_on, corners
+from .points import _ISEA_FRAMES, _POLE_LEAD, _crossing, _lat_lng_at, _pole_on, corners
 
 __all__ = ["boundary_descendants", "chain", "drop_covered", "outline_mask", "ring_points", "ring_point_bound"]
 
@@ -198,6 +199,13 @@ def _edge(cell: np.uint64, col: int):
     return face, cx, cy, ax, ay
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _grid_point(face: int, x0: float, y0: float, x1: float, y1: float, j: int, step: int):
+    """Point ``j`` of ``step`` along the edge, computed as :func:`dggs.index._kernel.points.boundaries` does."""
+    px, py, pz = gk.inverse_unit(_ISEA_FRAMES, face, x0 + j * ((x1 - x0) / step), y0 + j * ((y1 - y0) / step))
+    return gk.unit_to_geodetic(px, py, pz)
+
+
 @njit(cache=True, nogil=True)
 def ring_points(cell: np.ndarray, col: np.ndarray, steps: np.ndarray, starts: np.ndarray, out: np.ndarray,
                 corner: np.ndarray, ends: np.ndarray) -> None:
@@ -246,7 +254,7 @@ def ring_points(cell: np.ndarray, col: np.ndarray, steps: np.ndarray, starts: np
                     corner[n + 1] = False
                     n += 2
                     continue
-                lat, lng = _lat_lng_at(face, x0, y0, x1, y1, ta)
+                lat, lng = _grid_point(face, x0, y0, x1, y1, int(round(ta * step)), step)
                 out[n, 0], out[n, 1] = lat, lng
                 corner[n] = q == 0
                 n += 1
