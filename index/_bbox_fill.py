@@ -16,6 +16,7 @@ descendants untested; any other cell whose boxes meet the polygon is split.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -51,8 +52,11 @@ def _box_hits(target: Any, geoms: np.ndarray, margin: float) -> np.ndarray:
     return out
 
 
-def bbox_fill(target: Any, level: int, limit: int) -> np.ndarray:
+def bbox_fill(target: Any, level: int, limit: int, shapes: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
     """Sorted uint64 ids of the cells at ``level`` whose boxes meet ``target`` (prepared, in -180..180).
+
+    ``shapes(ids)`` draws the cells (default: :func:`dggs.cell_to_polygon`'s polygons; another projection's grid
+    passes its own).
 
     Raises
     ------
@@ -63,7 +67,7 @@ def bbox_fill(target: Any, level: int, limit: int) -> np.ndarray:
     whole: list[np.ndarray] = []
     wholes = 0
     for lv in range(level + 1):
-        geoms = geometries(ids, None)
+        geoms = geometries(ids, None) if shapes is None else shapes(ids)
         if lv == level:
             keep = _box_hits(target, geoms, 0.0)
             whole.append(ids[keep])

@@ -264,7 +264,7 @@ def _fill(
     target = _wrap_polygon(polygon)
     shapely.prepare(target)
     if mode == "overlapping_bbox":
-        return bbox_fill(target, level, limit)
+        return bbox_fill(target, level, limit, None if projection == "ISEA" else lambda ids: _cell_geometries(ids, level, projection))
     x0, y0, x1, y1, frame, start, items, empty = _edge_index(target) or _NO_GRID
     fill: Any = kfill
     points: Any = kp
