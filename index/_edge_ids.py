@@ -71,6 +71,8 @@ def _ints(a: np.ndarray, back: bool) -> np.ndarray:
         low = (u & np.uint64(_LOW54)) == 0
         bad = ((u >> np.uint64(63)) != 1) | (low & (((u >> np.uint64(_L1_SHIFT)) & np.uint64(7)) > 3))
         out = np.where(bad, np.uint64(0), u ^ _U_EDGE)
+    if back:  # edges are above 2**63 - 1: uint64 whatever signed type came in
+        return out
     return out.view(a.dtype) if a.dtype.kind == "i" and a.dtype.itemsize == 8 else out.astype(a.dtype)
 
 
@@ -101,7 +103,7 @@ def _arrow(arr: Any, back: bool, pa: Any) -> Any:
         if values.dtype.kind not in "iu":  # nulls: the converter names them
             return arr
         mask = arr.is_null().to_numpy(zero_copy_only=False) if arr.null_count else None
-        return pa.array(_ints(values, back), type=t, mask=mask)
+        return pa.array(_ints(values, back), type=pa.uint64() if back else t, mask=mask)
     return pa.array([_leaf(x, back) if x is not None else None for x in arr.to_pylist()], type=t)
 
 
@@ -114,14 +116,16 @@ def _map(obj: Any, back: bool) -> Any:
     pd, pa = sys.modules.get("pandas"), sys.modules.get("pyarrow")
     if pd is not None and isinstance(obj, (pd.Series, pd.Index)):
         values = obj.to_numpy()
+        dtype = obj.dtype
         if values.dtype.kind in "iu":
             new: Any = _ints(values, back)
+            dtype = new.dtype if back else dtype
         else:
             new = np.empty(len(values), dtype=object)
             new[:] = [_map(x, back) for x in values.tolist()]
         if isinstance(obj, pd.Index):
-            return pd.Index(new, name=obj.name, dtype=obj.dtype)
-        return pd.Series(new, index=obj.index, name=obj.name, dtype=obj.dtype)
+            return pd.Index(new, name=obj.name, dtype=dtype)
+        return pd.Series(new, index=obj.index, name=obj.name, dtype=dtype)
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _arrow(obj, back, pa)
     return _leaf(obj, back)

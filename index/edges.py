@@ -8,7 +8,9 @@ The edge from a cell across its side ``d`` (0-2: from corner ``d`` to corner
 * the string ``"C401.2"``: the origin's string id, a dot, the direction;
 * the integer ``(1 << 63) | cell | (d + 1) << shift(level + 1)``: the sign bit
   marks an edge, the direction fills the cell's first empty field.  It is
-  above 2**63 - 1, so an int64 column holds it as a negative number.
+  above 2**63 - 1: edges come back as uint64 (Python ints, numpy, pandas and
+  Arrow alike) even for int64 cells, and an int64 column holding them as
+  negative numbers (their bits) is read back as well.
 
 Edges of level-28 cells have no id (no field is left empty): they are refused
 with a :class:`~dggs.errors.LevelError`.  Every function takes either form in

@@ -142,9 +142,14 @@ def test_containers():
     assert s.index.tolist() == [4, 5] and s.tolist() == ["C401", "A"]
     ints = np.array([layout_int(e) for e in edges], dtype=np.uint64)
     assert dggs.get_directed_edge_origin(ints).tolist() == dggs.str_to_int(["C401", "A"])
-    neg = ints.view(np.int64)  # an int64 column holds edges as negative numbers
-    assert (dggs.reverse_directed_edge(neg) < 0).all()
-    assert dggs.reverse_directed_edge(neg).view(np.uint64).tolist() == [layout_int(e) for e in dggs.reverse_directed_edge(edges)]
+    neg = ints.view(np.int64)  # an int64 column holds edges as negative numbers: read back, given as uint64
+    assert dggs.reverse_directed_edge(neg).dtype == np.uint64
+    assert dggs.reverse_directed_edge(neg).tolist() == [layout_int(e) for e in dggs.reverse_directed_edge(edges)]
+    cells64 = np.array(dggs.str_to_int(["C401", "A"]), dtype=np.int64)
+    assert dggs.origin_to_directed_edges(cells64).dtype == np.uint64
+    assert dggs.origin_to_directed_edges(pd.Series(cells64))[0] == [layout_int(f"C401.{d}") for d in range(3)]
+    assert dggs.reverse_directed_edge(pd.Series(neg)).dtype == np.uint64
+    assert dggs.origin_to_directed_edges(pa.array(cells64)).type.value_type == pa.uint64()
     arr = dggs.origin_to_directed_edges(pa.array(["C401", "B"]))
     assert arr.to_pylist() == [["C401.0", "C401.1", "C401.2"], ["B.0", "B.1", "B.2"]]
     assert dggs.edge_length(pa.chunked_array([pa.array(edges)])).to_pylist() == pytest.approx(dggs.edge_length(edges))
