@@ -62,9 +62,10 @@ def _outline(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _corner_keys(points: np.ndarray) -> np.ndarray:
+    """One int64 pair per (lat, lng) point, equal for points within about :data:`_SAME_CORNER`, as a sortable record."""
     key = np.round(points / _SAME_CORNER).astype(np.int64)
     key[:, 1] %= int(round(360.0 / _SAME_CORNER))
-    return key
+    return np.ascontiguousarray(key).view([("lat", np.int64), ("lng", np.int64)]).reshape(-1)
 
 
 def _snap_corners(out: np.ndarray, corner: np.ndarray) -> None:
@@ -72,19 +73,24 @@ def _snap_corners(out: np.ndarray, corner: np.ndarray) -> None:
     rows = np.flatnonzero(corner)
     if rows.size == 0:
         return
-    _, first, inverse = np.unique(_corner_keys(out[rows]), axis=0, return_index=True, return_inverse=True)
-    out[rows] = out[rows[first[inverse.reshape(-1)]]]
+    key = _corner_keys(out[rows])
+    order = np.argsort(key, kind="stable")
+    same = key[order][1:] == key[order][:-1]
+    if not same.any():
+        return
+    first = np.maximum.accumulate(np.where(np.concatenate([[False], same]), 0, np.arange(rows.size)))
+    out[rows[order]] = out[rows[order[first]]]
 
 
 def _split_pinches(ring: np.ndarray, corner: np.ndarray) -> list[np.ndarray]:
     """The ring cut into simple loops where it passes one corner twice (the set touching itself there)."""
     rows = np.flatnonzero(corner)
     key = _corner_keys(ring[rows])
-    _, first, counts = np.unique(key, axis=0, return_index=True, return_counts=True)
-    if (counts < 2).all():
+    order = np.argsort(key, kind="stable")
+    twice = np.flatnonzero(key[order][1:] == key[order][:-1])
+    if twice.size == 0:
         return [ring]
-    dup = first[counts > 1][0]
-    same = np.flatnonzero((key == key[dup]).all(axis=1))
+    same = np.sort(order[twice[0] : twice[0] + 2])
     p, q = int(rows[same[0]]), int(rows[same[1]])
     inner = ring[p:q]
     outer = np.concatenate([ring[q:], ring[:p]])
@@ -157,7 +163,9 @@ def _even_odd(plain: list[Polygon], polar: list[Polygon], inside: tuple[float, f
     geoms = np.array(plain, dtype=object)
     n = len(plain)
     parts: list[Any] = []
-    if n:
+    if n == 1:
+        parts = [geoms[0]]
+    elif n:
         tree = shapely.STRtree(geoms)
         within, around = tree.query(geoms, predicate="covered_by")
         keep = within != around
