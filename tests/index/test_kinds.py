@@ -119,6 +119,9 @@ ID_FUNCS = {
     "are_neighbor_cells": (lambda c: dggs.are_neighbor_cells(c, c), bool, "aligned"),
     "grid_distance": (lambda c: dggs.grid_distance(c, c), int, "aligned"),
     "cell_centers_distance": (lambda c: dggs.cell_centers_distance(c, c), float, "aligned"),
+    "cell_to_child_pos": (lambda c: dggs.cell_to_child_pos(c, 1), int, "aligned"),
+    "cell_to_local_ij": (lambda c: dggs.cell_to_local_ij(c, c), tuple, "pair"),
+    "origin_to_directed_edges": (dggs.origin_to_directed_edges, list, "rows"),
 }
 
 
