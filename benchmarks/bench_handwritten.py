@@ -9,9 +9,9 @@ after a warm-up (``_common.interleaved``), wall time per call.
    and at both poles): ``dggs.index._shapes.wkb`` (numpy records for the
    ordinary cells) against ``shapely.to_wkb`` of the cells' polygons.
 2. GeoArrow of the same cells: the shapely ragged arrays assembled into pyarrow
-   lists by hand, against geoarrow-pyarrow's ``as_geoarrow`` of the WKB; and the
-   xdggs backend's assembly (``shapely.to_ragged_array`` into arro3 lists) against
-   geoarrow-pyarrow's interleaved ``as_geoarrow`` of the polygons' WKB.
+   lists by hand, against geoarrow-c's ``as_geoarrow`` kernel reading the WKB (what
+   dggs does now); and the same for the xdggs backend (interleaved coordinates,
+   arro3 arrays).
 3. The export's Polygon-to-MultiPolygon WKB rewrite (``dggs.arrow._as_multipolygons``)
    against shapely and geoarrow-pyarrow doing it.
 4. Antimeridian splitting and pole closure of those cells' exact rings:
@@ -93,20 +93,40 @@ def wkb_table(ids: np.ndarray, rounds: int) -> list[dict[str, Any]]:
     return out
 
 
+def old_xdggs(polygons: np.ndarray) -> Any:
+    """dggs.xdggs's geoarrow builder before geoarrow-c (kept here to time it): ragged arrays into arro3 lists."""
+    import pyproj
+    import shapely
+    from arro3.core import list_array
+
+    crs = pyproj.CRS.from_epsg(4326).to_json_dict()
+    geometry_type, coords, offsets = shapely.to_ragged_array(polygons)
+    coords = np.ascontiguousarray(coords, dtype=np.float64)
+    if geometry_type == shapely.GeometryType.POLYGON:
+        rings, geoms = offsets
+        array = list_array(geoms.astype(np.int32), list_array(rings.astype(np.int32), coords))
+        extension = "geoarrow.polygon"
+    else:
+        rings, parts, geoms = offsets
+        array = list_array(geoms.astype(np.int32),
+                           list_array(parts.astype(np.int32), list_array(rings.astype(np.int32), coords)))
+        extension = "geoarrow.multipolygon"
+    metadata = {"ARROW:extension:name": extension, "ARROW:extension:metadata": json.dumps({"crs": crs})}
+    return array.cast(array.field.with_metadata(metadata))
+
+
 def geoarrow_table(ids: np.ndarray, rounds: int) -> list[dict[str, Any]]:
+    import pyarrow as pa
     import shapely
 
     import dggs
     from dggs.index import _shapes as s
 
-    ga = c.try_import("geoarrow.pyarrow", "geoarrow-pyarrow")
-    if ga is None:
+    if c.try_import("geoarrow.c", "geoarrow-c") is None:
         return []
     from dggs.xdggs import _to_geoarrow
 
     def old_geoarrow(d: int) -> Any:  # the builder this table's library variant replaced (kept here to time it)
-        import pyarrow as pa
-
         kind, coords, offsets = shapely.to_ragged_array(s.geometries(ids, d))
         fields = [pa.field("x", pa.float64()), pa.field("y", pa.float64())]
         arr: Any = pa.StructArray.from_arrays([pa.array(coords[:, 0]), pa.array(coords[:, 1])], fields=fields)
@@ -118,23 +138,18 @@ def geoarrow_table(ids: np.ndarray, rounds: int) -> list[dict[str, Any]]:
     for d in (0, 16):
         same = s.geoarrow(ids, d)[0].equals(old_geoarrow(d))
         cases = [("hand-assembled pyarrow lists of shapely.to_ragged_array", lambda d=d: old_geoarrow(d)),
-                 ("dggs now: geoarrow-pyarrow as_geoarrow of dggs's WKB, cast to list<item>",
+                 ("dggs now: geoarrow-c as_geoarrow of dggs's WKB (index/_shapes.geoarrow)",
                   lambda d=d: s.geoarrow(ids, d))]
         out.append(_table(f"GeoArrow (separated x/y) of {ids.size:,} level-10 cells, densify={d}", cases,
                           {cases[1][0]: "yes" if same else "no"}, rounds, "cell", ids.size))
-    polys = np.asarray(dggs.cell_to_polygon(ids, densify=4), dtype=object)
+    def former() -> Any:  # cell_boundaries(backend="geoarrow") before: the polygons, then their ragged arrays
+        return old_xdggs(np.asarray(dggs.cell_to_polygon(ids, densify=4), dtype=object))
 
-    def xdggs_library() -> Any:
-        return ga.as_geoarrow(ga.array(shapely.to_wkb(polys)), coord_type=ga.CoordType.INTERLEAVED)
-
-    import pyarrow as pa
-
-    theirs = pa.array(_to_geoarrow(polys))
-    lib = xdggs_library()
-    same = lib.storage.cast(theirs.type).equals(theirs.storage if hasattr(theirs, "storage") else theirs)
-    cases = [("dggs.xdggs: shapely.to_ragged_array into arro3 lists", lambda: _to_geoarrow(polys)),
-             ("geoarrow-pyarrow as_geoarrow (interleaved) of shapely.to_wkb", xdggs_library)]
-    out.append(_table(f"xdggs's geoarrow backend, {ids.size:,} shapely polygons (densify=4)", cases,
+    lib = _to_geoarrow(ids, 4)
+    same = lib.type == former().type and pa.array(lib).equals(pa.array(former()))
+    cases = [("cell_to_polygon, shapely.to_ragged_array into arro3 lists (xdggs's former builder)", former),
+             ("dggs.xdggs now: geoarrow-c as_geoarrow (interleaved) of dggs's WKB", lambda: _to_geoarrow(ids, 4))]
+    out.append(_table(f"xdggs's geoarrow backend, {ids.size:,} level-10 cells (densify=4)", cases,
                       {cases[1][0]: "yes" if same else "no"}, rounds, "cell", ids.size))
     return out
 
