@@ -75,3 +75,52 @@ def test_the_field_names_the_extension_the_array_holds():
     assert geoarrow_field("g", "geoarrow", ["C401"], 0).metadata[b"ARROW:extension:name"] == b"geoarrow.polygon"
     empty = cells_to_geoarrow([], encoding="geoarrow")
     assert len(empty) == 0 and empty.type == pa.list_(pa.list_(POINT))
+
+
+def test_pyarrow_is_left_without_geoarrow_extension_types(tmp_path):
+    # geoarrow-pyarrow registers extension types for the whole process on import; dggs must not do that
+    # behind its caller's back: a field tagged geoarrow.* still comes back from pyarrow as plain storage.
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, pyarrow as pa\n"
+        "from dggs.arrow import cells_to_geoarrow, geoarrow_field\n"
+        "arr = cells_to_geoarrow(['C401', 'A'], 2, encoding='geoarrow')\n"
+        "field = geoarrow_field('g', 'geoarrow', ['C401', 'A'], 2)\n"
+        "batch = pa.RecordBatch.from_arrays([arr], schema=pa.schema([field]))\n"
+        "back = pa.RecordBatch._import_from_c_capsule(*batch.__arrow_c_array__())\n"
+        "assert 'geoarrow.pyarrow' not in sys.modules\n"
+        "assert not isinstance(back.schema.field('g').type, pa.ExtensionType), back.schema\n"
+    )
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert res.returncode == 0, res.stderr
+
+
+@pytest.mark.parametrize("densify", [0, 4, None])
+def test_xdggs_geoarrow_is_shapelys_ragged_arrays_interleaved(densify):
+    pytest.importorskip("xdggs")
+    from dggs.xdggs import Split26Info
+
+    for level in (0, 3, 9):
+        ids = np.array(sorted({c for c in SPECIAL if dggs.get_level(c) == level}))
+        arr = pa.array(Split26Info(level=level).cell_boundaries(ids, backend="geoarrow", densify=densify))
+        polys = np.asarray(dggs.cell_to_polygon(ids, 16 if densify is None else densify), dtype=object)
+        kind, coords, offsets = shapely.to_ragged_array(polys)
+        got = []
+        while pa.types.is_list(arr.type):
+            got.append(arr.offsets.to_numpy())
+            arr = arr.flatten()
+        assert pa.types.is_fixed_size_list(arr.type) and arr.type.list_size == 2
+        np.testing.assert_array_equal(arr.flatten().to_numpy().reshape(-1, 2), coords)
+        assert len(got) == len(offsets) == (3 if kind == shapely.GeometryType.MULTIPOLYGON else 2)
+        for g, ref in zip(got[::-1], offsets, strict=True):
+            np.testing.assert_array_equal(g, ref)
+
+
+def test_xdggs_geoarrow_of_no_cells_is_an_empty_polygon_array():
+    pytest.importorskip("xdggs")
+    from dggs.xdggs import Split26Info
+
+    arr = Split26Info(level=3).cell_boundaries(np.array([], dtype=np.uint64), backend="geoarrow")
+    assert len(arr) == 0 and arr.field.metadata[b"ARROW:extension:name"] == b"geoarrow.polygon"
