@@ -36,9 +36,10 @@ from dggs.duckdb import (
     _valid,
 )
 from dggs.errors import DggsValueError
+from dggs.index.dissolve import cells_to_polygons
 from dggs.index.grid import grid_disk, grid_distance, grid_ring
 from dggs.index.hierarchy import cell_to_center_child, cell_to_children, compact_cells, get_level, uncompact_cells
-from dggs.index.points import cell_to_boundary, cell_to_polygon
+from dggs.index.points import cell_to_boundary
 from dggs.index.polyfill import polygon_to_cells
 from dggs.index.vertex import cell_to_vertexes
 
@@ -200,8 +201,7 @@ def _uncompact(name: str, sql_type: str) -> Callable[..., Any]:
 def _dissolve(name: str) -> Callable[..., Any]:
     def fn(cells: Any) -> Any:
         valid, ids, lengths = _list_ids(name, cells)
-        polygons = np.atleast_1d(cell_to_polygon(ids)) if ids.size else np.zeros(0, object)
-        unions = [shapely.union_all(polygons[s:e]) for s, e in _splits(lengths)]
+        unions = [cells_to_polygons(ids[s:e]) for s, e in _splits(lengths)]  # outlines by edge identity
         return _out(np.asarray(shapely.to_wkb(unions), dtype=object).reshape(-1), valid, pa.binary())
 
     return _sql_errors(name)(fn)

@@ -168,7 +168,7 @@ def cell_sets(draw):
 
 
 def _dissolved(cells):
-    return shapely.union_all([dggs.cell_to_polygon(c) for c in cells])
+    return dggs.cells_to_polygons(cells)
 
 
 @given(kind=st.sampled_from(KINDS), rows=st.lists(st.one_of(st.none(), cell_sets()), min_size=1, max_size=8))
