@@ -193,13 +193,17 @@ def edges_in(obj: Any) -> tuple[np.ndarray, Kind]:
     return ids | _U_EDGE, kind
 
 
+def _one_edge(v: int, form: str) -> Any:
+    if form == "int":
+        return v
+    s = format_int(v ^ EDGE) or ""
+    return s[:-1] + SEP + s[-1]
+
+
 def edges_out(edges: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> Any:
     """Edge ids (uint64, sign bit set; 0 for none) in the container of ``kind`` (as :func:`cells_out` does cells)."""
-    if kind.scalar and not trailing and edges.shape == (1,) and edges[0]:  # a lone edge
-        v = int(edges[0])
-        if kind.form == "int":
-            return v
-        s = format_int(v ^ EDGE) or ""
-        return s[:-1] + SEP + s[-1]
+    if kind.scalar and len(trailing) <= 1 and edges.all():  # a lone edge, or one row of them
+        values = [_one_edge(v, kind.form) for v in edges.reshape(-1).tolist()]
+        return values if trailing else values[0]
     shadows = np.where(edges != 0, edges & ~_U_EDGE, edges)
     return _map(cells_out(shadows, kind, trailing), True)
