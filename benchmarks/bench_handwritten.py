@@ -7,7 +7,9 @@ after a warm-up (``_common.interleaved``), wall time per call.
 
 1. WKB of 100,000 level-10 cells (random ones plus cells along the antimeridian
    and at both poles): ``dggs.index._shapes.wkb`` (numpy records for the
-   ordinary cells) against ``shapely.to_wkb`` of the cells' polygons.
+   ordinary cells) against ``shapely.to_wkb`` of the cells' polygons; then the
+   encoders alone on the ordinary cells' rings (both sides share the boundary
+   kernel and the exact pole and antimeridian cells, which take most of the time).
 2. GeoArrow of the same cells: the shapely ragged arrays assembled into pyarrow
    lists by hand, against geoarrow-c's ``as_geoarrow`` kernel reading the WKB (what
    dggs does now); and the same for the xdggs backend (interleaved coordinates,
@@ -73,6 +75,7 @@ def _table(title: str, cases: list[Case], same: dict[str, str], rounds: int, uni
 
 
 def wkb_table(ids: np.ndarray, rounds: int) -> list[dict[str, Any]]:
+    import pyarrow as pa
     import shapely
 
     from dggs.index import _shapes as s
@@ -83,13 +86,28 @@ def wkb_table(ids: np.ndarray, rounds: int) -> list[dict[str, Any]]:
             geoms = s.geometries(ids, d)
             return shapely.to_wkb(geoms, byte_order=1, output_dimension=2), shapely.bounds(geoms)
 
+        coords = s.boundaries(ids, d, lnglat=True)
+        plain = coords[~s.special_rings(coords)]  # the ordinary cells' closed rings, as wkb() encodes them
+
+        def records(plain: np.ndarray = plain) -> Any:
+            block = s._wkb_records(plain)
+            offsets = np.arange(plain.shape[0] + 1, dtype=np.int64) * block.shape[1]
+            return s._binary_array([(np.arange(plain.shape[0]), offsets, block.reshape(-1))], plain.shape[0])
+
+        def shapely_encoder(plain: np.ndarray = plain) -> Any:
+            return shapely.to_wkb(shapely.polygons(plain), byte_order=1, output_dimension=2)
+
         ours = s.wkb(ids, d)
         lib = library()
         same = ours[0].to_pylist() == list(lib[0]) and np.array_equal(ours[1], lib[1])
         cases = [("dggs: numpy WKB records (index/_shapes.wkb)", lambda d=d: s.wkb(ids, d)),
-                 ("shapely.to_wkb of the polygons, shapely.bounds", library)]
+                 ("shapely.to_wkb of the polygons, shapely.bounds", library),
+                 ("the encoder alone, ordinary cells' rings: numpy records", records),
+                 ("the encoder alone, ordinary cells' rings: shapely.polygons + to_wkb", shapely_encoder)]
+        enc_same = records().equals(pa.array(shapely_encoder(), type=pa.binary()))
         out.append(_table(f"WKB and bounds of {ids.size:,} level-10 cells, densify={d}", cases,
-                          {cases[1][0]: "yes" if same else "no"}, rounds, "cell", ids.size))
+                          {cases[1][0]: "yes" if same else "no", cases[3][0]: "yes" if enc_same else "no"},
+                          rounds, "cell", ids.size))
     return out
 
 
