@@ -229,6 +229,7 @@ def test_line_covers_sampled_cells(anchors, offsets, level):
 
 @settings(max_examples=examples(50))
 @given(st.sampled_from(SPECIAL), st.floats(-3, 3), st.floats(-3, 3), st.integers(2, 14))
+@example((54.12192064184139, 132.96747441146098), 0.0, 1.0, 2)  # from an icosahedron vertex, round a corner
 def test_one_segment_is_geodesic_to_cells(p, dlat, dlng, level):
     """A segment's cells are dggs.geodesic_to_cells's (the one-geodesic verb, sampled and bisected on its own)."""
     lat2 = max(-90.0, min(90.0, p[0] + dlat))
