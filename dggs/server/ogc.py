@@ -24,10 +24,12 @@ from typing import Any
 
 from fastapi import FastAPI, Query, Request
 from fastapi.responses import FileResponse, HTMLResponse, JSONResponse, PlainTextResponse, Response
+from pydantic import BaseModel
 
 from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
 from .dggrs import link as _link
 from .encodings import HAS_UBJSON
+from .models import Collection, Collections, DggrsList, LandingPage, json_response
 from .params import Context, base_url, check_collection, check_dggrs, negotiate
 from .vendor import VENDOR_HELP, missing_vendor
 
@@ -56,11 +58,11 @@ CONFORMANCE = [
 ] + ([_DGGS + "data-ubjson"] if HAS_UBJSON else [])  # DGGS-UBJSON zone data (application/ubjson), with py-ubjson
 
 
-def landing(ctx: Context, request: Request) -> dict[str, Any]:
+def landing(ctx: Context, request: Request) -> LandingPage:
     """The landing page (OGC API - Common, /req/landing-page; /req/root-dggs/dggs)."""
     base = base_url(request)
     cid = ctx.reader.collection_id
-    return {
+    return LandingPage.model_validate({
         "title": f"dggs: {cid}",
         "description": (
             f"OGC API - DGGS over the cell store {ctx.reader.path.name}: points binned into equal-area "
@@ -77,10 +79,10 @@ def landing(ctx: Context, request: Request) -> dict[str, Any]:
             _link(f"{base}/dggs", REL + "dggrs-list", title="DGGRS list"),
             _link(f"{base}/map/layers", "related", title="Web map layers"),
         ],
-    }
+    })
 
 
-def collection(ctx: Context, request: Request) -> dict[str, Any]:
+def collection(ctx: Context, request: Request) -> Collection:
     """The store as a collection (``collectionDesc.yaml``; /req/collection-dggs/dggs)."""
     base = base_url(request)
     summary = ctx.reader.summary()
@@ -108,10 +110,10 @@ def collection(ctx: Context, request: Request) -> dict[str, Any]:
         out["updated"] = summary.updated
     if summary.created:
         out["created"] = summary.created
-    return out
+    return Collection.model_validate(out)
 
 
-def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> dict[str, Any]:
+def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> DggrsList:
     """The DGGRS list (``rDGGRSList.yaml``; /req/core/dggrs-list)."""
     base = base_url(request)
     prefix = "" if collection_id is None else f"/collections/{collection_id}"
@@ -120,7 +122,7 @@ def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> dic
         links.append(_link(f"{base}/", REL + "dataset", title="Landing page"))
     else:
         links.append(_link(f"{base}/collections/{collection_id}", REL + "geodata", title=collection_id))
-    return {"links": links, "dggrs": [item(base, prefix)]}
+    return DggrsList.model_validate({"links": links, "dggrs": [item(base, prefix)]})
 
 
 _LANDING_HTML = """<!doctype html>
@@ -134,23 +136,24 @@ _LANDING_HTML = """<!doctype html>
 """
 
 
-def landing_html(document: dict[str, Any], why: str) -> str:
+def landing_html(document: LandingPage, why: str) -> str:
     """The landing page ``document`` as HTML for a browser when the web map cannot be shown, saying ``why``.
 
     Every link of the JSON landing page is a link here (title, relation and media type shown).
 
     Examples
     --------
-    >>> doc = {"title": "t", "description": "d", "links": [{"href": "/api", "rel": "service-desc", "title": "OpenAPI"}]}
+    >>> link = {"href": "/api", "rel": "service-desc", "title": "OpenAPI"}
+    >>> doc = LandingPage.model_validate({"title": "t", "description": "d", "links": [link]})
     >>> '<a href="/api">OpenAPI</a>' in landing_html(doc, "no map")
     True
     """
     items = "\n".join(
-        f'<li><a href="{html.escape(link["href"])}">{html.escape(link.get("title", link["href"]))}</a> '
-        f'({html.escape(link["rel"])}{", " + html.escape(link["type"]) if "type" in link else ""})</li>'
-        for link in document["links"]
+        f'<li><a href="{html.escape(link.href)}">{html.escape(link.title or link.href)}</a> '
+        f'({html.escape(link.rel)}{", " + html.escape(link.type) if link.type else ""})</li>'
+        for link in document.links
     )
-    return _LANDING_HTML.format(title=html.escape(document["title"]), description=html.escape(document["description"]),
+    return _LANDING_HTML.format(title=html.escape(document.title or ""), description=html.escape(document.description or ""),
                                 why=html.escape(why), links=items)
 
 
@@ -160,13 +163,13 @@ _NO_PAGE = "The web map is not part of this server (its static folder has no ind
 _F = Query(None, description="json (the only format here; overrides the Accept header)")
 
 
-def _json(request: Request, f: str | None, body: Any) -> JSONResponse:
-    """``body`` as JSON, the one format of the metadata resources.
+def _json(request: Request, f: str | None, body: Any) -> Response:
+    """``body`` (a dict or a model) as JSON, the one format of the metadata resources.
 
     400 for another ``f``, 406 for an Accept header without JSON (OGC API - Common /req/core/http).
     """
     negotiate(request, f, ("json",))
-    return JSONResponse(body)
+    return json_response(body) if isinstance(body, BaseModel) else JSONResponse(body)
 
 
 def register(app: FastAPI, ctx: Context, static: Path) -> None:
@@ -186,25 +189,22 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
             if missing_vendor(static):
                 return HTMLResponse(landing_html(landing(ctx, request), VENDOR_HELP + "."))
             return FileResponse(page, media_type="text/html")
-        return JSONResponse(landing(ctx, request))
+        return json_response(landing(ctx, request))
 
     @app.get("/conformance", tags=["Capabilities"], summary="Conformance classes")
-    def conformance(request: Request, f: str | None = _F) -> JSONResponse:
+    def conformance(request: Request, f: str | None = _F) -> Response:
         return _json(request, f, {"conformsTo": CONFORMANCE})
 
     @app.get("/collections", tags=["Collections"], summary="Collections (the one store)")
-    def collections(request: Request, f: str | None = _F) -> JSONResponse:
+    def collections(request: Request, f: str | None = _F) -> Response:
         negotiate(request, f, ("json",))
         base = base_url(request)
-        return JSONResponse({
-            "links": [_link(f"{base}/collections", "self")],
-            "collections": [collection(ctx, request)],
-            "numberMatched": 1,
-            "numberReturned": 1,
-        })
+        return json_response(Collections.model_validate({
+            "links": [_link(f"{base}/collections", "self")], "collections": [collection(ctx, request)],
+            "numberMatched": 1, "numberReturned": 1}))
 
     @app.get("/collections/{collectionId}", tags=["Collections"], summary="The collection")
-    def one_collection(request: Request, collectionId: str, f: str | None = _F) -> JSONResponse:
+    def one_collection(request: Request, collectionId: str, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         return _json(request, f, collection(ctx, request))
 
@@ -215,31 +215,31 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
         return description(base_url(request), prefix, ctx.reader.summary().level, collection_id)
 
     @app.get("/dggs", tags=["DGGS"], summary="DGGRS list")
-    def dggs_root(request: Request, f: str | None = _F) -> JSONResponse:
+    def dggs_root(request: Request, f: str | None = _F) -> Response:
         return _json(request, f, dggrs_list(ctx, request, None))
 
     @app.get("/dggs/{dggrsId}", tags=["DGGS"], summary="DGGRS description")
-    def dggrs_root(request: Request, dggrsId: str, f: str | None = _F) -> JSONResponse:
+    def dggrs_root(request: Request, dggrsId: str, f: str | None = _F) -> Response:
         return _json(request, f, described(request, None, dggrsId))
 
     @app.get("/dggs/{dggrsId}/definition", tags=["DGGS"], summary="DGGRS definition (Annex B schema)")
-    def dggrs_definition(request: Request, dggrsId: str, f: str | None = _F) -> JSONResponse:
+    def dggrs_definition(request: Request, dggrsId: str, f: str | None = _F) -> Response:
         check_dggrs(dggrsId)
         return _json(request, f, definition())
 
     @app.get("/collections/{collectionId}/dggs", tags=["Collection DGGS"], summary="DGGRS list of the collection")
-    def dggs_collection(request: Request, collectionId: str, f: str | None = _F) -> JSONResponse:
+    def dggs_collection(request: Request, collectionId: str, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         return _json(request, f, dggrs_list(ctx, request, collectionId))
 
     @app.get("/collections/{collectionId}/dggs/{dggrsId}", tags=["Collection DGGS"], summary="DGGRS description")
-    def dggrs_collection(request: Request, collectionId: str, dggrsId: str, f: str | None = _F) -> JSONResponse:
+    def dggrs_collection(request: Request, collectionId: str, dggrsId: str, f: str | None = _F) -> Response:
         return _json(request, f, described(request, collectionId, dggrsId))
 
     @app.get("/collections/{collectionId}/dggs/{dggrsId}/definition", tags=["Collection DGGS"],
              summary="DGGRS definition (Annex B schema)")
     def dggrs_collection_definition(request: Request, collectionId: str, dggrsId: str,
-                                    f: str | None = _F) -> JSONResponse:
+                                    f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
         return _json(request, f, definition())

@@ -29,6 +29,7 @@ from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
 from .encodings import HAS_UBJSON, UBJSON, UINT64, dggs_ubjson, uint64_zone_list
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
+from .models import ZoneInfo, json_response
 from .params import (
     Context,
     base_url,
@@ -135,7 +136,7 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
         props = {k: v for k, v in info.items() if k not in ("id", "geometry")}
         feature = {"type": "Feature", "id": zone, "geometry": info["geometry"], "properties": {"zoneID": zone, **props}}
         return JSONResponse(feature, media_type=GEOJSON)
-    return JSONResponse(info)
+    return json_response(ZoneInfo.model_validate(info))  # the standard's members, none misspelt (models.py)
 
 
 # -- zone data ----------------------------------------------------------------

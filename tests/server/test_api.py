@@ -574,7 +574,8 @@ def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
 # -- docstring examples ---------------------------------------------------------------
 
 
-@pytest.mark.parametrize("name", ["app", "dggrs", "errors", "geojson", "mapdata", "ogc", "params", "reader", "vendor", "warm", "zones"])
+@pytest.mark.parametrize("name", ["app", "dggrs", "encodings", "errors", "geojson", "mapdata", "models", "ogc", "params",
+                                  "reader", "vendor", "warm", "zones"])
 def test_doctests(name):
     module = importlib.import_module(f"dggs.server.{name}")
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
