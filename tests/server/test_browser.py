@@ -475,6 +475,60 @@ def test_land_is_drawn_under_the_cells(page: Any) -> None:
     assert js_errors(page) == []
 
 
+# Deep inside Antarctica's ice sheet (away from the ice shelves, which Natural Earth leaves as sea, and from the
+# graticule's 30-degree lines), two of them beyond 85 S where Web Mercator, and so MapLibre's tiles, end.
+ANTARCTICA = [(-80.0, 15.0), (-80.0, 105.0), (-75.0, 135.0), (-82.0, -110.0), (-87.0, 45.0), (-88.0, -135.0)]
+SOUTH_VIEW = {"center": [0.0, -70.0], "zoom": 0.0}  # MapLibre scales the globe by 1 / cos(lat)
+
+
+def test_antarctica_is_land_to_the_pole(page: Any) -> None:
+    # world-atlas writes it as a polar ring with the coast as a hole; app.js closes the coast through the pole
+    set_view(page, SOUTH_VIEW)
+    shot = Screenshot(page)
+    positions = {p: project(page, *p) for p in ANTARCTICA}
+    assert all(0 < x < WIDTH and 0 < y < HEIGHT for x, y in positions.values()), positions
+    colours = {p: shot.patch(*project(page, *p)).reshape(-1, 3).mean(axis=0) for p in ANTARCTICA}
+    off = {p: c.round() for p, c in colours.items() if np.abs(c - LAND_COLOUR).max() >= 8}
+    assert not off, off
+    sea = shot.patch(*project(page, -50.0, -20.0)).reshape(-1, 3).mean(axis=0)  # the Southern Ocean stays sea
+    assert np.abs(sea - SEA_COLOUR).max() < 8, sea
+    assert js_errors(page) == []
+
+
+# The largest countries by area (Natural Earth's names); the labels name the LABEL_COUNT largest.
+LARGEST = ["Russia", "Antarctica", "Canada", "United States of America", "China", "Brazil", "Australia", "India"]
+
+
+def test_country_labels_name_the_land_under_them_while_zoomed_out(page: Any) -> None:
+    set_view(page, GLOBE_VIEW)
+    labels = page.execute_script("return window.dggsLabels.map(l => ({name: l.name, lng: l.lng, lat: l.lat}))")
+    names = [label["name"] for label in labels]
+    assert set(LARGEST) <= set(names) and len(names) == len(set(names)) >= 20, names
+    # Each label stands on its own country: the land MapLibre drew under the label's point has its name.
+    under = page.execute_script(
+        "return window.dggsLabels.map(l => { const p = window.dggsMap.project([l.lng, l.lat]);"
+        " return window.dggsMap.queryRenderedFeatures(p, {layers: ['land']}).map(f => f.properties.name); })"
+    )
+    visible = page.execute_script(
+        "return window.dggsLabels.map(l => getComputedStyle(l.element).display !== 'none'"
+        " && Number(getComputedStyle(l.element).opacity) > 0)"
+    )
+    front = [label for label, names_under, shown in zip(labels, under, visible, strict=True) if shown]
+    assert len(front) >= 5, labels  # the globe's near side has labels showing
+    for label, names_under, shown in zip(labels, under, visible, strict=True):
+        if shown:
+            assert label["name"] in names_under, (label, names_under)
+    shown_names = [label["name"] for label in front]
+    assert "Russia" in shown_names and "Australia" not in shown_names  # the far side's are hidden
+    # Zoomed in, none.
+    set_view(page, EUROPE_VIEW)
+    hidden = page.execute_script(
+        "return window.dggsLabels.every(l => getComputedStyle(l.element).display === 'none')")
+    assert hidden
+    set_view(page, GLOBE_VIEW)
+    assert js_errors(page) == []
+
+
 def test_a_skewed_column_spreads_over_the_colour_classes(page: Any, data: dict[str, Any]) -> None:
     set_view(page, GLOBE_VIEW)
     s = choose(page, "column", "pop")

@@ -3,7 +3,7 @@
 // linear) with a legend of the classes, a cell popup, and Natural Earth's coastlines and borders beneath.
 // An ES module with no build step; MapLibre GL JS, the countries (world-atlas, TopoJSON) and
 // topojson-client come from /static/vendor, installed from npm (no internet needed).
-import { Map as MapLibreMap, NavigationControl, Popup } from './vendor/maplibre-gl/maplibre-gl.mjs';
+import { Map as MapLibreMap, Marker, NavigationControl, Popup } from './vendor/maplibre-gl/maplibre-gl.mjs';
 
 // --- Level from zoom ------------------------------------------------------------------------------
 // From level 1 on, each level divides a cell into 3 similar triangles: cells shrink sqrt(3)-fold in
@@ -193,10 +193,87 @@ function dropCuts(line) {
   return parts.filter((part) => part.length > 1);
 }
 
+// world-atlas writes Antarctica (a polygon holding the south pole) as d3-geo does on the sphere: an outer
+// ring along -89.999 degrees all the way round and the coast as its hole. On the plane that is a line with a
+// hole, which MapLibre filled only in part. Each such hole is the land's coast: it goes once round the pole,
+// so its longitudes unwrap to a 360-degree span; it is closed through the pole (down the meridian at its end,
+// along -89.999 back, up at its start) into a plain ring, which MapLibre fills to the pole cap.
+const SOUTH = -89.99;
+const aroundPole = (rings) => rings.length > 1 && rings[0].every(([, y]) => y < SOUTH);
+
+function closeThroughPole(coast) {
+  const open = coast.slice(0, -1); // without the closing point
+  let shift = 0;
+  const out = open.map(([x, y], i) => {
+    if (i > 0) shift += 360 * Math.round((open[i - 1][0] - x) / 360);
+    return [x + shift, y];
+  });
+  const [x0, y0] = out[0];
+  const end = x0 + 360 * Math.sign(out[out.length - 1][0] - x0);
+  out.push([end, y0], [end, -89.999], [x0, -89.999], [x0, y0]);
+  return out;
+}
+
+function planar(rings) {
+  return aroundPole(rings) ? rings.slice(1).map((coast) => [closeThroughPole(coast)]) : [rings.map(unwrap)];
+}
+
 function polygons(feature) {
   const g = feature.geometry;
-  const coordinates = g.type === 'Polygon' ? g.coordinates.map(unwrap) : g.coordinates.map((p) => p.map(unwrap));
-  return { ...feature, geometry: { ...g, coordinates } };
+  const parts = g.type === 'Polygon' ? planar(g.coordinates) : g.coordinates.flatMap(planar);
+  return { ...feature, geometry: { type: 'MultiPolygon', coordinates: parts } };
+}
+
+// --- Labels ------------------------------------------------------------------------------------------
+// MapLibre draws text only with glyph files (one more download to vendor), so the names of the largest
+// countries are HTML markers instead, at the centre of each country's largest part, shown while zoomed out
+// (LABEL_MAX_ZOOM): world-atlas's `name`s, the LABEL_COUNT largest by area on the sphere.
+const LABEL_COUNT = 30;
+const LABEL_MAX_ZOOM = 4;
+const labels = [];
+window.dggsLabels = labels;
+
+// Area and centre of a ring in the cylindrical equal-area projection (x the longitude, unwrapped; y the
+// sine of the latitude, in degrees' units), so areas compare as on the sphere.
+const DEG = Math.PI / 180;
+function ringCentre(ring) {
+  let a = 0; let cx = 0; let cy = 0;
+  for (let i = 1; i < ring.length; i += 1) {
+    const x0 = ring[i - 1][0]; const y0 = Math.sin(ring[i - 1][1] * DEG) / DEG;
+    const x1 = ring[i][0]; const y1 = Math.sin(ring[i][1] * DEG) / DEG;
+    const cross = x0 * y1 - x1 * y0;
+    a += cross; cx += (x0 + x1) * cross; cy += (y0 + y1) * cross;
+  }
+  if (a === 0) return null;
+  return { area: Math.abs(a / 2), lng: wrapLng(cx / (3 * a)), lat: Math.asin(clamp(cy / (3 * a) * DEG, -1, 1)) / DEG };
+}
+
+function largestPart(feature) {
+  let best = null;
+  for (const rings of feature.geometry.coordinates) {
+    const c = ringCentre(rings[0]);
+    if (c && (!best || c.area > best.area)) best = c;
+  }
+  return best;
+}
+
+function addLabels(features) {
+  const parts = features.map((f) => ({ name: f.properties.name, ...largestPart(f) })).filter((p) => p.name && p.area);
+  const total = (f) => f.geometry.coordinates.reduce((sum, rings) => sum + (ringCentre(rings[0])?.area || 0), 0);
+  const area = new globalThis.Map(features.map((f) => [f.properties.name, total(f)]));
+  parts.sort((a, b) => area.get(b.name) - area.get(a.name));
+  for (const p of parts.slice(0, LABEL_COUNT)) {
+    const el = document.createElement('div');
+    el.className = 'country-label';
+    el.textContent = p.name;
+    labels.push({ name: p.name, lng: p.lng, lat: p.lat, element: el });
+    new Marker({ element: el, opacityWhenCovered: '0' }).setLngLat([p.lng, p.lat]).addTo(map); // hidden behind the globe
+  }
+  showLabels();
+}
+
+function showLabels() {
+  document.body.classList.toggle('labels-hidden', map.getZoom() > LABEL_MAX_ZOOM);
 }
 
 function lines(multiLine) {
@@ -211,7 +288,9 @@ async function loadGeography() {
     const { feature, mesh } = window.topojson; // the UMD build sets window.topojson
     const countries = topo.objects.countries;
     const land = feature(topo, countries);
-    map.getSource('land').setData({ ...land, features: land.features.map(polygons) });
+    const features = land.features.map(polygons);
+    map.getSource('land').setData({ ...land, features });
+    addLabels(features);
     map.getSource('coastline').setData(lines(mesh(topo, countries, (a, b) => a === b)));
     map.getSource('borders').setData(lines(mesh(topo, countries, (a, b) => a !== b)));
     state.geography = 'loaded';
@@ -519,6 +598,7 @@ map.on('click', 'cells-fill', (e) => {
 });
 map.on('mouseenter', 'cells-fill', () => { map.getCanvas().style.cursor = 'pointer'; });
 map.on('mouseleave', 'cells-fill', () => { map.getCanvas().style.cursor = ''; });
+map.on('zoom', showLabels);
 
 // --- Controls -------------------------------------------------------------------------------------
 function readControls() {
