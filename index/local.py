@@ -108,12 +108,13 @@ def _ints_in(obj: Any, name: str) -> tuple[np.ndarray, Kind | None]:
 def _ids_with_ints(cells: Any, numbers: list[tuple[Any, str]]) -> tuple[np.ndarray, list[np.ndarray], Kind]:
     """Ids and integer arguments broadcast against each other, and the answer's kind (the ids' unless a scalar)."""
     ids, kind = cells_in(cells)
-    arrays = []
+    arrays, shapes = [], []
     shape = kind.shape
     out_kind = kind
     for obj, name in numbers:
         arr, k = _ints_in(obj, name)
         arrays.append(arr)
+        shapes.append(() if k is None else k.shape)
         if k is not None:
             try:
                 shape = np.broadcast_shapes(shape, k.shape)
@@ -130,9 +131,7 @@ def _ids_with_ints(cells: Any, numbers: list[tuple[Any, str]]) -> tuple[np.ndarr
     elif out_kind.shape != shape:
         out_kind = Kind("list" if out_kind.container in ("list", "tuple") else "numpy", kind.form, shape)
     full = [np.ascontiguousarray(np.broadcast_to(ids.reshape(kind.shape), shape)).reshape(-1)]
-    for (obj, _), arr in zip(numbers, arrays, strict=True):
-        k_shape = _ints_in(obj, "")[1]
-        a_shape = () if k_shape is None else k_shape.shape
+    for arr, a_shape in zip(arrays, shapes, strict=True):
         full.append(np.ascontiguousarray(np.broadcast_to(arr.reshape(a_shape), shape)).reshape(-1))
     return full[0], full[1:], out_kind
 
