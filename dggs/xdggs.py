@@ -10,7 +10,8 @@ import xarray or xdggs).
 
 Cell ids are the uint64 ids of :func:`dggs.latlng_to_cell` (``as_int=True``) or the string ids; the
 grid parameter ``id_format`` (``"int"`` or ``"str"``) says which, and is inferred from the coordinate's
-dtype when the attributes leave it out. The grid is always on WGS84 (``ellipsoid="WGS84"``).
+dtype when the attributes leave it out. The grid is always on WGS84 (``ellipsoid="WGS84"``); the optional
+``projection`` (``"ISEA"``, implied, or ``"IVEA"``) names the grid's projection (``dggs.Grid``, docs/grid.md).
 
 Examples
 --------
@@ -19,7 +20,7 @@ Examples
 >>> ids = dggs.latlng_to_cell(np.array([51.05, -33.9]), np.array([-114.07, 18.4]), 5, as_int=True)
 >>> ds = xr.Dataset(coords={"cell_ids": ("cells", ids, {"grid_name": "dggs_split26", "level": 5})})
 >>> xdggs.decode(ds).dggs.grid_info
-Split26Info(level=5, ellipsoid='WGS84', id_format='int')
+Split26Info(level=5, ellipsoid='WGS84', id_format='int', projection='ISEA')
 """
 
 from __future__ import annotations
@@ -56,7 +57,7 @@ GEOARROW_DENSIFY = 16
 """Points per curved edge of the ``"geoarrow"`` boundaries (what ``explore`` draws) unless told otherwise."""
 
 _ID_FORMATS = ("int", "str")
-_OPTIONAL = frozenset({"id_format", "ellipsoid"})
+_OPTIONAL = frozenset({"id_format", "ellipsoid", "projection"})
 _WGS84_AXES = {"semimajor_axis": 6378137.0, "inverse_flattening": 298.257223563}
 
 
@@ -90,6 +91,12 @@ def _parse_ellipsoid(value: Any) -> str:
         if known and named and (axes_ok or (set(value) == {"name"} and name is not None)):
             return "WGS84"
     raise ValueError(f"the {GRID_NAME} grid is defined on WGS84 only, got ellipsoid={value!r}")
+
+
+def _parse_projection(value: Any) -> str:
+    if isinstance(value, str) and value.upper() in ("ISEA", "IVEA"):
+        return value.upper()
+    raise ValueError(f"projection must be 'ISEA' or 'IVEA', got {value!r}")
 
 
 def _serialized_ellipsoid(value: Any) -> Any:
@@ -141,6 +148,7 @@ class Split26Info(DGGSInfo):
     level: int
     ellipsoid: Any = "WGS84"
     id_format: str = "int"
+    projection: str = "ISEA"
     stated: Mapping[str, Any] | None = field(default=None, compare=False, repr=False, kw_only=True)
 
     valid_parameters: ClassVar[dict[str, Any]] = {"level": range(dggs.MAX_LEVEL + 1), "id_format": _ID_FORMATS}
@@ -152,10 +160,11 @@ class Split26Info(DGGSInfo):
         if self.id_format not in _ID_FORMATS:
             raise ValueError(f"id_format must be 'int' or 'str', got {self.id_format!r}")
         object.__setattr__(self, "ellipsoid", _parse_ellipsoid(self.ellipsoid))  # one spelling: equality
+        object.__setattr__(self, "projection", _parse_projection(self.projection))
         if self.stated is not None:
             unknown = sorted(set(self.stated) - _OPTIONAL)
             if unknown:
-                raise ValueError(f"stated holds id_format and ellipsoid only, got {unknown}")
+                raise ValueError(f"stated holds id_format and ellipsoid only (besides projection), got {unknown}")
             if self.stated.get("id_format", self.id_format) != self.id_format:
                 raise ValueError(f"stated id_format {self.stated['id_format']!r} is not {self.id_format!r}")
             if "ellipsoid" in self.stated:
@@ -177,9 +186,10 @@ class Split26Info(DGGSInfo):
             "refinement_level": ("level", _parse_level),
             "id_format": ("id_format", str),
             "ellipsoid": ("ellipsoid", _parse_ellipsoid),
+            "projection": ("projection", _parse_projection),
         }
         params = translate_parameters(dict(mapping), translations)
-        unknown = sorted(set(params) - {"level", "id_format", "ellipsoid"})
+        unknown = sorted(set(params) - {"level", "id_format", "ellipsoid", "projection"})
         if unknown:
             raise ValueError(f"unknown parameters for the {GRID_NAME} grid: {unknown}")
         if "level" not in params:
@@ -187,6 +197,8 @@ class Split26Info(DGGSInfo):
         stated = {key: mapping[key] for key in _OPTIONAL if key in mapping}
         if "id_format" in stated:
             stated["id_format"] = params["id_format"]
+        if "projection" in stated:
+            stated["projection"] = params["projection"]
         if "ellipsoid" in stated:
             stated["ellipsoid"] = _serialized_ellipsoid(stated["ellipsoid"])
         return cls(**params, stated=stated)
@@ -199,8 +211,9 @@ class Split26Info(DGGSInfo):
         them (:attr:`stated`). An info built directly writes ``id_format`` (WGS84 is implied).
         """
         if self.stated is None:
-            return {"grid_name": GRID_NAME, "level": self.level, "id_format": self.id_format}
-        optional = {key: self.stated[key] for key in ("id_format", "ellipsoid") if key in self.stated}
+            named = {"projection": self.projection} if self.projection != "ISEA" else {}
+            return {"grid_name": GRID_NAME, "level": self.level, "id_format": self.id_format} | named
+        optional = {key: self.stated[key] for key in ("id_format", "ellipsoid", "projection") if key in self.stated}
         return {"grid_name": GRID_NAME, "level": self.level} | optional
 
     def cell_ids2geographic(self, cell_ids: Any) -> tuple[np.ndarray, np.ndarray]:
@@ -208,14 +221,15 @@ class Split26Info(DGGSInfo):
         ids = _as_ids(cell_ids)
         if ids.size == 0:
             return np.empty(0), np.empty(0)
-        lat, lng = dggs.cell_to_latlng(ids)
+        lat, lng = dggs.Grid(self.projection).cell_to_latlng(ids)
         return np.asarray(lng, dtype=np.float64), np.asarray(lat, dtype=np.float64)
 
     def geographic2cell_ids(self, lon: Any, lat: Any) -> np.ndarray:
         """The cells of this level holding the points (degrees), as ids of ``id_format``."""
         lon_ = np.asarray(lon, dtype=np.float64)
         lat_ = np.asarray(lat, dtype=np.float64)
-        return np.asarray(dggs.latlng_to_cell(lat_, lon_, self.level, as_int=self.id_format == "int"))
+        grid = dggs.Grid(self.projection)
+        return np.asarray(grid.latlng_to_cell(lat_, lon_, self.level, as_int=self.id_format == "int"))
 
     def cell_boundaries(self, cell_ids: Any, backend: str = "shapely", densify: int | None = None) -> Any:
         """Cell boundary polygons (lon, lat), split at the antimeridian into MultiPolygons.
@@ -235,10 +249,10 @@ class Split26Info(DGGSInfo):
         if backend == "geoarrow" and densify is None:
             densify = GEOARROW_DENSIFY
         if backend == "geoarrow":
-            return _to_geoarrow(ids, densify)
+            return _to_geoarrow(ids, densify, self.projection)
         if ids.size == 0:
             return np.empty(0, dtype=object)
-        return np.asarray(dggs.cell_to_polygon(ids, densify=densify), dtype=object)
+        return np.asarray(dggs.Grid(self.projection).cell_to_polygon(ids, densify=densify), dtype=object)
 
     def zoom_to(self, cell_ids: Any, level: int) -> np.ndarray:
         """Parents (``level`` < own level, shape (n,)) or children (shape (n, children per cell)) of the ids.
@@ -267,7 +281,7 @@ class Split26Info(DGGSInfo):
         return children.reshape(ids.size, per_cell)
 
 
-def _to_geoarrow(ids: np.ndarray, densify: int | None) -> Any:
+def _to_geoarrow(ids: np.ndarray, densify: int | None, projection: str = "ISEA") -> Any:
     """A geoarrow ``polygon`` (or ``multipolygon``, when any cell crosses the antimeridian) array in EPSG:4326.
 
     Interleaved coordinates, read by geoarrow-c from the cells' WKB (``dggs.index._shapes.wkb_to_geoarrow``):
@@ -283,7 +297,17 @@ def _to_geoarrow(ids: np.ndarray, densify: int | None) -> Any:
 
     crs = pyproj.CRS.from_epsg(4326).to_json_dict()
     flat, _ = cells_in(ids)
-    blobs, _, types = wkb(flat.reshape(-1), None if densify is None else check_densify(densify))
+    if projection == "IVEA":  # IVEA's polygons through shapely's WKB
+        import pyarrow as pa
+        import shapely
+
+        from dggs.index._ivea_shapes import geometries
+
+        geoms = geometries(flat.reshape(-1), None if densify is None else check_densify(densify))
+        blobs, types = pa.array(shapely.to_wkb(geoms), pa.binary()), set(shapely.get_type_id(geoms).tolist())
+        types = {"MultiPolygon" if t == 6 else "Polygon" for t in types}
+    else:
+        blobs, _, types = wkb(flat.reshape(-1), None if densify is None else check_densify(densify))
     multi = "MultiPolygon" in types
     array = Array.from_arrow(wkb_to_geoarrow(blobs, multi, interleaved=True, name=""))
     extension = "geoarrow.multipolygon" if multi else "geoarrow.polygon"
