@@ -184,6 +184,7 @@ ONE_CELL_FUNCS = {
     "cell_to_children": lambda c: dggs.cell_to_children(c, max_cells=10_000),
     "cell_to_center_child": lambda c: dggs.cell_to_center_child(c, dggs.MAX_LEVEL),
     "compact_cells": dggs.compact_cells,
+    "cells_to_polygons": lambda c: dggs.cells_to_polygons(c, densify=0),
     "uncompact_cells": lambda c: dggs.uncompact_cells(c, dggs.MAX_LEVEL, max_cells=10_000),
     "edge_neighbors": dggs.edge_neighbors,
     "are_neighbor_cells": lambda c: dggs.are_neighbor_cells(c, GOOD),
