@@ -22,7 +22,7 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelMismatchError
 
 from ._checks import check_level
-from ._convert import VALUE, Kind, Op, apply, apply_pair, cells_in, cells_out, id_name
+from ._convert import CELL, VALUE, Kind, Op, apply, apply_pair, cells_in, cells_out, id_name
 from ._kernel import hierarchy as kh
 from ._kernel import local as kl
 
@@ -72,6 +72,10 @@ def _one_local_ij(anchor: int, cell: int) -> tuple[float, float]:
 
 _CHILD_POS = Op(many=_child_pos, out=VALUE, one=_one_child_pos)
 _LOCAL_IJ = Op(many=_local_ij, out=VALUE, one=_one_local_ij)
+_CHILD_CELL = Op(many=lambda ids, pos, level: _child_cells(ids, np.full(ids.shape[0], pos, np.int64), level),
+                 out=CELL, one=kl.one_child_cell)
+_LOCAL_CELL = Op(many=lambda ids, i, j: _local_cells(ids, np.full(ids.shape[0], i, np.int64), np.full(ids.shape[0], j, np.int64)),
+                 out=CELL, one=kl.one_local_cell)
 
 
 def _ints_in(obj: Any, name: str) -> tuple[np.ndarray, Kind | None]:
@@ -102,7 +106,10 @@ def _ints_in(obj: Any, name: str) -> tuple[np.ndarray, Kind | None]:
     for x in flat.tolist():
         if isinstance(x, bool) or not isinstance(x, (int, np.integer)):
             raise DggsValueError(f"{name} {x!r} must be an integer")
-    return np.array(flat.tolist(), dtype=np.int64), kind
+    try:
+        return np.array(flat.tolist(), dtype=np.int64), kind
+    except OverflowError:
+        raise DggsValueError(f"{name} {max(flat.tolist(), key=abs)!r} is out of the 64-bit integer range") from None
 
 
 def _ids_with_ints(cells: Any, numbers: list[tuple[Any, str]]) -> tuple[np.ndarray, list[np.ndarray], Kind]:
@@ -212,7 +219,14 @@ def child_pos_to_cell(pos: Any, parent: Any, level: int) -> Any:
     ['C000', 'C401']
     """
     level = check_level(level)
+    one, k = _ints_in(pos, "child position")
+    if k is None:  # one position: the parents' container, and a lone parent's compiled entry
+        return apply(_CHILD_CELL, parent, int(one[0]), level)
     ids, (positions,), kind = _ids_with_ints(parent, [(pos, "child position")])
+    return cells_out(_child_cells(ids, positions, level), kind)
+
+
+def _child_cells(ids: np.ndarray, positions: np.ndarray, level: int) -> np.ndarray:
     out = np.empty(ids.shape[0], dtype=np.uint64)
     kl.child_pos_cells(ids.shape[0], positions, ids, level, out)
     if not out.all():
@@ -224,7 +238,7 @@ def child_pos_to_cell(pos: Any, parent: Any, level: int) -> Any:
         raise DggsValueError(
             f"child position {int(positions[n])} is out of range 0..{count - 1} for parent {id_name(ids[n])!r} at level {level}"
         )
-    return cells_out(out, kind)
+    return out
 
 
 def cell_to_local_ij(anchor: Any, cell: Any) -> Any:
@@ -293,7 +307,15 @@ def local_ij_to_cell(anchor: Any, i: Any, j: Any) -> Any:
     >>> local_ij_to_cell("C401", [0, -1], [0, 1])
     ['C401', 'C400']
     """
+    one_i, ki = _ints_in(i, "i")
+    one_j, kj = _ints_in(j, "j")
+    if ki is None and kj is None:  # one pair: the anchors' container, and a lone anchor's compiled entry
+        return apply(_LOCAL_CELL, anchor, int(one_i[0]), int(one_j[0]))
     ids, (ii, jj), kind = _ids_with_ints(anchor, [(i, "i"), (j, "j")])
+    return cells_out(_local_cells(ids, ii, jj), kind)
+
+
+def _local_cells(ids: np.ndarray, ii: np.ndarray, jj: np.ndarray) -> np.ndarray:
     out = np.empty(ids.shape[0], dtype=np.uint64)
     kl.local_cells(ids.shape[0], ids, ii, jj, out)
     if not out.all():
@@ -302,5 +324,5 @@ def local_ij_to_cell(anchor: Any, i: Any, j: Any) -> Any:
             f"(i, j) = ({int(ii[n])}, {int(jj[n])}) names no cell around anchor {id_name(ids[n])!r}: not a cell of the "
             "lattice, or outside the anchor's face and the faces across its edges"
         )
-    return cells_out(out, kind)
+    return out
 

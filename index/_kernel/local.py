@@ -36,6 +36,7 @@ from . import bits
 from .points import encode_point, triangle
 
 __all__ = ["OUT_OF_RANGE", "child_pos", "child_pos_cells", "local_ij", "local_cells", "one_child_pos", "one_local_ij",
+           "one_child_cell", "one_local_cell",
            "UNFOLD_FACE"]
 
 #: Marks a cell that has no coordinates around its anchor (in ``i``).
@@ -108,6 +109,32 @@ def _child_pos_cells(pos, parents, level, out):
 
 
 child_pos_cells = loops(_child_pos_cells)
+
+
+@njit(cache=True, nogil=True)
+def one_child_cell(parent: int, pos: int, level: int) -> np.uint64:
+    """The single-id entry of :func:`child_pos_cells`: the null id for an invalid parent or position."""
+    p = np.uint64(parent)
+    if not bits.is_valid(p):
+        return np.uint64(0)
+    positions = np.full(1, pos, dtype=np.int64)
+    out = np.zeros(1, dtype=np.uint64)
+    _child_pos_cells_one(positions, p, level, out)
+    return out[0]
+
+
+@njit(cache=True, nogil=True)
+def _child_pos_cells_one(pos, parent, level, out) -> None:
+    p = bits.level_of(parent)
+    q = pos[0]
+    if p > level or q < 0 or q >= child_count(p, level):
+        return
+    cell = parent
+    for lv in range(level, p, -1):
+        base = 6 if lv == 1 else 3
+        cell |= np.uint64(q % base + 1) << bits.shift_of(lv)
+        q //= base
+    out[0] = cell
 
 
 # ----------------------------------------------------------------------------
@@ -240,3 +267,12 @@ def _local_cells(anchors, i_in, j_in, out):
 
 
 local_cells = loops(_local_cells)
+
+
+@njit(cache=True, nogil=True)
+def one_local_cell(anchor: int, i: int, j: int) -> np.uint64:
+    """The single-id entry of :func:`local_cells`: the null id for an invalid anchor or a pair naming no cell."""
+    a = np.uint64(anchor)
+    if not bits.is_valid(a):
+        return np.uint64(0)
+    return _one_cell(a, np.int64(i), np.int64(j))
