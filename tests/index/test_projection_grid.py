@@ -250,3 +250,19 @@ def test_ivea_fill_is_the_brute_force_over_every_cell(name):
 def test_fill_projection_checked():
     with pytest.raises(DggsValueError, match="projection 'X'"):
         dggs.polygon_to_cells(shapely.geometry.box(0, 0, 1, 1), 3, projection="X")
+
+
+def test_ivea_threaded_loops_equal_the_serial_ones():
+    from dggs.index._kernel import ivea_points as ki
+
+    rng = np.random.default_rng(3)
+    n = 20_000
+    lat, lng = np.degrees(np.arcsin(rng.uniform(-1, 1, n))), rng.uniform(-180, 180, n)
+    a, b = np.empty(n, np.uint64), np.empty(n, np.uint64)
+    ki.locate.serial(lat, lng, 14, a)
+    ki.locate.threaded(lat, lng, 14, b)
+    assert np.array_equal(a, b)
+    one, two = np.empty((n, 6, 2)), np.empty((n, 6, 2))
+    ki.boundaries.serial(a, 1, one, False)
+    ki.boundaries.threaded(a, 1, two, False)
+    assert np.array_equal(one, two)
