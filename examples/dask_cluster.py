@@ -14,6 +14,7 @@ Needs the optional extra: pip install 'dggs[dask]'.
 from __future__ import annotations
 
 import argparse
+import os
 import tempfile
 
 import numpy as np
@@ -33,6 +34,7 @@ def _random_points(seed: int, n: int = 125_000):
 
 
 def main() -> None:
+    import dask
     import dask.dataframe as dd
     from distributed import Client, LocalCluster
 
@@ -44,24 +46,36 @@ def main() -> None:
     parser.add_argument("--level", type=int, default=12, help="level to bin at (default 12, ~24 km^2)")
     parser.add_argument("--rollup", type=int, default=6, help="coarser level to summarise at (default 6)")
     parser.add_argument("--out", default=None, help="Parquet output folder (default: a temp dir)")
+    parser.add_argument("--partitions", type=int, default=8, help="generated partitions (default 8)")
+    parser.add_argument("--size", type=int, default=125_000, help="points in a generated partition (default 125,000)")
     args = parser.parse_args()
 
-    cluster = None if args.scheduler else LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None)
+    cluster = None if args.scheduler else LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                                          dashboard_address=None)
     with Client(args.scheduler or cluster) as client:
         print("dask dashboard / scheduler:", client.dashboard_link or args.scheduler)
         if args.input:
             reader = dd.read_parquet if args.input.endswith(".parquet") else dd.read_csv
             ddf = reader(args.input)
-        else:  # generated on the workers, 8 partitions of 125,000 points
-            ddf = dd.from_map(_random_points, range(8))
+        else:  # generated on the workers
+            ddf = dd.from_map(_random_points, range(args.partitions), n=args.size)
         ddf = add_cells(ddf, args.level)
-        summary = aggregate(ddf, args.rollup, "value").compute().sort_values("sum", ascending=False)
-        print(summary.head(10).to_string())
+        print("workers (separate processes):", sorted(client.run(os.getpid).values()))
+        summary = aggregate(ddf, args.rollup, "value", stats=("count", "sum")).compute()
+        with dask.config.set(scheduler="synchronous"):  # the same roll-up in this one process
+            alone = aggregate(ddf, args.rollup, "value", stats=("count", "sum")).compute()
+        same = summary.sort_index()["count"].equals(alone.sort_index()["count"]) and np.allclose(
+            summary.sort_index()["sum"], alone.sort_index()["sum"], rtol=1e-12)
+        print(f"roll-up of {int(summary['count'].sum())} points to {len(summary)} cells at level {args.rollup},",
+              "equal to one process" if same else "DIFFERENT from one process")
+        print(summary.sort_values("sum", ascending=False).head(10).to_string())
         out = args.out or tempfile.mkdtemp(prefix="dggs-parquet-")
         to_parquet(ddf, out)
-        print("wrote Parquet partitioned by base cell to", out)
+        print("wrote GeoParquet partitioned by base cell to", out)
     if cluster is not None:
         cluster.close()
+    if not same:
+        raise SystemExit(1)
 
 
 if __name__ == "__main__":
