@@ -84,17 +84,22 @@ def _snap_corners(out: np.ndarray, corner: np.ndarray) -> None:
 
 def _split_pinches(ring: np.ndarray, corner: np.ndarray) -> list[np.ndarray]:
     """The ring cut into simple loops where it passes one corner twice (the set touching itself there)."""
-    rows = np.flatnonzero(corner)
-    key = _corner_keys(ring[rows])
-    order = np.argsort(key, kind="stable")
-    twice = np.flatnonzero(key[order][1:] == key[order][:-1])
-    if twice.size == 0:
-        return [ring]
-    same = np.sort(order[twice[0] : twice[0] + 2])
-    p, q = int(rows[same[0]]), int(rows[same[1]])
-    inner = ring[p:q]
-    outer = np.concatenate([ring[q:], ring[:p]])
-    return _split_pinches(inner, corner[p:q]) + _split_pinches(outer, np.concatenate([corner[q:], corner[:p]]))
+    loops: list[np.ndarray] = []
+    todo = [(ring, corner)]
+    while todo:
+        ring, corner = todo.pop()
+        rows = np.flatnonzero(corner)
+        key = _corner_keys(ring[rows])
+        order = np.argsort(key, kind="stable")
+        twice = np.flatnonzero(key[order][1:] == key[order][:-1])
+        if twice.size == 0:
+            loops.append(ring)
+            continue
+        same = np.sort(order[twice[0] : twice[0] + 2])
+        p, q = int(rows[same[0]]), int(rows[same[1]])
+        todo.append((ring[p:q], corner[p:q]))
+        todo.append((np.concatenate([ring[q:], ring[:p]]), np.concatenate([corner[q:], corner[:p]])))
+    return loops
 
 
 def _steps(ys: np.ndarray, xs: np.ndarray) -> np.ndarray:
@@ -106,6 +111,25 @@ def _steps(ys: np.ndarray, xs: np.ndarray) -> np.ndarray:
         raw = np.roll(xs, -1)[along] - xs[along]
         steps[along] = np.where(ys[along] > 0, -((-raw) % 360.0), raw % 360.0)
     return steps
+
+
+def _shifted_back(raw: np.ndarray, shift: float) -> Any:
+    """Coordinates moved ``shift`` degrees west, each longitude then the ring's own (sorted ``raw``) it rounds to.
+
+    A longitude moved by 360 and back can lose its last bits; a corner two regions share must stay one point.
+    """
+
+    def back(xy: np.ndarray) -> np.ndarray:
+        xy = xy.copy()
+        xy[:, 0] -= shift
+        i = np.clip(np.searchsorted(raw, xy[:, 0]), 1, max(raw.size - 1, 1))
+        lo, hi = raw[i - 1], raw[np.minimum(i, raw.size - 1)]
+        near = np.where(np.abs(xy[:, 0] - lo) <= np.abs(xy[:, 0] - hi), lo, hi)
+        close = np.abs(near - xy[:, 0]) < _SAME_CORNER
+        xy[close, 0] = near[close]
+        return xy
+
+    return back
 
 
 def _regions(ring: np.ndarray) -> tuple[list[Polygon], bool]:
@@ -129,6 +153,9 @@ def _regions(ring: np.ndarray) -> tuple[list[Polygon], bool]:
         if at.size:
             r = int(at[0])
             ys, xs, steps = np.roll(ys, -r), np.roll(xs, -r), np.roll(steps, -r)
+            # from -180 east (or 180 west) the points keep their own longitudes: none is shifted by 360 and back
+            xs = xs.copy()
+            xs[0] = -180.0 if turns > 0 else 180.0
     x = xs[0] + np.concatenate([[0.0], np.cumsum(steps[:-1])])
     x = xs + 360.0 * np.round((x - xs) / 360.0)  # whole turns added to the points as they are: no rounding drift
     if turns:  # the set is north of a ring running east, south of one running west
@@ -147,7 +174,7 @@ def _regions(ring: np.ndarray) -> tuple[list[Polygon], bool]:
         for k in range(int(np.floor((lo + 180.0) / 360.0)), int(np.floor((hi + 180.0) / 360.0)) + 1):
             piece = poly.intersection(box(-180.0 + 360.0 * k, -90.0, 180.0 + 360.0 * k, 90.0))
             if not piece.is_empty:
-                pieces.append(shapely.affinity.translate(piece, xoff=-360.0 * k))
+                pieces.append(piece if k == 0 else shapely.transform(piece, _shifted_back(np.unique(xs), 360.0 * k)))
     out: list[Polygon] = []
     for p in pieces:
         out.extend(g for g in getattr(p, "geoms", [p]) if isinstance(g, Polygon) and g.area > 0.0)

@@ -151,6 +151,27 @@ def test_blobs_with_holes(point, level, k, drop, form):
         check_against_union(_as(cells, form), 0)
 
 
+@settings(max_examples=examples(30), deadline=None)
+@given(
+    point=latlngs(),
+    level=st.integers(3, 7),
+    seed=st.integers(0, 2**32 - 1),
+    density=st.floats(0.3, 0.9),
+    densify=st.sampled_from([0, 2]),
+    form=st.sampled_from(["str", "int"]),
+)
+@example(point=(90.0, 180.0), level=3, seed=1, density=0.5, densify=0, form="str")
+@example(point=(90.0, 0.8), level=4, seed=7, density=0.6, densify=2, form="int")
+@example(point=(-90.0, -121.9), level=5, seed=3, density=0.4, densify=1, form="str")
+@example(point=(10.0, 180.0), level=6, seed=5, density=0.5, densify=0, form="int")
+def test_sparse_sets_touching_at_corners(point, level, seed, density, densify, form):
+    """Random parts of a disk: many cells and holes touching at corners, where the shapes must stay valid."""
+    disk = np.asarray(_disk(*point, level, 5))
+    keep = disk[np.random.default_rng(seed).random(disk.size) < density]
+    if keep.size:
+        check_against_union(_as(keep, form), densify)
+
+
 @pytest.mark.parametrize("lat,lng", SPECIAL[:18])
 @pytest.mark.parametrize("form", ["str", "int"])
 def test_a_cell_less_its_surroundings_is_one_hole(lat, lng, form):
