@@ -21,11 +21,11 @@ import numpy as np
 
 from dggs.errors import InvalidCellError
 
-from ._convert import Kind, cells_in, cells_out
+from ._convert import Kind, cells_in, cells_out, values_out
 from ._convert.kind import SCALAR_INT, SCALAR_STR
 from ._convert.strings import format_int, parse_str, valid_int
 
-__all__ = ["EDGE", "SEP", "edges_in", "edges_out", "to_shadow", "is_edge"]
+__all__ = ["EDGE", "SEP", "CELL", "EDGE_OUT", "VALUE", "apply_edge", "edges_in", "edges_out", "to_shadow", "is_edge"]
 
 #: The sign bit: set in every directed edge id.
 EDGE = 1 << 63
@@ -34,6 +34,8 @@ SEP = "."
 _LOW54 = (1 << 54) - 1
 _L1_SHIFT = 54
 _U_EDGE = np.uint64(EDGE)
+#: What :func:`apply_edge` gives back: cells, edges, or values.
+CELL, EDGE_OUT, VALUE = "cell", "edge", "value"
 
 
 def _str_shadow(s: str) -> str:
@@ -207,3 +209,44 @@ def edges_out(edges: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> 
         return values if trailing else values[0]
     shadows = np.where(edges != 0, edges & ~_U_EDGE, edges)
     return _map(cells_out(shadows, kind, trailing), True)
+
+
+def _lone(obj: Any) -> tuple[int, str]:
+    """(edge id, form) of a plain ``str`` or ``int`` that is a valid edge, else (0, "")."""
+    if type(obj) is str:
+        s = _str_shadow(obj)
+        v = parse_str(s) if s else 0
+        return (v | EDGE, "str") if v else (0, "")
+    if type(obj) is int:
+        v = _int_shadow(obj)
+        return (v | EDGE, "int") if v and valid_int(v) else (0, "")
+    return 0, ""
+
+
+def apply_edge(many: Any, one: Any, edge: Any, out: str) -> Any:
+    """Run ``many`` over edges in any container (``one``, compiled, over a lone valid edge), giving back the same kind.
+
+    ``out`` is :data:`CELL` (one cell per edge), :data:`EDGE_OUT` (one edge per
+    edge) or :data:`VALUE` (one value per edge).  ``one`` takes the edge as a
+    Python int (above 2**63 - 1: a compiled entry of signature ``(uint64)``).
+
+    Raises
+    ------
+    InvalidCellError
+        An edge id is malformed (the message names it and its index).
+    """
+    v, form = _lone(edge)
+    if v:  # the single-id fast path: no containers, no arrays, a compiled entry (an Entry's ``call``)
+        r = one(v)
+        if out == CELL:
+            return format_int(int(r)) if form == "str" else int(r)
+        if out == EDGE_OUT:
+            return _one_edge(int(r), form)
+        return r
+    ids, kind = edges_in(edge)
+    res = many(ids)
+    if out == CELL:
+        return cells_out(res, kind)
+    if out == EDGE_OUT:
+        return edges_out(res, kind)
+    return values_out(res, kind)

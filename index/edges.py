@@ -27,8 +27,8 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelError
 
 from ._checks import check_densify
-from ._convert import cells_in, cells_out, id_name, is_valid_any, pair, values_out
-from ._edge_ids import edges_in, edges_out, to_shadow
+from ._convert import Entry, cells_in, cells_out, id_name, is_valid_any, pair, values_out
+from ._edge_ids import CELL, EDGE_OUT, VALUE, apply_edge, edges_in, edges_out, to_shadow
 from ._kernel import edges as ke
 from ._kernel import hierarchy as kh
 from ._kernel.bits import MAX_LEVEL
@@ -48,6 +48,10 @@ __all__ = [
 #: Chords per edge for lengths (and twice as many), extrapolated: within 1e-8 of the length.
 PIECES = 16
 _UNITS = {"m": 1.0, "km": 1e-3}
+_ONE_ORIGIN = Entry(ke.one_origin, "uint64(uint64)")
+_ONE_DESTINATION = Entry(ke.one_destination, "uint64(uint64)")
+_ONE_REVERSE = Entry(ke.one_reverse, "uint64(uint64)")
+_ONE_LENGTH = Entry(ke.one_length, "UniTuple(float64, 2)(uint64, int64)")
 
 
 def _refuse_level_28(ids: np.ndarray) -> None:
@@ -123,12 +127,16 @@ def origin_to_directed_edges(cell: Any) -> Any:
     return edges_out(out, kind, (3,))
 
 
-def _ends(edge: Any) -> tuple[np.ndarray, np.ndarray, Any]:
-    ids, kind = edges_in(edge)
+def _ends_of(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     origin = np.empty(ids.shape[0], dtype=np.uint64)
     dest = np.empty(ids.shape[0], dtype=np.uint64)
     ke.ends(ids.shape[0], ids, origin, dest)
-    return origin, dest, kind
+    return origin, dest
+
+
+def _ends(edge: Any) -> tuple[np.ndarray, np.ndarray, Any]:
+    ids, kind = edges_in(edge)
+    return (*_ends_of(ids), kind)
 
 
 def directed_edge_to_cells(edge: Any) -> Any:
@@ -166,8 +174,7 @@ def get_directed_edge_origin(edge: Any) -> Any:
     >>> get_directed_edge_origin("C401.1")
     'C401'
     """
-    origin, _, kind = _ends(edge)
-    return cells_out(origin, kind)
+    return apply_edge(lambda ids: _ends_of(ids)[0], lambda e: _ONE_ORIGIN.call(e), edge, CELL)
 
 
 def get_directed_edge_destination(edge: Any) -> Any:
@@ -183,8 +190,7 @@ def get_directed_edge_destination(edge: Any) -> Any:
     >>> get_directed_edge_destination("C401.1")
     'C402'
     """
-    _, dest, kind = _ends(edge)
-    return cells_out(dest, kind)
+    return apply_edge(lambda ids: _ends_of(ids)[1], lambda e: _ONE_DESTINATION.call(e), edge, CELL)
 
 
 def reverse_directed_edge(edge: Any) -> Any:
@@ -200,10 +206,13 @@ def reverse_directed_edge(edge: Any) -> Any:
     >>> reverse_directed_edge("C401.1")
     'C402.1'
     """
-    ids, kind = edges_in(edge)
+    return apply_edge(_reverse, lambda e: _ONE_REVERSE.call(e), edge, EDGE_OUT)
+
+
+def _reverse(ids: np.ndarray) -> np.ndarray:
     out = np.empty(ids.shape[0], dtype=np.uint64)
     ke.reverse(ids.shape[0], ids, out)
-    return edges_out(out, kind)
+    return out
 
 
 def is_valid_directed_edge(edge: Any) -> Any:
@@ -284,9 +293,12 @@ def edge_length(edge: Any, unit: str = "m") -> Any:
     """
     if unit not in ("m", "km", "rads"):
         raise DggsValueError(f"unit {unit!r} must be 'm', 'km' or 'rads'")
-    ids, kind = edges_in(edge)
-    metres = np.empty(ids.shape[0])
-    rads = np.empty(ids.shape[0])
-    ke.lengths(ids.shape[0] * PIECES, ids, PIECES, metres, rads)
-    return values_out(rads if unit == "rads" else metres * _UNITS[unit], kind)
+    which, scale = (1, 1.0) if unit == "rads" else (0, _UNITS[unit])
+
+    def many(ids: np.ndarray) -> np.ndarray:
+        lengths = (np.empty(ids.shape[0]), np.empty(ids.shape[0]))
+        ke.lengths(ids.shape[0] * PIECES, ids, PIECES, *lengths)
+        return lengths[which] * scale
+
+    return apply_edge(many, lambda e: _ONE_LENGTH.call(e, PIECES)[which] * scale, edge, VALUE)
 

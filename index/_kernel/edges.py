@@ -27,7 +27,8 @@ from . import bits
 from .grid import _neighbour
 from .points import corners
 
-__all__ = ["EDGE_BIT", "edge_of", "origin_edges", "pair_edges", "ends", "reverse", "lengths", "boundaries"]
+__all__ = ["EDGE_BIT", "edge_of", "origin_edges", "pair_edges", "ends", "reverse", "lengths", "boundaries", "one_origin",
+           "one_destination", "one_reverse", "one_length"]
 
 EDGE_BIT = np.uint64(1 << 63)
 _NOT_EDGE = ~EDGE_BIT
@@ -89,6 +90,19 @@ def _ends(edges, origin, destination):
 ends = loops(_ends)
 
 
+@njit(cache=True, nogil=True)
+def one_origin(edge: np.uint64) -> np.uint64:
+    """The origin of one valid edge."""
+    return split(edge)[0]
+
+
+@njit(cache=True, nogil=True)
+def one_destination(edge: np.uint64) -> np.uint64:
+    """The destination of one valid edge."""
+    o, level, d = split(edge)
+    return _neighbour(o, level, d)
+
+
 def _reverse(edges, out):
     """``out[i]``: the edge back from the destination of ``edges[i]`` to its origin."""
     for i in prange(edges.shape[0]):
@@ -102,6 +116,17 @@ def _reverse(edges, out):
 
 
 reverse = loops(_reverse)
+
+
+@njit(cache=True, nogil=True)
+def one_reverse(edge: np.uint64) -> np.uint64:
+    """The edge back, of one valid edge."""
+    o, level, d = split(edge)
+    dest = _neighbour(o, level, d)
+    for k in range(3):
+        if _neighbour(dest, level, k) == o:
+            return edge_of(dest, k)
+    return np.uint64(0)
 
 
 @njit(cache=True, nogil=True)
@@ -148,6 +173,7 @@ def _lengths(edges, pieces, metres, rads):
 
 
 lengths = loops(_lengths)
+one_length = _one_length
 
 
 @njit(cache=True, nogil=True)
