@@ -124,3 +124,14 @@ def test_xdggs_geoarrow_of_no_cells_is_an_empty_polygon_array():
 
     arr = Split26Info(level=3).cell_boundaries(np.array([], dtype=np.uint64), backend="geoarrow")
     assert len(arr) == 0 and arr.field.metadata[b"ARROW:extension:name"] == b"geoarrow.polygon"
+
+
+def test_large_binary_wkb_gives_the_same_arrays():
+    # past 2 GiB the WKB column is large_binary; geoarrow-c reads it alike
+    from dggs.index._shapes import wkb_to_geoarrow
+
+    blobs = cells_to_geoarrow(SPECIAL, 2)
+    assert wkb_to_geoarrow(blobs.cast(pa.large_binary()), True).equals(wkb_to_geoarrow(blobs, True))
+    assert wkb_to_geoarrow(blobs, True, interleaved=True, name="").type == pa.list_(
+        pa.field("", pa.list_(pa.field("", pa.list_(pa.field("", pa.list_(pa.field("item", pa.float64(), nullable=False), 2))))))
+    )
