@@ -18,8 +18,9 @@ from dggs.errors import CoordinateError, DggsValueError
 from ._checks import check_level, check_max_cells, check_size
 from ._convert import cells_out_flat, id_name, ids_array, pair
 from ._corners import fans
+from ._kernel import line_trace as kline
 from ._kernel import paths as kpaths
-from .grid import are_neighbor_cells, grid_distance
+from .grid import grid_distance
 from .measure import level_table
 from .points import latlng_to_cell
 
@@ -130,10 +131,15 @@ def _parts(line: Any) -> list[np.ndarray]:
     return [xy] if xy.shape[0] else []
 
 
-#: Samples per short cell edge along each geodesic, as :func:`dggs.geodesic_to_cells` (gaps are bisected).
-_SAMPLES_PER_EDGE = 4
+#: Sample spacing along each geodesic, in short cell edges (gaps between samples are bisected; see
+#: benchmarks/bench_paths.py for the choice: a fraction of an edge wastes samples inside cells, a whole edge
+#: bisects more gaps).
+_STEP_EDGES = 0.5
 #: Bisection stops at this length (metres): cells that still meet only at a corner are joined around it.
 _CORNER_M = 1e-4
+#: Largest distance (metres) between an interpolated point and the geodesic's point at the same distance:
+#: 1 micrometre, or 1e-6 of the level's short edge where that is smaller (level 28), never below 1e-8 m.
+_TOL_M, _TOL_EDGE, _TOL_FLOOR = 1e-6, 1e-6, 1e-8
 #: Cells per short edge of length, plus cells per segment, in the size bound checked before sampling
 #: (:data:`dggs.index.lines._CELLS_PER_EDGE`'s reasoning: a segment crosses at most 1.98 cells a short edge).
 _CELLS_PER_EDGE, _CELLS_EXTRA = 3.0, 24
@@ -152,61 +158,41 @@ def _short_edge(level: int) -> float:
     return edge
 
 
-def _at(lat: np.ndarray, lng: np.ndarray, az: np.ndarray, s: np.ndarray, level: int) -> np.ndarray:
-    """The cells at distances ``s`` along the geodesics from (lat, lng) with azimuths ``az``."""
-    x, y, _ = _geod().fwd(lng, lat, az, s)
-    ids: np.ndarray = latlng_to_cell(np.asarray(y, dtype=np.float64), np.asarray(x, dtype=np.float64), level, as_int=True)
-    return ids
+def _tolerance(level: int) -> float:
+    """The bound (metres) on an interpolated point's distance from the geodesic at ``level``."""
+    return max(_TOL_FLOOR, min(_TOL_M, _TOL_EDGE * _short_edge(level)))
 
 
-def _bisect(gaps: list[tuple[int, float, int, float, int]], lat: np.ndarray, lng: np.ndarray, az: np.ndarray,
-            level: int) -> list[list[int]]:
-    """The cells strictly between each gap's ends, in order: all gaps bisected together, a round at a time.
+def _anchors(xy: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Exact geodesic points along a polyline of distinct consecutive points, at most a span apart.
 
-    A gap is (segment, distance of its last sample in cell a, a, distance of
-    the first sample in cell b, b).  Each round samples every open stretch's
-    midpoint; a stretch closes when its end cells share an edge, or, shorter
-    than :data:`_CORNER_M`, the shorter way around the corner they share.
+    Returns (lat, lng, az_out, az_in, span, dist): anchor ``k``'s point, the
+    geodesic's azimuth leaving and arriving there, the length of span ``k``
+    (to anchor ``k + 1``), and each segment's length.  The polyline's
+    points are anchors as given; between them, ``pyproj.Geod.fwd`` gives the
+    points (one call for all segments) and their azimuths.
     """
-    out: list[list[Any]] = [[] for _ in gaps]
-    open_ = [(g, seg, sa, ca, sb, cb, out[g]) for g, (seg, sa, ca, sb, cb) in enumerate(gaps)]
-    while open_:
-        seg = np.array([o[1] for o in open_], dtype=np.int64)
-        sa, sb = np.array([o[2] for o in open_]), np.array([o[4] for o in open_])
-        sm = 0.5 * (sa + sb)
-        cm = _at(lat[seg], lng[seg], az[seg], sm, level)
-        nxt = []
-        for (g, sg, a_s, ca, b_s, cb, slot), m_s, cmid in zip(open_, sm.tolist(), cm.tolist(), strict=True):
-            parts: list[Any] = []
-            for x_s, cx, y_s, cy in ((a_s, ca, m_s, cmid), (m_s, cmid, b_s, cb)):
-                if cx == cy:
-                    continue
-                inner: list[Any] = []
-                parts.append(inner)
-                nxt.append((g, sg, x_s, cx, y_s, cy, inner))
-                if cy != cb:
-                    parts.append(cy)
-            slot.extend(parts)
-        open_ = _close(nxt)
-    return [list(_flat(o)) for o in out]
-
-
-def _close(stretches: list[Any]) -> list[Any]:
-    """The stretches still open: those whose cells share no edge, closing the short ones around their corner."""
-    if not stretches:
-        return []
-    a = np.array([o[3] for o in stretches], dtype=np.uint64)
-    b = np.array([o[5] for o in stretches], dtype=np.uint64)
-    shared = np.asarray(are_neighbor_cells(a, b))
-    still = []
-    for o, ok in zip(stretches, shared.tolist(), strict=True):
-        if ok:
-            continue
-        if o[4] - o[2] < _CORNER_M:
-            o[6].extend(_around(int(o[3]), int(o[5])))
-        else:
-            still.append(o)
-    return still
+    lat0, lng0, lat1, lng1 = xy[:-1, 0], xy[:-1, 1], xy[1:, 0], xy[1:, 1]
+    az12, az21, dist = (np.asarray(v, dtype=np.float64) for v in _geod().inv(lng0, lat0, lng1, lat1))
+    m = np.maximum(np.ceil(dist / kline.span_for(_tolerance(level))).astype(np.int64), 1)  # spans per segment
+    first = np.concatenate([[0], np.cumsum(m)])  # anchor index of each polyline point
+    size = int(first[-1]) + 1
+    lat, lng = np.empty(size), np.empty(size)
+    az_out, az_in = np.empty(size), np.empty(size)
+    lat[first], lng[first] = xy[:, 0], xy[:, 1]
+    az_out[first[:-1]] = az12
+    az_in[first[1:]] = az21 + 180.0  # pyproj gives the back azimuth at the end
+    az_out[-1] = az_in[0] = 0.0  # unused
+    span = np.repeat(dist / m, m)
+    inner = np.flatnonzero(m > 1)
+    if inner.size:
+        seg = np.repeat(inner, m[inner] - 1)
+        j = np.arange(seg.size) - np.repeat(np.cumsum(m[inner] - 1) - (m[inner] - 1), m[inner] - 1) + 1
+        x, y, back = _geod().fwd(lng0[seg], lat0[seg], az12[seg], j * (dist / m)[seg])
+        at = first[seg] + j
+        lat[at], lng[at] = y, x
+        az_out[at] = az_in[at] = np.asarray(back) + 180.0
+    return lat, lng, az_out, az_in, span, dist
 
 
 def _around(a: int, b: int) -> list[int]:
@@ -226,49 +212,36 @@ def _around(a: int, b: int) -> list[int]:
     return best
 
 
-def _flat(items: list[Any]) -> Any:
-    for x in items:
-        if isinstance(x, list):
-            yield from _flat(x)
-        else:
-            yield x
-
-
 def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
-    """The cells along one polyline of (lat, lng) points (at least two), all segments sampled at once."""
-    lat0, lng0, lat1, lng1 = xy[:-1, 0], xy[:-1, 1], xy[1:, 0], xy[1:, 1]
+    """The cells along one polyline of (lat, lng) points (at least two), traced by the compiled kernel."""
     bad = ~(np.isfinite(xy).all(axis=1) & (np.abs(xy[:, 0]) <= 90.0))
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
         raise CoordinateError(f"point ({float(xy[i, 0])!r}, {float(xy[i, 1])!r}) at index {i} is not a finite latitude in -90..90 and a finite longitude")
-    az, _, dist = _geod().inv(lng0, lat0, lng1, lat1)
-    az, dist = np.asarray(az, dtype=np.float64), np.asarray(dist, dtype=np.float64)
+    same = np.all(xy[1:] == xy[:-1], axis=1)
+    xy = np.ascontiguousarray(xy[np.concatenate([[True], ~same])])  # repeated points add no segment
+    if xy.shape[0] == 1:
+        return np.asarray(latlng_to_cell(xy[:, 0], xy[:, 1], level, as_int=True), dtype=np.uint64).reshape(-1)
+    lat, lng, az_out, az_in, span, dist = _anchors(xy, level)
     edge = _short_edge(level)
-    check_size(int(np.ceil(_CELLS_PER_EDGE * dist / edge).sum()) + _CELLS_EXTRA * dist.size, max_cells, "line_to_cells")
-    n = np.maximum(np.ceil(dist * _SAMPLES_PER_EDGE / edge).astype(np.int64), 1)  # steps per segment
-    seg = np.repeat(np.arange(dist.size), n + 1)
-    k = np.arange(seg.size) - np.repeat(np.cumsum(n + 1) - (n + 1), n + 1)
-    s = k * (dist / n)[seg]
-    ends = np.cumsum(n + 1) - 1
-    s[ends] = dist
-    cells = _at(lat0[seg], lng0[seg], az[seg], s, level)
-    cells[ends - n] = latlng_to_cell(lat0, lng0, level, as_int=True)  # the points themselves
-    cells[ends] = latlng_to_cell(lat1, lng1, level, as_int=True)
-    keep = np.ones(cells.size, dtype=bool)
-    keep[1:] = cells[1:] != cells[:-1]
-    first = np.flatnonzero(keep)  # the first sample of each run of one cell
-    run = cells[first]
-    gaps = np.flatnonzero(~np.asarray(are_neighbor_cells(run[:-1], run[1:]))) if run.size > 1 else np.zeros(0, np.int64)
-    if gaps.size == 0:
-        return run
-    j = first[gaps + 1]  # the stretch is between samples j - 1 and j (one segment: joins repeat a point)
-    fill = _bisect([(int(seg[i]), float(s[i - 1]), int(cells[i - 1]), float(s[i]), int(cells[i])) for i in j.tolist()],
-                   lat0, lng0, az, level)
+    bound = int(np.ceil(_CELLS_PER_EDGE * dist / edge).sum()) + _CELLS_EXTRA * dist.size
+    check_size(bound, max_cells, "line_to_cells")
+    cap = bound + 16
+    while True:
+        out = np.empty(cap, dtype=np.uint64)
+        fix = np.empty(max(16, cap // 8), dtype=np.int64)
+        n, nfix = kline.trace(lat, lng, az_out, az_in, span, level, _STEP_EDGES * edge, _CORNER_M, out, fix)
+        if n >= 0:
+            break
+        cap *= 2  # pragma: no cover - the bound holds
+    out = out[:n]
+    if nfix == 0:
+        return out
     pieces, prev = [], 0
-    for g, f in zip(gaps.tolist(), fill, strict=True):
-        pieces += [run[prev : g + 1], np.array(f, dtype=np.uint64)]
-        prev = g + 1
-    pieces.append(run[prev:])
+    for i in fix[:nfix].tolist():
+        pieces += [out[prev:i], np.array(_around(int(out[i - 1]), int(out[i])), dtype=np.uint64)]
+        prev = i
+    pieces.append(out[prev:])
     return np.concatenate(pieces)
 
 

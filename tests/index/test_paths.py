@@ -256,6 +256,73 @@ def test_line_orders_and_parts():
     assert all(x != y for x, y in zip(again[:-1], again[1:], strict=True))
 
 
+def interpolated_vs_pyproj(lat: float, lng: float, az: float, dist: float, level: int, fractions: list[float]) -> float:
+    """The largest distance (metres) between the tracer's interpolated points and pyproj's at the same distance."""
+    from dggs.index import paths
+    from dggs.index._kernel import line_trace
+
+    lng1, lat1, _ = GEOD.fwd(lng, lat, az, dist)
+    xy = np.array([(lat, lng), (lat1, lng1)])
+    alat, alng, az_out, az_in, span, total = paths._anchors(xy, level)
+    spans = span.size
+    k = np.repeat(np.arange(spans), len(fractions))
+    t = np.tile(np.array(fractions), spans)
+    got_lat, got_lng = np.empty(k.size), np.empty(k.size)
+    line_trace.interpolate(alat, alng, az_out, az_in, span, k, t, got_lat, got_lng)
+    # pyproj's geodesic points at the same distances from the start (its own fwd, not the anchors)
+    u = (k + t) * (total[0] / spans)
+    ref_lng, ref_lat, _ = GEOD.fwd(np.full(k.size, lng), np.full(k.size, lat), np.full(k.size, az), u)
+    _, _, d = GEOD.inv(got_lng, got_lat, ref_lng, ref_lat)
+    return float(np.max(d))
+
+
+@settings(max_examples=examples(60))
+@given(st.sampled_from(SPECIAL), st.floats(-2, 2), st.floats(-2, 2), st.floats(-180, 180), st.floats(0, 7.3),
+       st.sampled_from([0, 9, 13, 20, 28]), st.lists(st.floats(0, 1), min_size=1, max_size=6))
+@example((90.0, 0.0), 0.0, 0.0, 180.0, 5.0, 13, [0.25, 0.5])  # from the North Pole
+@example((89.9, 0.0), 0.0, 0.0, 0.0, 5.3, 13, [0.0, 0.5, 1.0])  # over it (an anchor at the pole)
+@example((0.0, 179.9), 0.0, 0.0, 90.0, 6.0, 13, [0.3, 0.7])  # across the antimeridian
+@example((-60.0, -179.99), 0.0, 0.0, -80.0, 7.3, 28, [0.5])  # 20,000 km at level 28's 0.8 um bound
+def test_interpolated_points_within_bound(p, dlat, dlng, az, log_dist, level, fractions):
+    """Every point the tracer interpolates between anchors is within the stated bound of pyproj's geodesic point."""
+    from dggs.index import paths
+
+    lat, lng = max(-90.0, min(90.0, p[0] + dlat)), p[1] + dlng
+    dist = min(10.0**log_dist, 19_900_000.0)
+    err = interpolated_vs_pyproj(lat, lng, az, dist, level, fractions)
+    assert err <= paths._tolerance(level), err
+
+
+def test_interpolation_check_can_fail():
+    """The oracle sees interpolation errors: one span 16x longer than the bound allows errs beyond it."""
+    from dggs.index import paths
+    from dggs.index._kernel import line_trace
+
+    tol = paths._tolerance(13)
+    lat, lng, az, dist = 10.0, 20.0, 45.0, 16 * line_trace.span_for(tol)
+    lng1, lat1, _ = GEOD.fwd(lng, lat, az, dist)
+    alat, alng, az_out, az_in, span, _ = paths._anchors(np.array([(lat, lng), (lat1, lng1)]), 13)
+    assert span.size == 16 and interpolated_vs_pyproj(lat, lng, az, dist, 13, [0.5]) <= tol
+    ends = [0, -1]  # the same geodesic as a single span
+    got_lat, got_lng = np.empty(1), np.empty(1)
+    line_trace.interpolate(alat[ends], alng[ends], az_out[ends], az_in[ends], np.array([dist, 0.0]),
+                           np.zeros(1, dtype=np.int64), np.array([0.5]), got_lat, got_lng)
+    ref_lng, ref_lat, _ = GEOD.fwd(lng, lat, az, dist / 2)
+    _, _, d = GEOD.inv(got_lng[0], got_lat[0], ref_lng, ref_lat)
+    assert d > tol, d
+
+
+def test_anchor_cells_are_located_as_given():
+    """Points exactly at anchors (the polyline's own points) keep latlng_to_cell's ids, in str and int forms."""
+    pts = np.array([(0.0, 180.0), (0.0, 179.9), (89.9, 179.9), (90.0, 0.0), (58.0, 11.0)])
+    for level in (5, 13, 20):
+        cells = dggs.line_to_cells(pts, level)
+        ints = dggs.line_to_cells(pts, level, as_int=True)
+        for lat, lng in pts:
+            assert dggs.latlng_to_cell(lat, lng, level) in cells.tolist()
+            assert dggs.latlng_to_cell(lat, lng, level, as_int=True) in ints.tolist()
+
+
 def test_line_errors():
     with pytest.raises(DggsValueError, match="Polygon"):
         dggs.line_to_cells(Polygon([(0, 0), (1, 0), (1, 1)]), 3)
