@@ -7,9 +7,9 @@ misspelt one.  :func:`json_response` serialises a model without the members the 
 explicit ``None``, like a level-0 zone's ``parent``, stays ``null``).
 
 Measured (``benchmarks/bench_handwritten_server.py``): building a document as a model and serialising it
-with ``model_dump_json`` costs at most about 30 µs more than a dict and ``json.dumps`` (the zone information
-is faster, pydantic's serialiser writing its geometry's floats quicker), against a request's 57 ms median under
-load (bench_serve.py): nil in practice, so the documents are models.
+with ``model_dump_json`` cost 9-30 µs more than a dict and ``json.dumps`` in one run and at most 160 µs in
+another (the zone information is faster in both, pydantic's serialiser writing its geometry's floats quicker),
+against a request's 57 ms median under load (bench_serve.py): 0.3 % at worst, so the documents are models.
 
 Examples
 --------

@@ -144,9 +144,9 @@ MEDIA_TYPES = {
 
 # Written by hand on purpose (issue 20, item 6): benchmarks/bench_handwritten_server.py times 100,000
 # negotiations of each of 14 realistic Accept headers (Chrome, Firefox, */*, JSON, GeoJSON and binary clients,
-# none) for the root's and the zone lists' formats: 8.3 µs a negotiation here on average, python-mimeparse's
-# best_match 38 µs (4.6x) and werkzeug's MIMEAccept.best_match 96 µs (11.6x), each wrapped to give the same
-# answer.  Neither library is as fast, and python-mimeparse also answers differently: among equal weights it
+# none) for the root's and the zone lists' formats: 8.3-8.6 µs a negotiation here on average (two runs),
+# python-mimeparse's best_match 33-38 µs (about 4x) and werkzeug's MIMEAccept.best_match 74-96 µs (9-12x),
+# each wrapped to give the same answer.  Neither library is as fast, and python-mimeparse also answers differently: among equal weights it
 # takes the *last* offered type, so */* (curl, fetch) would get HTML at / and the binary zone list at /zones.
 def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "geojson")) -> str:
     """Pick one of ``formats``: ``f`` if given, else the best match of the Accept header.
