@@ -25,7 +25,7 @@ from ._convert import Kind, cells_in, cells_out, values_out
 from ._convert.kind import SCALAR_INT, SCALAR_STR
 from ._convert.strings import format_int, parse_str, valid_int
 
-__all__ = ["EDGE", "SEP", "CELL", "EDGE_OUT", "VALUE", "apply_edge", "edges_in", "edges_out", "to_shadow", "is_edge"]
+__all__ = ["EDGE", "SEP", "CELL", "CELL_PAIR", "EDGE_OUT", "VALUE", "apply_edge", "edges_in", "edges_out", "to_shadow", "is_edge"]
 
 #: The sign bit: set in every directed edge id.
 EDGE = 1 << 63
@@ -35,7 +35,7 @@ _LOW54 = (1 << 54) - 1
 _L1_SHIFT = 54
 _U_EDGE = np.uint64(EDGE)
 #: What :func:`apply_edge` gives back: cells, edges, or values.
-CELL, EDGE_OUT, VALUE = "cell", "edge", "value"
+CELL, EDGE_OUT, VALUE, CELL_PAIR = "cell", "edge", "value", "cell pair"
 
 
 def _str_shadow(s: str) -> str:
@@ -226,8 +226,9 @@ def _lone(obj: Any) -> tuple[int, str]:
 def apply_edge(many: Any, one: Any, edge: Any, out: str) -> Any:
     """Run ``many`` over edges in any container (``one``, compiled, over a lone valid edge), giving back the same kind.
 
-    ``out`` is :data:`CELL` (one cell per edge), :data:`EDGE_OUT` (one edge per
-    edge) or :data:`VALUE` (one value per edge).  ``one`` takes the edge as a
+    ``out`` is :data:`CELL` (one cell per edge), :data:`CELL_PAIR` (two: a list
+    for one edge, rows for containers), :data:`EDGE_OUT` (one edge per edge) or
+    :data:`VALUE` (one value per edge).  ``one`` takes the edge as a
     Python int (above 2**63 - 1: a compiled entry of signature ``(uint64)``).
 
     Raises
@@ -242,11 +243,15 @@ def apply_edge(many: Any, one: Any, edge: Any, out: str) -> Any:
             return format_int(int(r)) if form == "str" else int(r)
         if out == EDGE_OUT:
             return _one_edge(int(r), form)
+        if out == CELL_PAIR:
+            return [format_int(int(c)) for c in r] if form == "str" else [int(c) for c in r]
         return r
     ids, kind = edges_in(edge)
     res = many(ids)
     if out == CELL:
         return cells_out(res, kind)
+    if out == CELL_PAIR:
+        return cells_out(res, kind, (2,))
     if out == EDGE_OUT:
         return edges_out(res, kind)
     return values_out(res, kind)

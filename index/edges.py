@@ -27,8 +27,8 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelError
 
 from ._checks import check_densify
-from ._convert import Entry, cells_in, cells_out, id_name, is_valid_any, pair, values_out
-from ._edge_ids import CELL, EDGE_OUT, VALUE, apply_edge, edges_in, edges_out, to_shadow
+from ._convert import Entry, cells_in, id_name, is_valid_any, pair, values_out
+from ._edge_ids import CELL, CELL_PAIR, EDGE_OUT, VALUE, apply_edge, edges_in, edges_out, to_shadow
 from ._kernel import edges as ke
 from ._kernel import hierarchy as kh
 from ._kernel.bits import MAX_LEVEL
@@ -50,6 +50,7 @@ PIECES = 16
 _UNITS = {"m": 1.0, "km": 1e-3}
 _ONE_ORIGIN = Entry(ke.one_origin, "uint64(uint64)")
 _ONE_DESTINATION = Entry(ke.one_destination, "uint64(uint64)")
+_ONE_ENDS = Entry(ke.one_ends, "UniTuple(uint64, 2)(uint64)")
 _ONE_REVERSE = Entry(ke.one_reverse, "uint64(uint64)")
 _ONE_LENGTH = Entry(ke.one_length, "UniTuple(float64, 2)(uint64, int64)")
 
@@ -134,11 +135,6 @@ def _ends_of(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return origin, dest
 
 
-def _ends(edge: Any) -> tuple[np.ndarray, np.ndarray, Any]:
-    ids, kind = edges_in(edge)
-    return (*_ends_of(ids), kind)
-
-
 def directed_edge_to_cells(edge: Any) -> Any:
     """The origin and destination of each directed edge.
 
@@ -157,8 +153,7 @@ def directed_edge_to_cells(edge: Any) -> Any:
     >>> directed_edge_to_cells("C401.1")
     ['C401', 'C402']
     """
-    origin, dest, kind = _ends(edge)
-    return cells_out(np.stack([origin, dest], axis=1), kind, (2,))
+    return apply_edge(lambda ids: np.stack(_ends_of(ids), axis=1), lambda e: _ONE_ENDS.call(e), edge, CELL_PAIR)
 
 
 def get_directed_edge_origin(edge: Any) -> Any:

@@ -28,7 +28,7 @@ from .grid import _neighbour
 from .points import corners
 
 __all__ = ["EDGE_BIT", "edge_of", "origin_edges", "pair_edges", "ends", "reverse", "lengths", "boundaries", "one_origin",
-           "one_destination", "one_reverse", "one_length"]
+           "one_destination", "one_ends", "one_reverse", "one_length"]
 
 EDGE_BIT = np.uint64(1 << 63)
 _NOT_EDGE = ~EDGE_BIT
@@ -116,6 +116,13 @@ def _reverse(edges, out):
 
 
 reverse = loops(_reverse)
+
+
+@njit(cache=True, nogil=True)
+def one_ends(edge: np.uint64):
+    """(origin, destination) of one valid edge."""
+    o, level, d = split(edge)
+    return o, _neighbour(o, level, d)
 
 
 @njit(cache=True, nogil=True)
