@@ -37,10 +37,12 @@ import math
 import numpy as np
 from numba import njit
 
-from .grid import _neighbour
-from .points import one_point
+from dggs.geometry import kernel as gk
 
-__all__ = ["RHO_MIN", "geodetic", "interpolate", "span_for", "trace"]
+from .grid import _neighbour
+from .points import encode_point, one_point
+
+__all__ = ["RHO_MIN", "cells_at", "geodetic", "interpolate", "span_for", "trace"]
 
 _A = 6378137.0
 _F = 1.0 / 298.257223563
@@ -50,6 +52,9 @@ _EP2 = _E2 / (1.0 - _E2)
 #: The smallest radius of curvature of the WGS84 ellipsoid (metres): the meridian's at the equator, b**2 / a.
 RHO_MIN = _B * _B / _A
 _STACK = 256
+_TO_AUTHALIC = gk.TO_AUTHALIC
+_ISEA_CENTRES = gk.ISEA_CENTRES
+_ISEA_FRAMES = gk.ISEA_FRAMES
 
 
 def span_for(tol: float) -> float:
@@ -104,8 +109,8 @@ def _span(lat, lng, az_out, az_in, span, k):
 
 
 @njit(cache=True, nogil=True)
-def _at(c, t: float):
-    """(lat, lng) of the Hermite curve ``c`` (from :func:`_span`) at ``t`` in 0..1."""
+def _point(c, t: float):
+    """ECEF point of the Hermite curve ``c`` (from :func:`_span`) at ``t`` in 0..1."""
     t2 = t * t
     t3 = t2 * t
     h00 = 2.0 * t3 - 3.0 * t2 + 1.0
@@ -115,7 +120,62 @@ def _at(c, t: float):
     x = h00 * c[0] + h10 * c[3] + h01 * c[6] + h11 * c[9]
     y = h00 * c[1] + h10 * c[4] + h01 * c[7] + h11 * c[10]
     z = h00 * c[2] + h10 * c[5] + h01 * c[8] + h11 * c[11]
+    return x, y, z
+
+
+@njit(cache=True, nogil=True)
+def _at(c, t: float):
+    """(lat, lng) degrees of the Hermite curve ``c`` at ``t`` in 0..1."""
+    x, y, z = _point(c, t)
     return geodetic(x, y, z)
+
+
+@njit(cache=True, nogil=True)
+def _foot(x: float, y: float, z: float):
+    """Sine and cosine of the geodetic latitude and longitude of an ECEF point, without trigonometry.
+
+    :func:`geodetic`'s Bowring rounds on tangents (each normalised by a
+    square root); the longitude's from (x, y) itself (a pole gives 0, 1).
+    """
+    p = math.hypot(x, y)
+    if p == 0.0:
+        return (1.0 if z >= 0.0 else -1.0), 0.0, 0.0, 1.0
+    u, v = _A * z, _B * p  # tan(beta) = u / v
+    sp = cp = 0.0
+    for _ in range(3):
+        r = math.hypot(u, v)
+        sb, cb = u / r, v / r
+        num = z + _EP2 * _B * sb * sb * sb
+        den = p - _E2 * _A * cb * cb * cb
+        r = math.hypot(num, den)
+        sp, cp = num / r, den / r
+        u, v = (1.0 - _F) * sp, cp
+    return sp, cp, y / p, x / p
+
+
+@njit(cache=True, nogil=True)
+def _cell_at(x: float, y: float, z: float, level: int) -> np.uint64:
+    """The cell holding the foot of ECEF point (x, y, z): :func:`dggs.index._kernel.points.one_point` from sines and cosines.
+
+    The authalic shift is :func:`dggs.geometry.kernel.geodetic_to_unit`'s
+    series on ``sin 2 phi`` and ``cos 2 phi``; the longitude's sine and
+    cosine come from (x, y), so no trigonometric function is called.
+    """
+    sp, cp, sl, cl = _foot(x, y, z)
+    s2 = 2.0 * sp * cp
+    two_c2 = 2.0 * ((cp - sp) * (cp + sp))
+    b1 = 0.0
+    b2 = 0.0
+    for i in range(_TO_AUTHALIC.shape[0] - 1, -1, -1):
+        b1, b2 = two_c2 * b1 - b2 + _TO_AUTHALIC[i], b1
+    d = b1 * s2
+    d2 = d * d
+    sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))))
+    cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)))
+    sb = sp * cd + cp * sd
+    cb = cp * cd - sp * sd
+    face, fx, fy = gk.forward_unit(_ISEA_CENTRES, _ISEA_FRAMES, cb * cl, cb * sl, sb)
+    return encode_point(face, fx, fy, level)
 
 
 @njit(cache=True, nogil=True)
@@ -124,6 +184,14 @@ def interpolate(lat, lng, az_out, az_in, span, k, t, out_lat, out_lng) -> None:
     for i in range(k.shape[0]):
         c = _span(lat, lng, az_out, az_in, span, k[i])
         out_lat[i], out_lng[i] = _at(c, t[i])
+
+
+@njit(cache=True, nogil=True)
+def cells_at(lat, lng, level, out) -> None:
+    """``out[i]``: the cell of point ``i`` located as the tracer locates interpolated points (for tests)."""
+    for i in range(lat.shape[0]):
+        x, y, z = ecef(lat[i], lng[i])
+        out[i] = _cell_at(x, y, z, level)
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -168,8 +236,8 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
                 cur = one_point(lat[k + 1], lng[k + 1], level)
             else:
                 t1 = j / m
-                la, lo = _at(c, t1)
-                cur = one_point(la, lo, level)
+                x, y, z = _point(c, t1)
+                cur = _cell_at(x, y, z, level)
             if cur != prev:
                 # bisect (t0, prev) .. (t1, cur), emitting every cell after prev up to cur
                 sa[0], ca[0], sb[0], cb[0] = t0, prev, t1, cur
@@ -180,8 +248,8 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
                     if c0 != c1 and not _adjacent(c0, c1, level):
                         if (x1 - x0) * s >= corner and top + 2 <= _STACK:
                             xm = 0.5 * (x0 + x1)
-                            la, lo = _at(c, xm)
-                            cm = one_point(la, lo, level)
+                            x, y, z = _point(c, xm)
+                            cm = _cell_at(x, y, z, level)
                             sa[top], ca[top], sb[top], cb[top] = xm, cm, x1, c1
                             sa[top + 1], ca[top + 1], sb[top + 1], cb[top + 1] = x0, c0, xm, cm
                             top += 2
