@@ -16,7 +16,8 @@ from dggs.errors import DggsValueError, LevelError, TooManyCellsError
 
 from ._kernel.bits import MAX_LEVEL
 
-__all__ = ["MAX_CELLS", "MAX_POINTS", "K_LIMIT", "check_point_count", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows"]
+__all__ = ["MAX_CELLS", "MAX_POINTS", "K_LIMIT", "check_point_count", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows",
+           "check_projection"]
 
 #: Default limit on the cells one call may return (400 MB of integer ids).
 MAX_CELLS = 50_000_000
@@ -194,3 +195,16 @@ def property_rows(properties: Any, n: int) -> Iterator[dict[str, Any]]:
 def _plain(v: Any) -> Any:
     """Numpy scalars -> Python scalars, for JSON."""
     return v.item() if isinstance(v, np.generic) else v
+
+
+def check_projection(projection: Any) -> str:
+    """``projection`` (a verb's keyword, which :class:`dggs.Grid` passes) as ``"ISEA"`` or ``"IVEA"``.
+
+    Raises
+    ------
+    DggsValueError
+        Any other value (the message names it).
+    """
+    if projection not in ("ISEA", "IVEA"):
+        raise DggsValueError(f"projection {projection!r} is not one of ISEA, IVEA")
+    return str(projection)

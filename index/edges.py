@@ -26,7 +26,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError, LevelError
 
-from ._checks import check_densify
+from ._checks import check_densify, check_projection
 from ._convert import Entry, cells_in, id_name, is_valid_any, pair, values_out
 from ._edge_ids import CELL, CELL_PAIR, EDGE_OUT, VALUE, apply_edge, edges_in, edges_out, to_shadow
 from ._kernel import edges as ke
@@ -221,7 +221,7 @@ def is_valid_directed_edge(edge: Any) -> Any:
     return is_valid_any(to_shadow(edge))
 
 
-def directed_edge_to_boundary(edge: Any, densify: int = 0) -> Any:
+def directed_edge_to_boundary(edge: Any, densify: int = 0, *, projection: str = "ISEA") -> Any:
     """The ends of each directed edge (the origin's corners ``d`` and ``d + 1``) as (lat, lng), ``densify`` between.
 
     Parameters
@@ -230,6 +230,8 @@ def directed_edge_to_boundary(edge: Any, densify: int = 0) -> Any:
         Directed edges of either form.
     densify : int
         Points to add along the (curved) edge; 0 gives its two corners.
+    projection : {"ISEA", "IVEA"}
+        The grid's projection (``dggs.Grid(projection).directed_edge_to_boundary`` passes it; docs/grid.md).
 
     Returns
     -------
@@ -249,13 +251,14 @@ def directed_edge_to_boundary(edge: Any, densify: int = 0) -> Any:
     [(58.3971, -168.75), (31.8324, -78.75)]
     """
     densify = check_densify(densify)
+    kernel = _edge_kernel(check_projection(projection))
     ids, kind = edges_in(edge)
     out = np.empty((ids.shape[0], densify + 2, 2))
-    ke.boundaries(ids.shape[0] * (densify + 1), ids, densify, out)
+    kernel.boundaries(ids.shape[0] * (densify + 1), ids, densify, out)
     return values_out(out, kind, (densify + 2, 2))
 
 
-def edge_length(edge: Any, unit: str = "m") -> Any:
+def edge_length(edge: Any, unit: str = "m", *, projection: str = "ISEA") -> Any:
     """The length of each directed edge's true curve: on WGS84 (``"m"``, ``"km"``) or on the unit authalic sphere (``"rads"``).
 
     The edge is a straight segment on its icosahedron face, a curve on the
@@ -269,6 +272,8 @@ def edge_length(edge: Any, unit: str = "m") -> Any:
         Directed edges of either form.
     unit : {"m", "km", "rads"}
         Metres or kilometres on the ellipsoid, or radians on the authalic sphere.
+    projection : {"ISEA", "IVEA"}
+        The grid's projection (``dggs.Grid(projection).edge_length`` passes it; docs/grid.md).
 
     Returns
     -------
@@ -289,11 +294,22 @@ def edge_length(edge: Any, unit: str = "m") -> Any:
     if unit not in ("m", "km", "rads"):
         raise DggsValueError(f"unit {unit!r} must be 'm', 'km' or 'rads'")
     which, scale = (1, 1.0) if unit == "rads" else (0, _UNITS[unit])
+    kernel = _edge_kernel(check_projection(projection))
+    one = _ONE_LENGTH.call if kernel is ke else lambda e, pieces: kernel.one_length(np.uint64(e), pieces)
 
     def many(ids: np.ndarray) -> np.ndarray:
         lengths = (np.empty(ids.shape[0]), np.empty(ids.shape[0]))
-        ke.lengths(ids.shape[0] * PIECES, ids, PIECES, *lengths)
+        kernel.lengths(ids.shape[0] * PIECES, ids, PIECES, *lengths)
         return lengths[which] * scale
 
-    return apply_edge(many, lambda e: _ONE_LENGTH.call(e, PIECES)[which] * scale, edge, VALUE)
+    return apply_edge(many, lambda e: one(e, PIECES)[which] * scale, edge, VALUE)
+
+
+def _edge_kernel(projection: str) -> Any:
+    """The compiled edge curves of a projection: :mod:`._kernel.edges`, or its IVEA rebuild (loaded on first use)."""
+    if projection == "ISEA":
+        return ke
+    from ._kernel import ivea_edges
+
+    return ivea_edges
 
