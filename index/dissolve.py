@@ -26,7 +26,7 @@ import shapely
 from shapely.geometry import MultiPolygon, Polygon, box
 from shapely.geometry.polygon import orient
 
-from ._checks import check_densify, check_size
+from ._checks import check_densify, check_projection, check_size
 from ._convert import cells_in
 from ._densify import needed_densify
 from ._kernel import dissolve as kd
@@ -213,7 +213,7 @@ def _even_odd(plain: list[Polygon], polar: list[Polygon], inside: tuple[float, f
     return out[0] if len(out) == 1 else MultiPolygon(out)
 
 
-def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | MultiPolygon:
+def cells_to_polygons(cells: Any, densify: int | None = None, *, projection: str = "ISEA") -> Polygon | MultiPolygon:
     """The outline of a set of cells: one shapely (Multi)Polygon in (lng, lat), with holes.
 
     Edges shared by two cells of the set cancel by their ids (never by
@@ -233,6 +233,9 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
         Points added along each edge of the outline.  By default each edge
         gets the points its cell gets from :func:`dggs.cell_to_polygon`
         (enough that the cell's geodesic area is within 1e-6 of the truth).
+    projection : {"ISEA", "IVEA"}
+        The grid's projection (``dggs.Grid(projection).cells_to_polygons`` passes it): which edges make the
+        outline is the same on both, the points along them are the projection's (docs/grid.md).
 
     Returns
     -------
@@ -269,6 +272,10 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
     """
     ids, _ = cells_in(cells)
     step = None if densify is None else check_densify(densify) + 1
+    ivea = check_projection(projection) == "IVEA"
+    if ivea:  # the same outline, drawn through IVEA's inverse (loaded on first use)
+        from . import _ivea_shapes
+        from ._kernel import ivea_edges, ivea_points
     ids = np.unique(ids)
     if ids.size == 0:
         return MultiPolygon()
@@ -282,13 +289,13 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
     cell, col = ecell[order], ecol[order]
     if step is None:
         uniq, inv = np.unique(cell, return_inverse=True)
-        steps = (needed_densify(uniq) + 1)[inv].astype(np.int64)
+        steps = (needed_densify(uniq, rings=ivea_points.boundaries if ivea else None) + 1)[inv].astype(np.int64)
     else:
         steps = np.full(cell.shape[0], step, dtype=np.int64)
     out = np.empty((kd.ring_point_bound(steps), 2))
     corner = np.zeros(out.shape[0], dtype=np.bool_)
     ends = np.empty(starts.shape[0] - 1, dtype=np.int64)
-    kd.ring_points(cell, col, steps, starts, out, corner, ends)
+    (ivea_edges.ring_points if ivea else kd.ring_points)(cell, col, steps, starts, out, corner, ends)
     _snap_corners(out, corner)
     plain: list[Polygon] = []
     polar: list[Polygon] = []
@@ -300,5 +307,5 @@ def cells_to_polygons(cells: Any, densify: int | None = None) -> Polygon | Multi
         begin = end
     # a point inside the set: inside the first outline cell's polygon drawn as the outline is (its edges on the
     # outline are the outline's, the others inside the set), not its centre, which a coarse drawing may leave out
-    inside = geometries(cell[:1], int(steps[0]) - 1)[0].representative_point()
+    inside = (_ivea_shapes.geometries if ivea else geometries)(cell[:1], int(steps[0]) - 1)[0].representative_point()
     return _even_odd(plain, polar, (inside.x, inside.y))
