@@ -48,6 +48,7 @@ class Connection:
 
     def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float) -> None:
         self.path, self.readonly, self.timeout = path, readonly, timeout
+        self.projection = "ISEA"  # the grid of the cells: set by CellStore from meta (storage/projection.py)
         if path != ":memory:":
             file = Path(path)
             if file.is_dir():

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 import dggs
+from dggs.errors import DggsValueError
 
 from .crs import transform_points
 from .readers import RawBatch
@@ -279,12 +280,15 @@ def prepare(
     level: int,
     types: Mapping[str, str],
     transformer: Any,
+    locate: Any = None,
 ) -> Prepared:
     """Convert and check one batch; compute the cells of its good rows.
 
     Returns the rows to insert (cell, lat, lng, row, [part,] then value
-    columns in ``types`` order) and the rejects.
+    columns in ``types`` order) and the rejects.  ``locate`` bins the points
+    (the store's ``Grid(projection).latlng_to_cell``; default ISEA's).
     """
+    locate = dggs.latlng_to_cell if locate is None else locate
     n = len(batch)
     bad: _Bad = dict(batch.bad)
     lat_bad: _Bad = {}
@@ -311,13 +315,16 @@ def prepare(
     keep = np.flatnonzero(good)
     all_good = len(keep) == n
     known = np.asarray(batch.cells, dtype=object) if batch.cells is not None else None
+    if known is not None and locate is not dggs.latlng_to_cell and (known != "").any():
+        raise DggsValueError("polygon features are binned on ISEA only; a store binned on another projection "
+                             "takes points (ingest the polygons' points, or use an ISEA store)")
     if all_good and known is None:  # the common case: every row good, no cell given
-        cells: Any = dggs.latlng_to_cell(lat, lng, level) if n else np.empty(0, dtype=object)
+        cells: Any = locate(lat, lng, level) if n else np.empty(0, dtype=object)
     else:
         cells = np.empty(n, dtype=object)
         todo = keep if known is None else keep[known[keep] == ""]
         if len(todo):
-            cells[todo] = dggs.latlng_to_cell(lat[todo], lng[todo], level)
+            cells[todo] = locate(lat[todo], lng[todo], level)
         if known is not None:
             given = keep[known[keep] != ""]
             cells[given] = known[given]

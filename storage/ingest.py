@@ -32,6 +32,7 @@ from .crs import make_transformer
 from .errors import BadRowError, RejectedRowsWarning
 from .producer import Producer
 from .progress import RowsBar
+from .projection import grid_locate
 from .readers import RawBatch
 from .rollup_keep import add_partials, check_levels, kept_levels
 from .schema import add_columns, column_types, now, quote, sql_type
@@ -225,7 +226,7 @@ def run_ingest(
     known = column_types(conn)  # shared with the reader, which may parse faster once typed
     work = Producer(
         batches(source["rows_done"], known), level, known, declared, transformer, threaded, name,
-        options.batch_size, rollups,
+        options.batch_size, rollups, grid_locate(store.projection),
     )
     try:
         for batch, prepared, types, new in work:

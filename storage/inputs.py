@@ -19,6 +19,7 @@ from . import prechecks, readers_arrays, readers_csv, readers_geojson, readers_v
 from .connection import Connection
 from .crs import make_transformer
 from .ingest import IngestOptions, IngestResult, run_ingest
+from .projection import grid_locate
 from .readers import RawBatch
 from .sources import file_info, find_earlier_version
 
@@ -236,7 +237,8 @@ def ingest_points(
         # In cell order when the coordinates are numbers, so that the rows go straight into the clustered
         # table in key order (no pending table, no sort in SQLite); computed after the source is known
         # to be incomplete, the same way on a resume.
-        order = readers_arrays.cell_order(lat_a, lng_a, level, make_transformer(options.crs)) if ordered else None
+        locate = grid_locate(store.projection)
+        order = readers_arrays.cell_order(lat_a, lng_a, level, make_transformer(options.crs), locate) if ordered else None
         return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order)
 
     return run_ingest(

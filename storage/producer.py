@@ -41,11 +41,12 @@ class Producer:
         name: str = "input",
         batch_size: int = 10_000,
         rollups: tuple[int, ...] = (),
+        locate: Any = None,
     ) -> None:
         self._name = name
         self._batches = batches
         self._threaded = threaded
-        self._args = (level, transformer)
+        self._args = (level, transformer, locate)  # locate: the store's grid's latlng_to_cell
         self._rollups = rollups  # kept roll-up levels: each batch's partials are computed here too
         self._types = existing  # the same dict the reader sees
         self._declared = declared
@@ -65,12 +66,12 @@ class Producer:
         return False
 
     def _prepared(self) -> Iterator[tuple[RawBatch, Prepared, dict[str, str], dict[str, str]]]:
-        level, transformer = self._args
+        level, transformer, locate = self._args
         for batch in self._batches:
             new = value_types(batch, self._types, self._declared)
             self._types.update(new)
             types = {name: self._types[name] for name in batch.values}
-            prepared = prepare(batch, level, types, transformer)
+            prepared = prepare(batch, level, types, transformer, locate)
             prepared.partials = batch_partials(prepared.values, prepared.width, types, self._rollups)
             yield batch, prepared, types, new
 

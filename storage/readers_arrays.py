@@ -114,7 +114,7 @@ def orderable(lat: np.ndarray, lng: np.ndarray) -> bool:
     return lat.dtype.kind in "fiu" and lng.dtype.kind in "fiu" and len(lat) > 1
 
 
-def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any) -> np.ndarray:
+def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, locate: Any = None) -> np.ndarray:
     """The permutation that puts the points in cell id order (the arrays must be :func:`orderable`).
 
     Only speed depends on it: rows inserted in key order walk the clustered
@@ -133,7 +133,8 @@ def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any) -
     with np.errstate(invalid="ignore"):
         ok &= (np.abs(y) <= 90) & (np.abs(x) <= 180)
     good = np.flatnonzero(ok)
-    keys = np.asarray(dggs.latlng_to_cell(y[good], x[good], level, as_int=True), dtype=np.uint64)
+    locate = dggs.latlng_to_cell if locate is None else locate  # the store's grid's
+    keys = np.asarray(locate(y[good], x[good], level, as_int=True), dtype=np.uint64)
     # An id of level L leaves its low 2 * (28 - L) bits zero: with the position in them, a plain sort
     # (8x faster than argsort) gives the stable order.
     free = 2 * (dggs.MAX_LEVEL - level)

@@ -31,6 +31,7 @@ from dggs.errors import DggsValueError
 from . import queries
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
+from .projection import settle
 from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
 from .store_export import ExportMethods
@@ -60,12 +61,17 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
     merge_rows : int, default 250000
         Pending rows that trigger a merge into the clustered table during
         ingest (or a quarter of the rows already merged, if more).
+    projection : {"ISEA", "IVEA"}, optional
+        The grid whose cells the points are binned into (:class:`dggs.Grid`),
+        recorded in the file when it is created.  None (the default): the
+        file's own (ISEA for a new store and for files that record none).
 
     Raises
     ------
     StorageError
         Naming the file, if it is not a SQLite database, not a cell store, or
-        missing with ``create=False``.
+        missing with ``create=False``; naming both projections, if
+        ``projection`` differs from the one the file records.
 
     Examples
     --------
@@ -82,6 +88,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
         readonly: bool = False,
         timeout: float = 30.0,
         merge_rows: int = MERGE_ROWS,
+        projection: str | None = None,
     ) -> None:
         if isinstance(merge_rows, bool) or not isinstance(merge_rows, int) or merge_rows < 1:
             raise DggsValueError(f"merge_rows must be a whole number >= 1, not {merge_rows!r}")
@@ -92,6 +99,21 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
         self.readonly = readonly
         self.timeout = float(timeout)
         self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout)
+        try:
+            self._store.projection = settle(self._store.conn, self.path, projection, readonly)
+        except BaseException:
+            self._store.close()
+            raise
+
+    @property
+    def projection(self) -> str:
+        """The projection the cells were binned with, ``"ISEA"`` or ``"IVEA"`` (``meta.projection``)."""
+        return self._store.projection
+
+    @property
+    def grid(self) -> Any:
+        """The :class:`dggs.Grid` of the stored cells (locates points, draws and queries cells)."""
+        return dggs.Grid(self._store.projection)
 
     @property
     def conn(self) -> sqlite3.Connection:
@@ -320,7 +342,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
         [1]
         """
         queries.check_query_level(self._store, level)
-        cells = dggs.polygon_to_cells(polygon, level)
+        cells = self.grid.polygon_to_cells(polygon, level)
         return queries.rows_under(self._store, list(cells), level)
 
     @guarded
@@ -369,6 +391,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
             "level": level,
             "cell_area_km2": float(dggs.cell_area(level, unit="km^2")) if level is not None else None,
             "crs": meta.get("crs"),
+            "projection": self.projection,
             "schema_version": int(meta["schema_version"]),
             "dggs_version": meta.get("dggs_version"),
             "created": meta.get("created"),

@@ -67,7 +67,10 @@ class ExportMethods:
         rows = self.aggregate(level, column, queries.export_stats(column, stats))
         cells = [row["cell"] for row in rows]
         props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
-        collection: dict[str, Any] = dggs.cells_to_geojson(cells, properties=props, densify=densify)
+        if self._store.projection == "ISEA":
+            collection: dict[str, Any] = dggs.cells_to_geojson(cells, properties=props, densify=densify)
+        else:  # drawn with the grid the cells were binned on (storage/projection.py)
+            collection = _grid_geojson(self._store.projection, cells, props, densify)
         if path is not None:
             with atomic_write(path) as fh:
                 json.dump(collection, fh)
@@ -94,7 +97,8 @@ class ExportMethods:
         LevelError, LevelMismatchError
             If ``level`` is out of range or finer than the stored level.
         DggsValueError
-            If a stat is unknown or needs a numeric ``column``.
+            If a stat is unknown or needs a numeric ``column``, or the store is binned on IVEA
+            (its tables are not drawn yet: use :meth:`to_geojson`).
 
         Examples
         --------
@@ -106,6 +110,7 @@ class ExportMethods:
         """
         from dggs.arrow import cells_to_table
 
+        _isea_only(self._store, "to_arrow")
         stats = queries.export_stats(column, stats)
         # An analyst exports one roll-up in several formats: the last table is remembered while the file
         # is unchanged (the roll-up memo's file state), so the second format builds no polygons again.
@@ -169,3 +174,28 @@ class ExportMethods:
         table = self.to_arrow(level, column, stats, densify)
         write_cells(table, path, fmt)
         return int(table.num_rows)
+
+
+def _isea_only(store: Connection, what: str) -> None:
+    """Refuse ``what`` on a store binned on another projection than ISEA (its cells would be drawn misplaced)."""
+    if store.projection != "ISEA":
+        from dggs.errors import DggsValueError
+
+        raise DggsValueError(f"{what} draws cells on ISEA only; {store.path} is binned on {store.projection} "
+                             "(export it as GeoJSON: to_geojson or a .geojson file)")
+
+
+def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]],
+                  densify: int | None) -> dict[str, Any]:
+    """A FeatureCollection as :func:`dggs.cells_to_geojson` gives, the cells drawn on ``Grid(projection)``."""
+    import shapely
+    from shapely.geometry import mapping
+
+    polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if cells else []
+    polys = shapely.orient_polygons(polys, exterior_cw=False) if cells else []
+    features = [
+        {"type": "Feature", "id": cell, "geometry": mapping(poly),
+         "properties": {"cell": cell, "level": len(cell) - 1, **row}}
+        for cell, poly, row in zip(cells, polys, props, strict=True)
+    ]
+    return {"type": "FeatureCollection", "features": features}

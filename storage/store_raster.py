@@ -73,6 +73,8 @@ class RasterMethods:
             As :func:`dggs.raster.raster_to_cells`, before anything is stored.
         LevelMismatchError
             The store holds another level.
+        DggsValueError
+            A store binned on IVEA (rasters are binned on ISEA only).
         StorageError
             A read-only store, a file changed since (without ``replace``), the same raster ingested
             before with other settings, or another process ingesting it at the same time.
@@ -90,6 +92,11 @@ class RasterMethods:
         """
         from .raster_ingest import ingest_raster
 
+        if self._store.projection != "ISEA":
+            from dggs.errors import DggsValueError
+
+            raise DggsValueError(f"rasters are binned on ISEA only; {self._store.path} is binned on "
+                                 f"{self._store.projection} (ingest into a store created with projection='ISEA')")
         return ingest_raster(
             self._store, source, level, mode=mode, band=band, nodata=nodata, window=window, density=density,
             block_size=block_size, replace=replace, progress=progress,
