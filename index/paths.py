@@ -138,8 +138,10 @@ _STEP_EDGES = 0.5
 #: Bisection stops at this length (metres): cells that still meet only at a corner are joined around it.
 _CORNER_M = 1e-4
 #: Largest distance (metres) between an interpolated point and the geodesic's point at the same distance:
-#: 1 micrometre, or 1e-6 of the level's short edge where that is smaller (level 28), never below 1e-8 m.
-_TOL_M, _TOL_EDGE, _TOL_FLOOR = 1e-6, 1e-6, 1e-8
+#: 0.1 mm (the corner length :data:`_CORNER_M`), or 1e-6 of the level's short edge where that is smaller
+#: (from level 20), never below 1e-8 m (rounding in ECEF metres is 1e-9 m).  Anchors are then at most 39 km
+#: apart from level 0 to 19 (11.8 km at level 28's 0.8 micrometres).
+_TOL_M, _TOL_EDGE, _TOL_FLOOR = 1e-4, 1e-6, 1e-8
 #: Cells per short edge of length, plus cells per segment, in the size bound checked before sampling
 #: (:data:`dggs.index.lines._CELLS_PER_EDGE`'s reasoning: a segment crosses at most 1.98 cells a short edge).
 _CELLS_PER_EDGE, _CELLS_EXTRA = 3.0, 24
