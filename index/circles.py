@@ -20,7 +20,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_max_cells, check_size
+from ._checks import check_level, check_max_cells, check_projection, check_size
 from ._convert import as_float_scalar, ids_array
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
@@ -46,24 +46,39 @@ def _geod() -> Any:
     return pyproj.Geod(ellps="WGS84")
 
 
-def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _shapes(projection: str) -> tuple[Any, Any, Any]:
+    """(centres loop, boundaries, densify groups) of a projection's cells; IVEA's loaded on first use."""
+    if projection == "ISEA":
+        return kp.centres, boundaries, densify_groups
+    from . import _ivea_shapes as ivea
+    from ._densify import needed_densify
+    from ._kernel import ivea_points as ki
+
+    def groups(ids: np.ndarray, densify: None) -> list[tuple[np.ndarray, int]]:
+        need = needed_densify(ids, rings=ki.boundaries)
+        return [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
+
+    return ki.centres, ivea.boundaries, groups
+
+
+def _centres(ids: np.ndarray, centres: Any = kp.centres) -> tuple[np.ndarray, np.ndarray]:
     lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
-    kp.centres(ids.shape[0], ids, lat, lng)
+    centres(ids.shape[0], ids, lat, lng)
     return lat, lng
 
 
-def _bounds(ids: np.ndarray, lat: float, lng: float) -> tuple[np.ndarray, np.ndarray]:
+def _bounds(ids: np.ndarray, lat: float, lng: float, shapes: tuple[Any, Any, Any]) -> tuple[np.ndarray, np.ndarray]:
     """(distance from the point to each cell's centre, a bound on the cell's radius), metres."""
-    clat, clng = _centres(ids)
+    clat, clng = _centres(ids, shapes[0])
     _, _, dc = _geod().inv(np.full(ids.shape[0], lng), np.full(ids.shape[0], lat), clng, clat)
-    pts = boundaries(ids, 1)  # (N, 6, 2): corners and edge midpoints, (lat, lng)
+    pts = shapes[1](ids, 1)  # (N, 6, 2): corners and edge midpoints, (lat, lng)
     m = pts.shape[1]
     _, _, dr = _geod().inv(np.repeat(clng, m), np.repeat(clat, m), pts[:, :, 1].ravel(), pts[:, :, 0].ravel())
     rc = np.asarray(dr).reshape(-1, m).max(axis=1) * _RADIUS_MARGIN + 1e-3
     return np.asarray(dc, dtype=np.float64), rc
 
 
-def _exact(ids: np.ndarray, lat: float, lng: float, radius: float, mode: str) -> np.ndarray:
+def _exact(ids: np.ndarray, lat: float, lng: float, radius: float, mode: str, shapes: tuple[Any, Any, Any]) -> np.ndarray:
     """Which cells meet (``"intersects"``) or lie in (``"contains"``) the circle, judged in the AEQD plane."""
     import pyproj
     import shapely
@@ -75,8 +90,8 @@ def _exact(ids: np.ndarray, lat: float, lng: float, radius: float, mode: str) ->
         "EPSG:4326", pyproj.CRS.from_proj4(f"+proj=aeqd +lat_0={lat!r} +lon_0={lng!r} +ellps=WGS84 +units=m"),
         always_xy=True,
     )
-    for rows, d in densify_groups(ids, None):
-        pts = boundaries(ids[rows], d)  # (n, 3 (d + 1), 2) (lat, lng)
+    for rows, d in shapes[2](ids, None):
+        pts = shapes[1](ids[rows], d)  # (n, 3 (d + 1), 2) (lat, lng)
         x, y = aeqd.transform(pts[:, :, 1], pts[:, :, 0])
         x, y = np.asarray(x), np.asarray(y)
         if mode == "contains":
@@ -113,7 +128,8 @@ def _check_args(lat: Any, lng: Any, radius_m: Any, mode: Any) -> tuple[float, fl
 
 
 def circle_to_cells(
-    lat: Any, lng: Any, radius_m: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
+    lat: Any, lng: Any, radius_m: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None,
+    *, projection: str = "ISEA",
 ) -> np.ndarray:
     """Cells at ``level`` within a geodesic distance of a point (WGS84), at the poles and across the antimeridian.
 
@@ -149,6 +165,8 @@ def circle_to_cells(
     max_cells : int, optional
         Refuse to return, or to test, more cells than this (default
         :data:`dggs.index.hierarchy.MAX_CELLS`), checked level by level before allocating.
+    projection : {"ISEA", "IVEA"}
+        The grid's projection (``dggs.Grid(projection).circle_to_cells`` passes it): its centres and boundaries.
 
     Returns
     -------
@@ -176,12 +194,13 @@ def circle_to_cells(
     """
     level = check_level(level)
     limit = check_max_cells(max_cells)
+    shapes = _shapes(check_projection(projection))
     lat, lng, radius = _check_args(lat, lng, radius_m, mode)
     ids = _base_cells()
     whole: list[np.ndarray] = []
     wholes = 0
     for lv in range(level + 1):
-        dc, rc = _bounds(ids, lat, lng)
+        dc, rc = _bounds(ids, lat, lng, shapes)
         near = dc - rc <= radius
         inside = dc + rc <= radius
         whole.append(ids[inside])
@@ -191,7 +210,7 @@ def circle_to_cells(
         if lv < level:
             check_size(wholes + kh.count_children(ids, lv + 1)[0], limit, "circle_to_cells")
             ids = _descendants(ids, lv + 1)
-    keep = dc <= radius if mode == "center" else _exact(ids, lat, lng, radius, mode)
+    keep = dc <= radius if mode == "center" else _exact(ids, lat, lng, radius, mode, shapes)
     found = np.concatenate([_descendants(w, level) for w in whole] + [ids[keep]])
     check_size(int(found.shape[0]), limit, "circle_to_cells")
     return ids_array(np.sort(found), as_int)

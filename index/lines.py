@@ -17,7 +17,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_size
+from ._checks import check_level, check_projection, check_size
 from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, id_name, ids_array, pair_kind, values_out
 from ._corners import fans
 from ._kernel import grid as kg
@@ -59,14 +59,19 @@ def _distance(lat1: np.ndarray, lng1: np.ndarray, lat2: np.ndarray, lng2: np.nda
     return d / 1000.0 if unit == "km" else d
 
 
-def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _centres(ids: np.ndarray, projection: str = "ISEA") -> tuple[np.ndarray, np.ndarray]:
     lat, lng = np.empty(ids.shape[0]), np.empty(ids.shape[0])
-    kp.centres(ids.shape[0], ids, lat, lng)
+    if projection == "ISEA":
+        kp.centres(ids.shape[0], ids, lat, lng)
+    else:  # IVEA's centres (loaded on first use)
+        from ._kernel import ivea_points
+
+        ivea_points.centres(ids.shape[0], ids, lat, lng)
     return lat, lng
 
 
-def _centres_distance(a: np.ndarray, b: np.ndarray, unit: str) -> np.ndarray:
-    return _distance(*_centres(a), *_centres(b), unit)
+def _centres_distance(a: np.ndarray, b: np.ndarray, unit: str, projection: str = "ISEA") -> np.ndarray:
+    return _distance(*_centres(a, projection), *_centres(b, projection), unit)
 
 
 _CENTRES_DISTANCE = Op(many=_centres_distance, out=VALUE)
@@ -129,12 +134,13 @@ def great_circle_distance(lat1: Any, lng1: Any, lat2: Any, lng2: Any, unit: str 
     return values_out(_distance(a1, o1, a2, o2, unit), pair_kind(k1, k2, shape))
 
 
-def cell_centers_distance(a: Any, b: Any, unit: str = "m") -> Any:
+def cell_centers_distance(a: Any, b: Any, unit: str = "m", *, projection: str = "ISEA") -> Any:
     """Distance between the centres of cells ``a`` and ``b`` (element-wise, shapes broadcast).
 
     The centres are :func:`dggs.cell_to_latlng`'s; the distance is
     :func:`great_circle_distance`'s (geodesic on WGS84 for ``"m"`` and ``"km"``).
-    Cells of different levels are allowed.
+    Cells of different levels are allowed.  ``projection`` (``"ISEA"`` or ``"IVEA"``, which
+    ``dggs.Grid(projection).cell_centers_distance`` passes) picks the grid whose centres are measured.
 
     Raises
     ------
@@ -150,7 +156,7 @@ def cell_centers_distance(a: Any, b: Any, unit: str = "m") -> Any:
     >>> [round(d, 1) for d in cell_centers_distance(["C401", "C402"], "C401")]
     [0.0, 869565.6]
     """
-    return apply_pair(_CENTRES_DISTANCE, a, b, _check_unit(unit))
+    return apply_pair(_CENTRES_DISTANCE, a, b, _check_unit(unit), check_projection(projection))
 
 
 # --------------------------------------------------------------------------
@@ -175,11 +181,18 @@ _CELLS_EXTRA = 24
 _CHUNK = 1 << 20
 
 
-def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int) -> np.ndarray:
+def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int, projection: str = "ISEA") -> np.ndarray:
     lat1, lng1, az = line
     n = s.shape[0]
     lng, lat, _ = _geod().fwd(np.full(n, lng1), np.full(n, lat1), np.full(n, az), s)
-    ids: np.ndarray = latlng_to_cell(np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64), level, as_int=True)
+    lat, lng = np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64)
+    if projection == "ISEA":
+        ids: np.ndarray = latlng_to_cell(lat, lng, level, as_int=True)
+    else:  # IVEA's location (loaded on first use)
+        from ._kernel import ivea_points
+
+        ids = np.empty(n, dtype=np.uint64)
+        ivea_points.locate(n, lat, lng, level, ids)
     return ids
 
 
@@ -205,7 +218,9 @@ def _around_corner(a: int, b: int) -> list[int]:
     return best
 
 
-def _between(line: tuple[float, float, float], level: int, sa: float, ca: int, sb: float, cb: int) -> list[int]:
+def _between(
+    line: tuple[float, float, float], level: int, sa: float, ca: int, sb: float, cb: int, projection: str = "ISEA"
+) -> list[int]:
     """Cells strictly between ``ca`` (at distance ``sa``) and ``cb`` (at ``sb``) on the line, in order.
 
     Bisects until consecutive cells share an edge; consecutive cells that meet only at a
@@ -216,13 +231,14 @@ def _between(line: tuple[float, float, float], level: int, sa: float, ca: int, s
     if sb - sa < _CORNER_M:
         return _around_corner(ca, cb)
     sm = 0.5 * (sa + sb)
-    cm = int(_cells_at(line, np.array([sm]), level)[0])
+    cm = int(_cells_at(line, np.array([sm]), level, projection)[0])
     mid = [cm] if cm not in (ca, cb) else []
-    return _between(line, level, sa, ca, sm, cm) + mid + _between(line, level, sm, cm, sb, cb)
+    return _between(line, level, sa, ca, sm, cm, projection) + mid + _between(line, level, sm, cm, sb, cb, projection)
 
 
 def geodesic_to_cells(
-    lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None
+    lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None,
+    *, projection: str = "ISEA",
 ) -> np.ndarray:
     """The cells along the WGS84 geodesic from one point to another, in order (h3's ``grid_path_cells``).
 
@@ -248,6 +264,8 @@ def geodesic_to_cells(
         Refuse lines longer than this many cells (an upper estimate from the
         length, 3 cells per short edge plus 24, checked before any sampling;
         default :data:`dggs.index.hierarchy.MAX_CELLS`).
+    projection : {"ISEA", "IVEA"}
+        The grid whose cells are found (``dggs.Grid(projection).geodesic_to_cells`` passes it; docs/grid.md).
 
     Returns
     -------
@@ -274,6 +292,7 @@ def geodesic_to_cells(
     True
     """
     level = check_level(level)
+    projection = check_projection(projection)
     lat1, lng1, lat2, lng2 = (
         as_float_scalar(v, n) for v, n in ((lat1, "latitude"), (lng1, "longitude"), (lat2, "latitude"), (lng2, "longitude"))
     )
@@ -292,9 +311,9 @@ def geodesic_to_cells(
         s = at * step
         if at[-1] == n:
             s[-1] = dist
-        ids = _cells_at(line, s, level)
+        ids = _cells_at(line, s, level, projection)
         if at[-1] == n:
-            ids[-1] = _cells_at((lat2, lng2, 0.0), np.zeros(1), level)[0]  # the end point itself
+            ids[-1] = _cells_at((lat2, lng2, 0.0), np.zeros(1), level, projection)[0]  # the end point itself
         keep = np.ones(ids.shape[0], dtype=bool)
         keep[1:] = ids[1:] != ids[:-1]
         if last is not None:
@@ -312,7 +331,7 @@ def geodesic_to_cells(
             parts.append(cells[prev : g + 1])
             # the stretch runs from the last sample in cells[g] to the first in cells[g + 1]
             last_a = (idx[g + 1] - 1) * step
-            fill = _between(line, level, float(last_a), int(cells[g]), float(starts[g + 1]), int(cells[g + 1]))
+            fill = _between(line, level, float(last_a), int(cells[g]), float(starts[g + 1]), int(cells[g + 1]), projection)
             parts.append(np.array(fill, dtype=np.uint64))
             prev = g + 1
         parts.append(cells[prev:])

@@ -13,7 +13,7 @@ import numpy as np
 import shapely
 from shapely.geometry import mapping
 
-from ._checks import check_densify, check_level, property_rows
+from ._checks import check_densify, check_level, check_projection, property_rows
 from ._convert import CELL as _CELL
 from ._convert import VALUE, Entry, Op, apply, apply_points, cells_in, check_points, format_int
 from ._kernel import hierarchy as kh
@@ -198,7 +198,9 @@ def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | Non
     return apply(_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
 
 
-def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None) -> dict[str, Any]:
+def cells_to_geojson(
+    cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None, *, projection: str = "ISEA"
+) -> dict[str, Any]:
     """A GeoJSON FeatureCollection of cells (RFC 7946: lng/lat, CCW rings).
 
     Parameters
@@ -213,6 +215,8 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
         gives :func:`cell_to_polygon`'s area-exact default.
     max_points : int, optional
         Refuse to build more boundary points than this in all (default 50 million).
+    projection : {"ISEA", "IVEA"}
+        The grid whose cells are drawn (``dggs.Grid(projection).cells_to_geojson`` passes it; docs/grid.md).
 
     Raises
     ------
@@ -232,7 +236,10 @@ def cells_to_geojson(cells: Any, properties: Any = None, densify: int | None = 1
     ('FeatureCollection', 2, {'cell': 'C402', 'level': 3, 'n': 2})
     """
     ids, kind = cells_in(cells)
-    polys = geometries(ids, None if densify is None else check_densify(densify), max_points)
+    draw = geometries
+    if check_projection(projection) == "IVEA":  # IVEA's shapes floor (loaded on first use)
+        from ._ivea_shapes import geometries as draw
+    polys = draw(ids, None if densify is None else check_densify(densify), max_points)
     # RFC 7946's winding in one call (shapely >= 2.1) rather than shapely.geometry.polygon.orient one polygon
     # at a time: the same rings, faster (benchmarks/bench_handwritten.py); mapping() is most of the time
     polys = shapely.orient_polygons(polys, exterior_cw=False)

@@ -21,29 +21,42 @@ import numpy as np
 from dggs.errors import DggsValueError
 
 from . import _ivea_shapes as ivea_shapes
+from . import circles, dissolve, edges, grid, hierarchy, ids, lines, local, measure, paths, points, polyfill, vertex
 from ._checks import check_densify, check_level
 from ._convert import CELL, VALUE, Op, apply, apply_points, check_points
+from ._corners import check_canonical, parse_vertex
 from ._kernel import ivea_points as ki
-from .grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
-from .hierarchy import (
-    cell_to_center_child,
-    cell_to_children,
-    cell_to_parent,
-    compact_cells,
-    get_face,
-    get_level,
-    is_valid_cell,
-    uncompact_cells,
-)
-from .ids import int_to_str, str_to_int
-from .measure import cell_area
-from .points import cell_to_boundary, cell_to_latlng, cell_to_polygon, latlng_to_cell
-from .polyfill import polygon_to_cells
 
-__all__ = ["Grid", "PROJECTIONS"]
+__all__ = ["Grid", "PROJECTIONS", "GEOMETRIC", "TOPOLOGICAL", "MODULE_ONLY"]
 
 #: The projections a grid can take: Snyder's (the module-level verbs) and the vertex-oriented great circle one.
 PROJECTIONS = ("ISEA", "IVEA")
+
+#: Public verbs whose answer depends on where a cell sits on the globe: a method of each projection
+#: (``Grid("ISEA")``'s are the module-level functions themselves, ``Grid("IVEA")``'s answer on IVEA).
+GEOMETRIC = {
+    "latlng_to_cell": points, "cell_to_latlng": points, "cell_to_boundary": points, "cell_to_polygon": points,
+    "cells_to_geojson": points, "cells_to_polygons": dissolve, "polygon_to_cells": polyfill,
+    "vertex_to_latlng": vertex, "cell_centers_distance": lines, "geodesic_to_cells": lines,
+    "circle_to_cells": circles, "directed_edge_to_boundary": edges, "edge_length": edges,
+}
+#: Public verbs that read ids only (the hierarchy, neighbours, vertex and edge ids, local ij on the unfolded
+#: icosahedron, whose corners both projections share), and ``great_circle_distance`` (coordinates only):
+#: the module-level functions, the same on both grids (static methods of :class:`Grid`).
+TOPOLOGICAL = (
+    "int_to_str", "str_to_int", "get_level", "get_face", "is_valid_cell", "cell_to_parent", "cell_to_children",
+    "cell_to_center_child", "compact_cells", "uncompact_cells", "get_num_cells", "get_base_cells",
+    "edge_neighbors", "are_neighbor_cells", "grid_disk", "grid_ring", "grid_distance", "grid_path_cells",
+    "cell_to_child_pos", "child_pos_to_cell", "cell_to_local_ij", "local_ij_to_cell",
+    "cells_to_directed_edge", "directed_edge_to_cells", "origin_to_directed_edges", "get_directed_edge_origin",
+    "get_directed_edge_destination", "reverse_directed_edge", "is_valid_directed_edge",
+    "cell_to_vertexes", "grid_disk_vertex", "is_valid_vertex", "vertex_neighbors", "vertex_to_cells",
+    "great_circle_distance", "cell_area",
+)
+#: Public names that are not verbs of a grid, or not yet on IVEA: ``Grid`` itself, the constant
+#: ``MAX_LEVEL``, ``level_table`` (the planar guide of docs and the CLI, the same on both), and
+#: ``line_to_cells``, whose tracer (index/paths.py) has no projection hook yet: ISEA only.
+MODULE_ONLY = ("Grid", "MAX_LEVEL", "level_table", "line_to_cells")
 
 
 def _locate(lat: np.ndarray, lng: np.ndarray, level: int) -> np.ndarray:
@@ -103,6 +116,9 @@ class Grid:
         if name not in PROJECTIONS:
             raise DggsValueError(f"projection {projection!r} is not one of {', '.join(PROJECTIONS)}")
         self.projection: str = name
+        if name == "ISEA":  # the module-level functions themselves
+            for verb, module in GEOMETRIC.items():
+                setattr(self, verb, getattr(module, verb))
 
     def __repr__(self) -> str:
         return f"Grid({self.projection!r})"
@@ -113,23 +129,18 @@ class Grid:
     def __hash__(self) -> int:
         return hash(("Grid", self.projection))
 
-    # --- what depends on the projection -------------------------------------------------
+
+    # --- what depends on the projection: IVEA's here; Grid("ISEA") binds the module-level functions --------
     def latlng_to_cell(self, lat: Any, lng: Any, level: int, as_int: bool = False) -> Any:
         """The cell at ``level`` holding each point (geodetic WGS84 degrees); see :func:`dggs.latlng_to_cell`."""
-        if self.projection == "ISEA":
-            return latlng_to_cell(lat, lng, level, as_int)
         return apply_points(_IVEA_LOCATE_INT if as_int else _IVEA_LOCATE, lat, lng, check_level(level))
 
     def cell_to_latlng(self, cell: Any) -> Any:
         """Centre (geodetic lat, lng degrees) of each cell; see :func:`dggs.cell_to_latlng`."""
-        if self.projection == "ISEA":
-            return cell_to_latlng(cell)
         return apply(_IVEA_CENTRE, cell)
 
     def cell_to_boundary(self, cell: Any, densify: int = 0, max_points: int | None = None) -> Any:
         """Corners (and ``densify`` points an edge) as (lat, lng), counter-clockwise; see :func:`dggs.cell_to_boundary`."""
-        if self.projection == "ISEA":
-            return cell_to_boundary(cell, densify, max_points)
         return apply(_IVEA_BOUNDARY, cell, check_densify(densify), False, max_points)
 
     def cell_to_polygon(self, cell: Any, densify: int | None = None, max_points: int | None = None) -> Any:
@@ -138,9 +149,17 @@ class Grid:
         By default each cell gets the points per edge its own edges' bulge needs for a geodesic area within
         1e-6 of the cell's, as on ISEA.
         """
-        if self.projection == "ISEA":
-            return cell_to_polygon(cell, densify, max_points)
         return apply(_IVEA_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
+
+    def cells_to_geojson(
+        self, cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None
+    ) -> dict[str, Any]:
+        """A GeoJSON FeatureCollection of the cells drawn on this grid; see :func:`dggs.cells_to_geojson`."""
+        return points.cells_to_geojson(cells, properties, densify, max_points, projection=self.projection)
+
+    def cells_to_polygons(self, cells: Any, densify: int | None = None) -> Any:
+        """The outline of a set of cells (the same edges on both grids, drawn on this one); see :func:`dggs.cells_to_polygons`."""
+        return dissolve.cells_to_polygons(cells, densify, projection=self.projection)
 
     def polygon_to_cells(
         self, polygon: Any, level: int, mode: str = "center", as_int: bool = False, max_cells: int | None = None
@@ -149,26 +168,74 @@ class Grid:
 
         The same compiled descent on either projection, with the centres and cell polygons of this grid.
         """
-        return polygon_to_cells(polygon, level, mode, as_int, max_cells, projection=self.projection)
+        return polyfill.polygon_to_cells(polygon, level, mode, as_int, max_cells, projection=self.projection)
 
-    # --- what does not ---------------------------------------------------------------------
-    @staticmethod
-    def cell_area(cell_or_level: Any, unit: str = "m^2") -> Any:
-        """Cell areas: the same on both projections (both are equal-area); see :func:`dggs.cell_area`."""
-        return cell_area(cell_or_level, unit)
+    def vertex_to_latlng(self, vertex: Any) -> tuple[float, float]:
+        """The (lat, lng) of a vertex: the same vertex ids on both grids, this grid's corner; see :func:`dggs.vertex_to_latlng`."""
+        owner, index = parse_vertex(vertex)
+        check_canonical(vertex, owner, index)
+        lat, lng = ivea_shapes.boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
+        return float(lat), float(lng)
 
-    cell_to_parent = staticmethod(cell_to_parent)
-    cell_to_children = staticmethod(cell_to_children)
-    cell_to_center_child = staticmethod(cell_to_center_child)
-    compact_cells = staticmethod(compact_cells)
-    uncompact_cells = staticmethod(uncompact_cells)
-    get_level = staticmethod(get_level)
-    get_face = staticmethod(get_face)
-    int_to_str = staticmethod(int_to_str)
-    str_to_int = staticmethod(str_to_int)
-    is_valid_cell = staticmethod(is_valid_cell)
-    edge_neighbors = staticmethod(edge_neighbors)
-    grid_disk = staticmethod(grid_disk)
-    grid_ring = staticmethod(grid_ring)
-    grid_distance = staticmethod(grid_distance)
-    are_neighbor_cells = staticmethod(are_neighbor_cells)
+    def cell_centers_distance(self, a: Any, b: Any, unit: str = "m") -> Any:
+        """Distance between this grid's centres of cells ``a`` and ``b``; see :func:`dggs.cell_centers_distance`."""
+        return lines.cell_centers_distance(a, b, unit, projection=self.projection)
+
+    def geodesic_to_cells(
+        self, lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None
+    ) -> np.ndarray:
+        """The grid's cells along the WGS84 geodesic between two points, in order; see :func:`dggs.geodesic_to_cells`."""
+        return lines.geodesic_to_cells(lat1, lng1, lat2, lng2, level, as_int, max_cells, projection=self.projection)
+
+    def circle_to_cells(
+        self, lat: Any, lng: Any, radius_m: Any, level: int, mode: str = "center", as_int: bool = False,
+        max_cells: int | None = None,
+    ) -> np.ndarray:
+        """The grid's cells within a geodesic distance of a point; see :func:`dggs.circle_to_cells`."""
+        return circles.circle_to_cells(lat, lng, radius_m, level, mode, as_int, max_cells, projection=self.projection)
+
+    def directed_edge_to_boundary(self, edge: Any, densify: int = 0) -> Any:
+        """The ends (and ``densify`` points between) of each directed edge on this grid; see :func:`dggs.directed_edge_to_boundary`."""
+        return edges.directed_edge_to_boundary(edge, densify, projection=self.projection)
+
+    def edge_length(self, edge: Any, unit: str = "m") -> Any:
+        """The length of each directed edge's curve on this grid; see :func:`dggs.edge_length`."""
+        return edges.edge_length(edge, unit, projection=self.projection)
+
+    # --- what does not: the module-level functions (TOPOLOGICAL) --------------------------------------------
+    int_to_str = staticmethod(ids.int_to_str)
+    str_to_int = staticmethod(ids.str_to_int)
+    get_level = staticmethod(hierarchy.get_level)
+    get_face = staticmethod(hierarchy.get_face)
+    is_valid_cell = staticmethod(hierarchy.is_valid_cell)
+    cell_to_parent = staticmethod(hierarchy.cell_to_parent)
+    cell_to_children = staticmethod(hierarchy.cell_to_children)
+    cell_to_center_child = staticmethod(hierarchy.cell_to_center_child)
+    compact_cells = staticmethod(hierarchy.compact_cells)
+    uncompact_cells = staticmethod(hierarchy.uncompact_cells)
+    get_num_cells = staticmethod(hierarchy.get_num_cells)
+    get_base_cells = staticmethod(hierarchy.get_base_cells)
+    edge_neighbors = staticmethod(grid.edge_neighbors)
+    are_neighbor_cells = staticmethod(grid.are_neighbor_cells)
+    grid_disk = staticmethod(grid.grid_disk)
+    grid_ring = staticmethod(grid.grid_ring)
+    grid_distance = staticmethod(grid.grid_distance)
+    grid_path_cells = staticmethod(paths.grid_path_cells)
+    cell_to_child_pos = staticmethod(local.cell_to_child_pos)
+    child_pos_to_cell = staticmethod(local.child_pos_to_cell)
+    cell_to_local_ij = staticmethod(local.cell_to_local_ij)
+    local_ij_to_cell = staticmethod(local.local_ij_to_cell)
+    cells_to_directed_edge = staticmethod(edges.cells_to_directed_edge)
+    directed_edge_to_cells = staticmethod(edges.directed_edge_to_cells)
+    origin_to_directed_edges = staticmethod(edges.origin_to_directed_edges)
+    get_directed_edge_origin = staticmethod(edges.get_directed_edge_origin)
+    get_directed_edge_destination = staticmethod(edges.get_directed_edge_destination)
+    reverse_directed_edge = staticmethod(edges.reverse_directed_edge)
+    is_valid_directed_edge = staticmethod(edges.is_valid_directed_edge)
+    cell_to_vertexes = staticmethod(vertex.cell_to_vertexes)
+    grid_disk_vertex = staticmethod(vertex.grid_disk_vertex)
+    is_valid_vertex = staticmethod(vertex.is_valid_vertex)
+    vertex_neighbors = staticmethod(vertex.vertex_neighbors)
+    vertex_to_cells = staticmethod(vertex.vertex_to_cells)
+    great_circle_distance = staticmethod(lines.great_circle_distance)
+    cell_area = staticmethod(measure.cell_area)
