@@ -174,24 +174,10 @@ def _anchors(xy: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray, np.nda
     points are anchors as given; between them, ``pyproj.Geod.fwd`` gives the
     points (one call for all segments) and their azimuths.
     """
-    lat0, lng0, lat1, lng1 = xy[:-1, 0], xy[:-1, 1], xy[1:, 0], xy[1:, 1]
-    az12, az21, dist = (np.asarray(v, dtype=np.float64) for v in _geod().inv(lng0, lat0, lng1, lat1))
-    m = np.maximum(np.ceil(dist / kline.span_for(_tolerance(level))).astype(np.int64), 1)  # spans per segment
-    first = np.concatenate([[0], np.cumsum(m)])  # anchor index of each polyline point
-    size = int(first[-1]) + 1
-    lat, lng = np.empty(size), np.empty(size)
-    az_out, az_in = np.empty(size), np.empty(size)
-    lat[first], lng[first] = xy[:, 0], xy[:, 1]
-    az_out[first[:-1]] = az12
-    az_in[first[1:]] = az21 + 180.0  # pyproj gives the back azimuth at the end
-    az_out[-1] = az_in[0] = 0.0  # unused
-    span = np.repeat(dist / m, m)
-    inner = np.flatnonzero(m > 1)
-    if inner.size:
-        seg = np.repeat(inner, m[inner] - 1)
-        j = np.arange(seg.size) - np.repeat(np.cumsum(m[inner] - 1) - (m[inner] - 1), m[inner] - 1) + 1
-        x, y, back = _geod().fwd(lng0[seg], lat0[seg], az12[seg], j * (dist / m)[seg])
-        at = first[seg] + j
+    az12, az21, dist = (np.asarray(v, dtype=np.float64) for v in _geod().inv(xy[:-1, 1], xy[:-1, 0], xy[1:, 1], xy[1:, 0]))
+    lat, lng, az_out, az_in, span, at, seg, s = kline.layout(xy, az12, az21, dist, kline.span_for(_tolerance(level)))
+    if at.size:
+        x, y, back = _geod().fwd(xy[seg, 1], xy[seg, 0], az12[seg], s)
         lat[at], lng[at] = y, x
         az_out[at] = az_in[at] = np.asarray(back) + 180.0
     return lat, lng, az_out, az_in, span, dist
@@ -216,12 +202,10 @@ def _around(a: int, b: int) -> list[int]:
 
 def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
     """The cells along one polyline of (lat, lng) points (at least two), traced by the compiled kernel."""
-    bad = ~(np.isfinite(xy).all(axis=1) & (np.abs(xy[:, 0]) <= 90.0))
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
+    i, pts = kline.clean(np.ascontiguousarray(xy, dtype=np.float64))  # repeated points add no segment
+    if i >= 0:
         raise CoordinateError(f"point ({float(xy[i, 0])!r}, {float(xy[i, 1])!r}) at index {i} is not a finite latitude in -90..90 and a finite longitude")
-    same = np.all(xy[1:] == xy[:-1], axis=1)
-    xy = np.ascontiguousarray(xy[np.concatenate([[True], ~same])])  # repeated points add no segment
+    xy = pts
     if xy.shape[0] == 1:
         return np.asarray(latlng_to_cell(xy[:, 0], xy[:, 1], level, as_int=True), dtype=np.uint64).reshape(-1)
     lat, lng, az_out, az_in, span, dist = _anchors(xy, level)
