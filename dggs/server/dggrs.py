@@ -1,4 +1,9 @@
-"""The DGGRS this server offers, ``DGGS-Split26-ISEA``: its description and definition.
+"""The DGGRS this server offers, ``DGGS-Split26-ISEA`` and ``DGGS-Split26-IVEA``: descriptions and definitions.
+
+Both are the Split (2:6) hierarchy with the same ids; they differ in the map from
+each icosahedron face to the globe (:class:`dggs.Grid`): Snyder's ISEA or the
+vertex-oriented great circle projection IVEA (docs/grid.md).  A store's data are
+served under the DGGRS its points were binned with (``CellStore.projection``).
 
 OGC API - DGGS Part 1 (§7, requirement ``/req/core/dggrs-description``) asks for a
 description at ``.../dggs/{dggrsId}`` (schema ``openapi/schemas/dggs-core/dggrs.yaml``)
@@ -14,6 +19,8 @@ Examples
 'icosahedron'
 >>> levels()[7]["zones"], round(levels()[7]["areaKm2"])
 (87480, 5831)
+>>> projection_of("DGGS-Split26-IVEA"), dggrs_of("ISEA")
+('IVEA', 'DGGS-Split26-ISEA')
 """
 
 from __future__ import annotations
@@ -24,10 +31,23 @@ import dggs
 from dggs.geometry.authalic import WGS84
 from dggs.geometry.icosahedron import ISEA
 
-__all__ = ["DGGRS_ID", "REL", "CRS84", "definition", "description", "levels", "item", "zone_count"]
+__all__ = ["DGGRS_ID", "DGGRS_IDS", "REL", "CRS84", "definition", "description", "levels", "item", "zone_count",
+           "projection_of", "dggrs_of"]
 
-#: The id of the one DGGRS served (``{dggrsId}`` in the paths).
+#: The id of the ISEA DGGRS (``{dggrsId}`` in the paths), the default one.
 DGGRS_ID = "DGGS-Split26-ISEA"
+#: Every DGGRS served, with the projection of its grid (:class:`dggs.Grid`).
+DGGRS_IDS = {DGGRS_ID: "ISEA", "DGGS-Split26-IVEA": "IVEA"}
+
+
+def projection_of(dggrs_id: str) -> str:
+    """The projection (``"ISEA"`` or ``"IVEA"``) of a served DGGRS id (KeyError for another)."""
+    return DGGRS_IDS[dggrs_id]
+
+
+def dggrs_of(projection: str) -> str:
+    """The DGGRS id of a projection."""
+    return f"DGGS-Split26-{projection}"
 
 #: OGC link relation types, ``[ogc-rel:x]`` in the standard.
 REL = "http://www.opengis.net/def/rel/ogc/1.0/"
@@ -73,8 +93,44 @@ def levels() -> list[dict[str, Any]]:
     ]
 
 
-def definition() -> dict[str, Any]:
-    """The DGGRS definition (Annex B schema: ``dggh``, ``zirs``, ``subZoneOrder``)."""
+_IVEA_TITLE = "Split (2:6) equal-area triangles on the icosahedron, IVEA projection (dggs)"
+
+_IVEA_DESCRIPTION = _DESCRIPTION.replace(
+    "mapped to the globe by Snyder's equal-area polyhedral projection",
+    "mapped to the globe by the vertex-oriented great circle equal-area projection of van Leeuwen and Strebe "
+    "(2006, IVEA)",
+) + " The same zone ids as DGGS-Split26-ISEA name zones up to 56 km from those of ISEA."
+
+_IVEA_PROJECTION = (
+    "The vertex-oriented great circle equal-area projection of the icosahedron (van Leeuwen and Strebe 2006, "
+    f"IVEA) on the authalic sphere of WGS84 (radius {WGS84.authalic_radius:.4f} m): great circles through a "
+    "face's vertices map to straight lines; geodetic latitudes are converted to authalic ones."
+)
+
+
+def _titles(dggrs_id: str) -> tuple[str, str]:
+    return (_IVEA_TITLE, _IVEA_DESCRIPTION) if projection_of(dggrs_id) == "IVEA" else (_TITLE, _DESCRIPTION)
+
+
+def definition(dggrs_id: str = DGGRS_ID) -> dict[str, Any]:
+    """The DGGRS definition (Annex B schema: ``dggh``, ``zirs``, ``subZoneOrder``) of ``dggrs_id``.
+
+    Examples
+    --------
+    >>> definition("DGGS-Split26-IVEA")["dggh"]["definition"]["projection"][:40]
+    'The vertex-oriented great circle equal-a'
+    """
+    out = _isea_definition()
+    if projection_of(dggrs_id) == "IVEA":
+        out["title"], out["description"] = _titles(dggrs_id)
+        out["dggh"]["definition"]["projection"] = _IVEA_PROJECTION
+        out["links"] = [{"rel": "related", "href": "https://doi.org/10.3138/X687-1574-4325-WM62",
+                         "title": "van Leeuwen and Strebe 2006, A 'slice-and-dice' approach to area equivalence "
+                                  "in polyhedral map projections"}]
+    return out
+
+
+def _isea_definition() -> dict[str, Any]:
     geodetic_lat = float(WGS84.authalic_to_geodetic_deg(ISEA.lat))
     return {
         "title": _TITLE,
@@ -157,12 +213,12 @@ def link(href: str, rel: str, kind: str = "application/json", title: str | None 
     return link
 
 
-def item(base: str, prefix: str) -> dict[str, Any]:
+def item(base: str, prefix: str, dggrs_id: str = DGGRS_ID) -> dict[str, Any]:
     """The short entry of the DGGRS list (``openapi/schemas/dggs-core/dggrs-item.yaml``)."""
-    href = f"{base}{prefix}/dggs/{DGGRS_ID}"
+    href = f"{base}{prefix}/dggs/{dggrs_id}"
     return {
-        "id": DGGRS_ID,
-        "title": _TITLE,
+        "id": dggrs_id,
+        "title": _titles(dggrs_id)[0],
         "links": [
             link(href, "self"),
             link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
@@ -170,39 +226,43 @@ def item(base: str, prefix: str) -> dict[str, Any]:
     }
 
 
-def description(base: str, prefix: str, stored_level: int | None, collection: str | None) -> dict[str, Any]:
+def description(base: str, prefix: str, stored_level: int | None, collection: str | None,
+                dggrs_id: str = DGGRS_ID, serves_data: bool = True) -> dict[str, Any]:
     """The DGGRS description (``openapi/schemas/dggs-core/dggrs.yaml``, /req/core/dggrs-description).
 
     ``maxRefinementLevel`` is the stored level (/rec/core/max-refinement):
-    zone data and zone queries go no finer.
+    zone data and zone queries go no finer.  Without ``serves_data`` (the DGGRS
+    the store's data were not binned with) there are no zone data or zone query links.
     """
-    href = f"{base}{prefix}/dggs/{DGGRS_ID}"
+    href = f"{base}{prefix}/dggs/{dggrs_id}"
+    title, text = _titles(dggrs_id)
     links = [
         link(href, "self"),
         link(f"{href}/definition", REL + "dggrs-definition", title="DGGRS definition"),
-        link(f"{href}/zones", REL + "dggrs-zone-query", title="Zones holding data"),
         link(f"{base}/", REL + "dataset", title="Landing page"),
     ]
+    if serves_data:
+        links.insert(2, link(f"{href}/zones", REL + "dggrs-zone-query", title="Zones holding data"))
     if collection is not None:
         links.append(link(f"{base}/collections/{collection}", REL + "geodata", title=collection))
+    keywords = ["IVEA", "van Leeuwen", "Strebe"] if projection_of(dggrs_id) == "IVEA" else ["ISEA", "Snyder"]
     out: dict[str, Any] = {
-        "id": DGGRS_ID,
-        "title": _TITLE,
-        "description": _DESCRIPTION,
-        "keywords": ["DGGS", "equal-area", "triangle", "icosahedron", "Split 2:6", "ISEA", "Snyder"],
+        "id": dggrs_id,
+        "title": title,
+        "description": text,
+        "keywords": ["DGGS", "equal-area", "triangle", "icosahedron", "Split 2:6", *keywords],
         "crs": CRS84,
         "defaultDepth": DEFAULT_DEPTH,
         "links": links,
         "linkTemplates": [
             {"uriTemplate": f"{href}/zones/{{zoneId}}", "rel": REL + "dggrs-zone-info",
              "type": "application/json", "variables": {"zoneId": {"type": "string"}}},
-            {"uriTemplate": f"{href}/zones/{{zoneId}}/data", "rel": REL + "dggrs-zone-data",
-             "type": "application/json", "variables": {"zoneId": {"type": "string"}}},
-        ],
-        "definition": definition(),
+        ] + ([{"uriTemplate": f"{href}/zones/{{zoneId}}/data", "rel": REL + "dggrs-zone-data",
+               "type": "application/json", "variables": {"zoneId": {"type": "string"}}}] if serves_data else []),
+        "definition": definition(dggrs_id),
         "levels": levels(),
     }
-    if stored_level is not None:
+    if stored_level is not None and serves_data:
         out["maxRefinementLevel"] = stored_level
         out["maxRelativeDepth"] = stored_level
     return out

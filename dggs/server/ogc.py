@@ -26,11 +26,11 @@ from fastapi import FastAPI, Query, Request
 from fastapi.responses import FileResponse, HTMLResponse, JSONResponse, PlainTextResponse, Response
 from pydantic import BaseModel
 
-from .dggrs import CRS84, DGGRS_ID, REL, definition, description, item
+from .dggrs import CRS84, DGGRS_IDS, REL, definition, description, dggrs_of, item
 from .dggrs import link as _link
 from .encodings import HAS_UBJSON
 from .models import Collection, Collections, DggrsList, LandingPage, json_response
-from .params import Context, base_url, check_collection, check_dggrs, negotiate
+from .params import Context, base_url, check_collection, check_data_dggrs, check_dggrs, negotiate
 from .vendor import VENDOR_HELP, missing_vendor
 
 __all__ = ["register", "CONFORMANCE"]
@@ -66,7 +66,8 @@ def landing(ctx: Context, request: Request) -> LandingPage:
         "title": f"dggs: {cid}",
         "description": (
             f"OGC API - DGGS over the cell store {ctx.reader.path.name}: points binned into equal-area "
-            f"triangular zones ({DGGRS_ID}), rolled up to any coarser level."
+            f"triangular zones ({dggrs_of(ctx.reader.projection)}), rolled up to any coarser level; "
+            f"zone information also on {', '.join(d for d in DGGRS_IDS if d != dggrs_of(ctx.reader.projection))}."
         ),
         "links": [
             _link(f"{base}/?f=json", "self", title="This document"),
@@ -103,7 +104,8 @@ def collection(ctx: Context, request: Request) -> Collection:
             _link(href, "self"),
             _link(f"{base}/collections", "collection", title="All collections"),
             _link(f"{href}/dggs", REL + "dggrs-list", title="DGGRS list of this collection"),
-            _link(f"{href}/dggs/{DGGRS_ID}/zones", REL + "dggrs-zone-query", title="Zones holding data"),
+            _link(f"{href}/dggs/{dggrs_of(ctx.reader.projection)}/zones", REL + "dggrs-zone-query",
+                  title="Zones holding data"),
         ],
     }
     if summary.updated:
@@ -114,7 +116,11 @@ def collection(ctx: Context, request: Request) -> Collection:
 
 
 def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> DggrsList:
-    """The DGGRS list (``rDGGRSList.yaml``; /req/core/dggrs-list)."""
+    """The DGGRS list (``rDGGRSList.yaml``; /req/core/dggrs-list).
+
+    At the root every DGGRS served (zone information on each); a collection lists the one DGGRS its
+    data were binned with (``CellStore.projection``), the only one under which it has zone data.
+    """
     base = base_url(request)
     prefix = "" if collection_id is None else f"/collections/{collection_id}"
     links = [_link(f"{base}{prefix}/dggs", "self")]
@@ -122,7 +128,8 @@ def dggrs_list(ctx: Context, request: Request, collection_id: str | None) -> Dgg
         links.append(_link(f"{base}/", REL + "dataset", title="Landing page"))
     else:
         links.append(_link(f"{base}/collections/{collection_id}", REL + "geodata", title=collection_id))
-    return DggrsList.model_validate({"links": links, "dggrs": [item(base, prefix)]})
+    ids = list(DGGRS_IDS) if collection_id is None else [dggrs_of(ctx.reader.projection)]
+    return DggrsList.model_validate({"links": links, "dggrs": [item(base, prefix, d) for d in ids]})
 
 
 _LANDING_HTML = """<!doctype html>
@@ -210,9 +217,12 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
 
     def described(request: Request, collection_id: str | None, dggrs_id: str) -> dict[str, Any]:
         check_collection(ctx, collection_id)
-        check_dggrs(dggrs_id)
+        serves_data = check_dggrs(dggrs_id) == ctx.reader.projection
+        if collection_id is not None and not serves_data:
+            check_data_dggrs(ctx, dggrs_id)  # 404: the collection's data are under the other DGGRS
         prefix = "" if collection_id is None else f"/collections/{collection_id}"
-        return description(base_url(request), prefix, ctx.reader.summary().level, collection_id)
+        return description(base_url(request), prefix, ctx.reader.summary().level, collection_id, dggrs_id,
+                           serves_data)
 
     @app.get("/dggs", tags=["DGGS"], summary="DGGRS list")
     def dggs_root(request: Request, f: str | None = _F) -> Response:
@@ -225,7 +235,7 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
     @app.get("/dggs/{dggrsId}/definition", tags=["DGGS"], summary="DGGRS definition (Annex B schema)")
     def dggrs_definition(request: Request, dggrsId: str, f: str | None = _F) -> Response:
         check_dggrs(dggrsId)
-        return _json(request, f, definition())
+        return _json(request, f, definition(dggrsId))
 
     @app.get("/collections/{collectionId}/dggs", tags=["Collection DGGS"], summary="DGGRS list of the collection")
     def dggs_collection(request: Request, collectionId: str, f: str | None = _F) -> Response:
@@ -241,8 +251,8 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
     def dggrs_collection_definition(request: Request, collectionId: str, dggrsId: str,
                                     f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
-        check_dggrs(dggrsId)
-        return _json(request, f, definition())
+        check_data_dggrs(ctx, dggrsId)
+        return _json(request, f, definition(dggrsId))
 
     @app.get("/robots.txt", include_in_schema=False)
     def robots(request: Request) -> PlainTextResponse:

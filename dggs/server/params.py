@@ -205,15 +205,36 @@ def check_collection(ctx: Context, collection: str | None) -> None:
         raise NotFound(f"no collection {collection!r}; this server has {ctx.reader.collection_id!r}")
 
 
-def check_dggrs(dggrs_id: str) -> None:
-    """404 unless ``dggrs_id`` is the DGGRS served.
+def check_dggrs(dggrs_id: str) -> str:
+    """The projection of ``dggrs_id`` (``"ISEA"`` or ``"IVEA"``); 404 unless it is a DGGRS served.
 
     Raises
     ------
     NotFound
-        If ``dggrs_id`` is not the DGGRS this server offers.
+        If ``dggrs_id`` is not a DGGRS this server offers.
     """
-    from .dggrs import DGGRS_ID
+    from .dggrs import DGGRS_IDS
 
-    if dggrs_id != DGGRS_ID:
-        raise NotFound(f"no DGGRS {dggrs_id!r}; this server offers {DGGRS_ID!r}")
+    if dggrs_id not in DGGRS_IDS:
+        raise NotFound(f"no DGGRS {dggrs_id!r}; this server offers {', '.join(map(repr, DGGRS_IDS))}")
+    return DGGRS_IDS[dggrs_id]
+
+
+def check_data_dggrs(ctx: Context, dggrs_id: str) -> str:
+    """``dggrs_id``'s projection if the store's data were binned with it; 404 naming the right DGGRS if not.
+
+    The same zone id names another place on the other projection, so data binned on one are never
+    served under the other (they would be misplaced by up to 56 km).
+
+    Raises
+    ------
+    NotFound
+        If ``dggrs_id`` is not served, or is not the DGGRS of the store's data.
+    """
+    from .dggrs import dggrs_of
+
+    projection = check_dggrs(dggrs_id)
+    if projection != ctx.reader.projection:
+        raise NotFound(f"no data under DGGRS {dggrs_id!r}: the store {ctx.reader.path.name} was binned on "
+                       f"{ctx.reader.projection}; its data are served under {dggrs_of(ctx.reader.projection)!r}")
+    return projection

@@ -133,6 +133,9 @@ class StoreReader:
         self._geometry: dict[str, tuple[Any, str]] = {}
         with self.snapshot() as (store, _marker):
             store.level  # noqa: B018 - validates meta (raises StorageError naming the file)
+            #: The projection the store's points were binned with, and its grid (draws and locates the cells).
+            self.projection: str = store.projection
+        self.grid = dggs.Grid(self.projection)
 
     # -- connections --------------------------------------------------------
 
@@ -260,7 +263,7 @@ class StoreReader:
                 counts = np.array([r["count"] for r in rows], dtype=np.int64)
                 values = [r[stats[-1]] for r in rows]
                 if len(ids):
-                    lat, lng = dggs.cell_to_latlng(ids)
+                    lat, lng = self.grid.cell_to_latlng(ids)
                 else:
                     lat, lng = np.array([]), np.array([])
                 return LevelData(level, ids, counts, values, np.asarray(lat), np.asarray(lng))
@@ -289,7 +292,7 @@ class StoreReader:
             polys = np.empty(len(missing), dtype=object)
             for level in np.unique(levels):
                 sel = np.flatnonzero(levels == level)
-                polys[sel] = dggs.cell_to_polygon(arr[sel], densify=map_densify(int(level)))
+                polys[sel] = self.grid.cell_to_polygon(arr[sel], densify=map_densify(int(level)))
             polys = shapely.transform(polys, lambda xy: np.round(xy, 6))
             texts = shapely.to_geojson(polys)
             with self._lock:
@@ -304,7 +307,7 @@ class StoreReader:
         # Only when another thread cleared the cache between our fill and our read.
         import shapely
 
-        poly = shapely.transform(dggs.cell_to_polygon(cell, densify=map_densify(len(cell) - 1)),
+        poly = shapely.transform(self.grid.cell_to_polygon(cell, densify=map_densify(len(cell) - 1)),
                                  lambda xy: np.round(xy, 6))
         return poly, str(shapely.to_geojson(poly))
 

@@ -165,7 +165,7 @@ def geometry_texts(reader: Any, zones: Sequence[str], mode: str) -> list[str]:
     if mode == "zone-centroid":
         if not len(zones):
             return []
-        lat, lng = dggs.cell_to_latlng(np.array(zones, dtype=str))
+        lat, lng = reader.grid.cell_to_latlng(np.array(zones, dtype=str))
         return [json.dumps({"type": "Point", "coordinates": [round(float(x), 7), round(float(y), 7)]})
                 for x, y in zip(np.atleast_1d(lng), np.atleast_1d(lat), strict=True)]
     _, texts = reader.geometries(np.array(zones, dtype=str))

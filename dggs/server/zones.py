@@ -34,6 +34,7 @@ from .params import (
     Context,
     base_url,
     check_collection,
+    check_data_dggrs,
     check_dggrs,
     check_level,
     negotiate,
@@ -68,9 +69,10 @@ def _prefix(collection: str | None) -> str:
     return "" if collection is None else f"/collections/{collection}"
 
 
-def _links(request: Request, collection: str | None, zone: str | None = None) -> list[dict[str, Any]]:
+def _links(request: Request, collection: str | None, zone: str | None = None,
+           dggrs_id: str = DGGRS_ID) -> list[dict[str, Any]]:
     base = base_url(request)
-    dggrs = f"{base}{_prefix(collection)}/dggs/{DGGRS_ID}"
+    dggrs = f"{base}{_prefix(collection)}/dggs/{dggrs_id}"
     links = [
         {"href": str(request.url), "rel": "self", "type": "application/json"},
         {"href": dggrs, "rel": REL + "dggrs", "type": "application/json"},
@@ -87,23 +89,30 @@ def _links(request: Request, collection: str | None, zone: str | None = None) ->
 # -- zone information ---------------------------------------------------------
 
 
-def zone_info(ctx: Context, request: Request, collection: str | None, zone: str, f: str | None) -> Response:
-    """Zone information (/req/core/zone-info, /rec/core/zone-info)."""
+def zone_info(ctx: Context, request: Request, collection: str | None, zone: str, f: str | None,
+              dggrs_id: str = DGGRS_ID) -> Response:
+    """Zone information (/req/core/zone-info, /rec/core/zone-info) on the grid of ``dggrs_id``.
+
+    The data count and statistics only under the DGGRS the store's data were binned with.
+    """
     import shapely
     from shapely.geometry import mapping
 
     fmt = negotiate(request, f)
     level = dggs.get_level(zone)
     base = base_url(request)
-    dggrs = f"{base}{_prefix(collection)}/dggs/{DGGRS_ID}"
-    poly = dggs.cell_to_polygon(zone)
-    lat, lng = dggs.cell_to_latlng(zone)
+    dggrs = f"{base}{_prefix(collection)}/dggs/{dggrs_id}"
+    grid = dggs.Grid(check_dggrs(dggrs_id))
+    serves_data = grid.projection == ctx.reader.projection
+    poly = grid.cell_to_polygon(zone)
+    lat, lng = grid.cell_to_latlng(zone)
     parent = dggs.cell_to_parent(zone) if level > 0 else None
     children = dggs.cell_to_children(zone) if level < dggs.MAX_LEVEL else []
     neighbors = dggs.edge_neighbors(zone)
-    links = _links(request, collection)[:3]
-    links.append({"href": f"{dggrs}/zones/{zone}/data", "rel": REL + "dggrs-zone-data",
-                  "type": "application/json", "title": "Data of the zone (DGGS-JSON)"})
+    links = _links(request, collection, None, dggrs_id)[:3]
+    if serves_data:
+        links.append({"href": f"{dggrs}/zones/{zone}/data", "rel": REL + "dggrs-zone-data",
+                      "type": "application/json", "title": "Data of the zone (DGGS-JSON)"})
     if parent is not None:
         links.append({"href": f"{dggrs}/zones/{parent}", "rel": REL + "dggrs-zone-parent", "type": "application/json"})
     links += [{"href": f"{dggrs}/zones/{c}", "rel": REL + "dggrs-zone-child", "type": "application/json"}
@@ -127,7 +136,7 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
     }
     with ctx.reader.snapshot():  # one read transaction: all numbers from the same state of the store
         summary = ctx.reader.summary()
-        if summary.level is not None and level <= summary.level:
+        if serves_data and summary.level is not None and level <= summary.level:
             # /rec/core/zone-info: summary statistics of each numeric field within the zone.
             rows = ctx.reader.rollup(zone, level, None, ("count",))
             info["dataCount"] = int(rows[0]["count"]) if rows else 0
@@ -143,16 +152,20 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 
 
 def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-              f: str | None, geometry: str | None = None) -> Response:
-    """The rows under ``zone`` rolled up to its sub-zones at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON)."""
+              f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID) -> Response:
+    """The rows under ``zone`` rolled up to its sub-zones at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON).
+
+    Only under the DGGRS the store's data were binned with (404 naming it under the other).
+    """
+    check_data_dggrs(ctx, dggrs_id)
     fmt = negotiate(request, f, DATA_FORMATS)
     mode = check_geometry(geometry)
     with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
-        return _zone_data(ctx, request, collection, zone, depth, fmt, mode)
+        return _zone_data(ctx, request, collection, zone, depth, fmt, mode, dggrs_id)
 
 
 def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-               fmt: str, mode: str) -> Response:
+               fmt: str, mode: str, dggrs_id: str) -> Response:
     summary = ctx.reader.summary()
     stored = summary.level
     level = dggs.get_level(zone)
@@ -195,8 +208,8 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
             for i, sub in enumerate(subs):
                 properties.append({"zoneID": sub, "depth": d, "level": level + d,
                                    **{p: data[p][i] for p in props}})
-        extra = {"dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}", "zoneId": zone,
-                 "depths": depths, "numberReturned": len(ids), "links": _links(request, collection, zone)}
+        extra = {"dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{dggrs_id}", "zoneId": zone,
+                 "depths": depths, "numberReturned": len(ids), "links": _links(request, collection, zone, dggrs_id)}
         return Response(feature_collection(ids, geoms, properties, extra), media_type=GEOJSON)
     count = {"type": "integer", "title": "rows in the sub-zone"}
     schema: dict[str, Any] = {"type": "object", "properties": {"count": count}}
@@ -208,9 +221,9 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
             for d, subs, data in per_depth]
         for p in props
     }
-    links = _links(request, collection, zone)
+    links = _links(request, collection, zone, dggrs_id)
     body = {
-        "dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}",
+        "dggrs": f"{base_url(request)}{_prefix(collection)}/dggs/{dggrs_id}",
         "zoneId": zone,
         "depths": depths,
         "schema": schema,
@@ -242,10 +255,12 @@ class ZoneQuery:
     geometry: str | None = None
 
 
-def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQuery, f: str | None) -> Response:
+def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQuery, f: str | None,
+               dggrs_id: str = DGGRS_ID) -> Response:
     """The zones at ``zone-level`` holding data: a page of them, inside ``parent-zone``, in ``bbox`` or ``subset``.
 
-    Compacted unless ``compact-zones=false``; ``limit`` zones from ``offset``.
+    Compacted unless ``compact-zones=false``; ``limit`` zones from ``offset``.  Only under the DGGRS the
+    store's data were binned with (its grid draws the zones met by ``bbox``).
 
     Raises
     ------
@@ -254,7 +269,10 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
         a ``limit`` below 1, a negative ``offset``, or another parameter that is not valid (named).
     TooManyZones
         If more zones hold data than the server's ``max_zones`` limit allows.
+    NotFound
+        Under the DGGRS the store's data were not binned with (naming the one they were).
     """
+    check_data_dggrs(ctx, dggrs_id)
     fmt = negotiate(request, f, ("json", "geojson", "uint64"))
     geometry = check_geometry(q.geometry)
     check_crs("bbox-crs", q.bbox_crs)  # /req/zone-query/bbox-crs
@@ -299,8 +317,8 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
     per_level = zip(*np.unique(levels, return_counts=True), strict=True)
     area = float(sum(float(dggs.cell_area(int(lv))) * int(n) for lv, n in per_level))
     media = GEOJSON if fmt == "geojson" else "application/json"
-    links = _links(request, collection) + page_links(request, q.offset, q.limit, len(zones), matched, media)
-    templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{DGGRS_ID}/zones/{{zoneId}}/data",
+    links = _links(request, collection, None, dggrs_id) + page_links(request, q.offset, q.limit, len(zones), matched, media)
+    templates = [{"uriTemplate": f"{base_url(request)}{_prefix(collection)}/dggs/{dggrs_id}/zones/{{zoneId}}/data",
                   "rel": REL + "dggrs-zone-data", "type": "application/json"}]
     if fmt == "geojson":
         texts = geometry_texts(ctx.reader, zones, geometry)
@@ -347,33 +365,33 @@ def register(app: FastAPI, ctx: Context) -> None:
 
     def info(request: Request, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
         check_dggrs(dggrsId)
-        return zone_info(ctx, request, None, parse_zone(zoneId), f)
+        return zone_info(ctx, request, None, parse_zone(zoneId), f, dggrsId)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
              geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry)
+        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
 
     def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F_ZONES) -> Response:
         check_dggrs(dggrsId)
-        return zones_list(ctx, request, None, q, f)
+        return zones_list(ctx, request, None, q, f, dggrsId)
 
     def c_info(request: Request, collectionId: str, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zone_info(ctx, request, collectionId, parse_zone(zoneId), f)
+        return zone_info(ctx, request, collectionId, parse_zone(zoneId), f, dggrsId)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
                geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry)
+        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
 
     def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
                 f: str | None = _F_ZONES) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zones_list(ctx, request, collectionId, q, f)
+        return zones_list(ctx, request, collectionId, q, f, dggrsId)
 
     for prefix, tag, handlers in (
         ("", "DGGS", (zones, info, data)),
