@@ -38,6 +38,7 @@ from dggs.index.grid import grid_disk
 from dggs.index.hierarchy import cell_to_children, cell_to_parent, get_level, is_valid_cell
 from dggs.index.ids import int_to_str, str_to_int
 from dggs.index.measure import cell_area
+from dggs.index.paths import grid_path_cells
 from dggs.index.points import cell_to_latlng, cell_to_polygon, latlng_to_cell
 from dggs.index.polyfill import polygon_to_cells
 
@@ -56,6 +57,7 @@ FUNCTIONS: dict[str, tuple[str, str, str]] = {
     "dggs_cell_to_latlng": ("(cell)", _LATLNG, "centre"),
     "dggs_cell_to_boundary_wkb": ("(cell)", "binary", "WKB (Multi)Polygon, lng/lat"),
     "dggs_grid_disk": ("(cell, k)", "array<bigint>", "cells within k edge steps, sorted"),
+    "dggs_grid_path_cells": ("(a, b)", "array<bigint>", "a shortest path of edge neighbours from a to b"),
     "dggs_polygon_to_cells": ("(wkb, level, mode)", "array<bigint>", "polygon fill: center, contains, overlaps"),
     "dggs_cell_area": ("(cell)", "double", "area in m^2 on WGS84"),
     "dggs_get_level": ("(cell)", "int", "level 0..28"),
@@ -167,6 +169,14 @@ def _disk(cell: Any, k: Any) -> Any:
     return _ragged(_nums(k, np.int64), lambda r, kk: _padded(grid_disk(ids[r], kk)))
 
 
+def _path(a: Any, b: Any) -> Any:
+    ia, ib = _ids(a), _ids(b)
+    rows = [np.asarray(p, np.uint64) for p in grid_path_cells(ia, ib)] if ia.size else []
+    flat = np.concatenate(rows) if rows else np.zeros(0, np.uint64)
+    offsets = np.concatenate([[0], np.cumsum([r.size for r in rows])]).astype(np.int32)
+    return pa.ListArray.from_arrays(pa.array(offsets), pa.array(flat.view(np.int64)))
+
+
 def _centre(cell: Any) -> Any:
     ids = _ids(cell)
     lat, lng = cell_to_latlng(ids) if ids.size else (np.zeros(0), np.zeros(0))
@@ -221,6 +231,7 @@ _COMPUTE: dict[str, Callable[..., Any]] = {
     "dggs_cell_to_latlng": _centre,
     "dggs_cell_to_boundary_wkb": _wkb,
     "dggs_grid_disk": _disk,
+    "dggs_grid_path_cells": _path,
     "dggs_polygon_to_cells": _polyfill,
     "dggs_cell_area": _area,
     "dggs_get_level": _level,

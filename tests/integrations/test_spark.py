@@ -88,6 +88,25 @@ def test_batch_parent_children_disk(strings, kind):
     assert disks == [sorted(dggs.grid_disk(int(i), 1)) for i in ids]
 
 
+@given(st.lists(st.tuples(cells(min_level=1, max_level=12), st.integers(0, 3), st.integers(0, 400)), min_size=1,
+                max_size=8), st.sampled_from(["int", "str"]))
+@example([("A0", 1, 0), ("T5", 3, 7), ("E2", 2, 3)], "str")  # across face edges
+@example([("C401", 0, 0), ("K52222", 3, 11)], "int")
+def test_batch_grid_path_cells(starts, kind):
+    """Each row's path is the Python API's, and it is a chain of edge neighbours of the right length."""
+    a_ids, b_ids = [], []
+    for start, k, pick in starts:
+        ring = dggs.grid_disk(start, k)  # the other end: a cell within k steps (a brute-force choice)
+        a_ids.append(dggs.str_to_int(start))
+        b_ids.append(dggs.str_to_int(ring[pick % len(ring)]))
+    a, b = (_as_kind(np.array(x, np.uint64).view(np.int64), kind) for x in (a_ids, b_ids))
+    got = batch_function("dggs_grid_path_cells")(a, b).to_pylist()
+    for path, x, y in zip(got, a_ids, b_ids, strict=True):
+        assert path == [int(c) for c in dggs.grid_path_cells(x, y)]
+        assert path[0] == x and path[-1] == y and len(path) == dggs.grid_distance(x, y) + 1
+        assert all(dggs.are_neighbor_cells(p, q) for p, q in zip(path, path[1:], strict=False))
+
+
 @given(st.lists(st.sampled_from(["C401", "Q9", "B2", "", "Z0", "A00000"]), min_size=1, max_size=12),
        st.sampled_from(["int", "str"]))
 @example(["C401", "Q9"], "str")
@@ -174,6 +193,8 @@ def test_spark_points_equal_python_api(spark):
 
 @pytestmark_spark
 def test_spark_cell_functions_equal_python_api(spark):
+    from pyspark.sql import functions as F
+
     import dggs.spark as ds
 
     lat, lng = _points(300, seed=5)
@@ -196,6 +217,12 @@ def test_spark_cell_functions_equal_python_api(spark):
     assert np.array_equal(out.column("int").to_numpy(), ids)
     sql = spark.sql("SELECT dggs_cell_area(5392473139689029632) AS a, dggs_get_level('F200021102') AS lv").first()
     assert sql.a == pytest.approx(float(dggs.cell_area("F200021102")), rel=0) and sql.lv == 9
+    path = spark.sql("SELECT dggs_grid_path_cells('A0', 'E2') AS p").first().p
+    assert path == [dggs.str_to_int(c) for c in dggs.grid_path_cells("A0", "E2")]
+    far = F.element_at(ds.grid_disk("c", 2), -1)  # the last of the sorted disk: some cell within 2 steps
+    paths = df.select("i", ds.grid_path_cells("c", far).alias("p")).toArrow().sort_by("i").column("p").to_pylist()
+    assert paths == [[int(x) for x in dggs.grid_path_cells(int(c), int(sorted(dggs.grid_disk(int(c), 2))[-1]))]
+                     for c in ids]
 
 
 @pytestmark_spark
