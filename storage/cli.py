@@ -96,6 +96,8 @@ def _value_types(values: tuple[str, ...]) -> list[str] | dict[str, str]:
 @click.option("--layer", default=None,
               help="Layer of a GeoPackage (or other multi-layer file) [default: the first].")
 @click.option("--progress/--no-progress", default=None, help="Progress bar [default: on a terminal].")
+@click.option("--projection", type=click.Choice(["ISEA", "IVEA"], case_sensitive=False), default=None,
+              help="Grid to bin on, recorded in a new store [default: the store's, or ISEA].")
 def bin_(
     input_path: str,
     db: str,
@@ -110,6 +112,7 @@ def bin_(
     encoding: str,
     layer: str | None,
     progress: bool | None,
+    projection: str | None,
 ) -> None:
     """Bin the points of INPUT into cells and store them in DB.
 
@@ -140,7 +143,7 @@ def bin_(
         kind, input_path, new_store=not Path(db).exists(), lat=lat, lng=lng, values=declared, crs=crs,
         encoding=encoding, layer=layer, level=level, batch_size=batch_size, on_error=on_error,
     )
-    with CellStore(db) as store, warnings.catch_warnings():
+    with CellStore(db, projection=projection) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(
             level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=bar.update
@@ -158,8 +161,8 @@ def bin_(
                 result = store.ingest_geojson(input_path, values=declared or None, **common)
         finally:
             bar.close()
-        stored_level = store.level
-    click.echo(f"{result.summary()} -> {db} (level {stored_level})")
+        stored_level, grid = store.level, store.projection
+    click.echo(f"{result.summary()} -> {db} (level {stored_level}{'' if grid == 'ISEA' else ', ' + grid})")
     if result.rows_read and result.seconds:
         click.echo(f"{result.seconds:.2f} s, {result.rows_per_second:,.0f} rows/s")
     if result.rows_rejected:
@@ -306,6 +309,7 @@ def info(db: str, as_json: bool) -> None:
     click.echo(f"rows        {data['count']:,}" + (f"  ({data['pending']:,} not merged yet)" if data["pending"] else ""))
     click.echo(f"columns     {', '.join(f'{k} {v}' for k, v in data['columns'].items()) or '(none)'}")
     click.echo(f"crs         {data['crs']}   schema v{data['schema_version']}, dggs {data['dggs_version']}")
+    click.echo(f"projection  {data['projection']}")
     click.echo(f"created     {data['created']}   updated {data['updated']}")
     click.echo(f"sources     {len(data['sources'])}")
     if data["rollup_levels"]:

@@ -183,3 +183,28 @@ def test_polygons_refused_on_ivea(tmp_path):
         with pytest.raises(DggsValueError, match="ISEA"):
             store.ingest_geojson(path, level=5)
         assert store.count() == 0
+
+
+def test_cli_bin_projection(tmp_path):
+    from click.testing import CliRunner
+
+    from dggs.cli import main
+
+    csv = tmp_path / "p.csv"
+    csv.write_text("lat,lng,v\n51.05,-114.07,1\n-33.9,151.2,2\n0.0,-180.0,3\n")
+    db = tmp_path / "p.db"
+    runner = CliRunner()
+    done = runner.invoke(main, ["bin", str(csv), "--db", str(db), "--level", "9", "--projection", "ivea"])
+    assert done.exit_code == 0, done.output
+    assert "IVEA" in done.output
+    with CellStore(db) as store:
+        assert store.projection == "IVEA"
+        cells, lat, lng = _stored(store)
+    assert _inside(IVEA, cells, lat, lng).all()
+    info = runner.invoke(main, ["info", str(db)])
+    assert "projection  IVEA" in info.output
+    again = runner.invoke(main, ["bin", str(csv), "--db", str(db), "--level", "9", "--projection", "ISEA"])
+    assert again.exit_code != 0
+    assert "IVEA" in again.output and "ISEA" in again.output
+    bad = runner.invoke(main, ["bin", str(csv), "--db", str(tmp_path / "q.db"), "--projection", "HEALPIX"])
+    assert bad.exit_code != 0 and "HEALPIX" in bad.output
