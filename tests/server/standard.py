@@ -74,7 +74,7 @@ def corrected() -> dict[str, Any]:
     geo["schema"]["allOf"][1] = {"$ref": "#/components/schemas/zone-feature"}
     # deviation 5: the bundled file is the example server's API; its path parameters enumerate that server's
     # DGGRSs and collections.  An implementation's own definition lists its own: this server's.
-    schemas["all-dggrs"] = {"type": "string", "enum": [DGGRS]}
+    schemas["all-dggrs"] = {"type": "string", "enum": [DGGRS, "DGGS-Split26-IVEA"]}
     schemas["all-collections"] = {"type": "string", "enum": ["sample"]}
     zones = ok_content(doc, "/dggs/{dggrsId}/zones")
     zones["application/x-binary"] = {"schema": {"type": "string", "format": "binary"}}  # deviation 6

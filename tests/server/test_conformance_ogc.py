@@ -140,11 +140,45 @@ for _prefix in (ROOT, COLL):
         f"{_prefix}/zones?zone-level=5&parent-zone=C52&compact-zones=false&limit=20&offset=5&f=uint64",
         f"{_prefix}/zones/C52/data?zone-depth=0-2&f=ubjson",
     ]
+IVEA_ROOT, IVEA_COLL = ROOT.replace("ISEA", "IVEA"), COLL.replace("ISEA", "IVEA")
+# The second DGGRS over this ISEA store: described, and zone information drawn on IVEA; no data under it.
+ROUTES += [IVEA_ROOT, f"{IVEA_ROOT}/zones/C401", f"{IVEA_ROOT}/zones/A?f=geojson"]
 ERRORS = [
     "/collections/nope", "/dggs/nope", f"{ROOT}/zones/X9", f"{ROOT}/zones/C4/data?zone-depth=x",
     f"{ROOT}/zones?subset=Foo(1:2)", f"{ROOT}/zones?subset=Lat(1:2)&bbox=0,0,1,1", f"{ROOT}/zones?bbox-crs=EPSG:3857",
     f"{ROOT}/zones?geometry=hexagon", f"{ROOT}/zones?parent-zone=X9",
+    f"{IVEA_ROOT}/zones/C4/data", f"{IVEA_ROOT}/zones?zone-level=3", IVEA_COLL, f"{IVEA_COLL}/zones/C4/data",
 ]
+#: Every route over a store binned on IVEA, under DGGS-Split26-IVEA (and the data routes of ISEA refused).
+IVEA_ROUTES = [url.replace(ROOT, IVEA_ROOT).replace(COLL, IVEA_COLL) for url in ROUTES if IVEA_ROOT not in url]
+IVEA_ERRORS = [f"{ROOT}/zones/C4/data", f"{ROOT}/zones", COLL, f"{COLL}/zones?zone-level=3"]
+
+
+@pytest.fixture(scope="module")
+def ivea_client(tmp_path_factory, points):
+    import numpy as np
+
+    from dggs.server.app import create_app
+    from dggs.storage import CellStore
+
+    from .conftest import LEVEL, TestClient
+
+    path = tmp_path_factory.mktemp("ivea") / "sample.db"
+    with CellStore(path, projection="IVEA") as store:
+        store.ingest_points(points.lat, points.lng, LEVEL,
+                            {"pop": points.pop, "temp": points.temp, "name": np.array(["p"] * len(points.lat))})
+    with TestClient(create_app(path)) as c:
+        yield c
+
+
+@pytest.mark.parametrize("url", IVEA_ROUTES)
+def test_every_ivea_route_validates_against_the_standard(ivea_client, url):
+    assert check(ivea_client, url).status_code == 200
+
+
+@pytest.mark.parametrize("url", IVEA_ERRORS)
+def test_isea_data_routes_of_an_ivea_store_are_the_standards_exception(ivea_client, url):
+    assert check(ivea_client, url).status_code == 404
 
 
 @pytest.mark.parametrize("url", ROUTES)
