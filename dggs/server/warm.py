@@ -25,12 +25,13 @@ def warm_kernels() -> None:
 
     ids = np.array(["A0", "C4012", "E", "R", "E0"])  # E and R have a pole on an edge: their own ring builder
     many = np.asarray(dggs.uncompact_cells(["A"], 8))  # 13,122 cells: above the threshold of the threaded kernels
-    for cells in (ids, many):
-        dggs.cell_to_latlng(cells)
-        for densify in sorted({map_densify(level) for level in range(dggs.MAX_LEVEL + 1)}):
-            shapely.to_geojson(dggs.cell_to_polygon(cells, densify=densify))
-    dggs.cell_to_latlng("A0")
-    dggs.cell_to_polygon("A0")
+    for grid in (dggs.Grid("ISEA"), dggs.Grid("IVEA")):  # both DGGRS draw zones (dggrs.py)
+        for cells in (ids, many):
+            grid.cell_to_latlng(cells)
+            for densify in sorted({map_densify(level) for level in range(dggs.MAX_LEVEL + 1)}):
+                shapely.to_geojson(grid.cell_to_polygon(cells, densify=densify))
+        grid.cell_to_latlng("A0")
+        grid.cell_to_polygon("A0")
     dggs.cell_to_children("A0")
     dggs.cell_to_children("A0", 3)
     dggs.edge_neighbors("A0")
