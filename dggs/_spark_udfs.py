@@ -34,6 +34,7 @@ import pyarrow as pa
 import shapely
 
 from dggs.errors import DggsValueError, InvalidCellError
+from dggs.index.dissolve import cells_to_polygons
 from dggs.index.grid import grid_disk
 from dggs.index.hierarchy import cell_to_children, cell_to_parent, get_level, is_valid_cell
 from dggs.index.ids import int_to_str, str_to_int
@@ -58,6 +59,7 @@ FUNCTIONS: dict[str, tuple[str, str, str]] = {
     "dggs_cell_to_boundary_wkb": ("(cell)", "binary", "WKB (Multi)Polygon, lng/lat"),
     "dggs_grid_disk": ("(cell, k)", "array<bigint>", "cells within k edge steps, sorted"),
     "dggs_grid_path_cells": ("(a, b)", "array<bigint>", "a shortest path of edge neighbours from a to b"),
+    "dggs_cells_to_polygons_wkb": ("(cells)", "binary", "WKB outline of an array of cells' union, lng/lat"),
     "dggs_polygon_to_cells": ("(wkb, level, mode)", "array<bigint>", "polygon fill: center, contains, overlaps"),
     "dggs_cell_area": ("(cell)", "double", "area in m^2 on WGS84"),
     "dggs_get_level": ("(cell)", "int", "level 0..28"),
@@ -177,6 +179,16 @@ def _path(a: Any, b: Any) -> Any:
     return pa.ListArray.from_arrays(pa.array(offsets), pa.array(flat.view(np.int64)))
 
 
+def _dissolve(cells: Any) -> Any:
+    """One WKB outline per row of a list<id> array (NULL elements skipped): each row is its own set."""
+    out = []
+    for i in range(len(cells)):
+        values = cells[i].values
+        ids = _ids(values.drop_null()) if values is not None and len(values) else np.zeros(0, np.uint64)
+        out.append(shapely.to_wkb(cells_to_polygons(ids)))
+    return pa.array(out, type=pa.binary())
+
+
 def _centre(cell: Any) -> Any:
     ids = _ids(cell)
     lat, lng = cell_to_latlng(ids) if ids.size else (np.zeros(0), np.zeros(0))
@@ -232,6 +244,7 @@ _COMPUTE: dict[str, Callable[..., Any]] = {
     "dggs_cell_to_boundary_wkb": _wkb,
     "dggs_grid_disk": _disk,
     "dggs_grid_path_cells": _path,
+    "dggs_cells_to_polygons_wkb": _dissolve,
     "dggs_polygon_to_cells": _polyfill,
     "dggs_cell_area": _area,
     "dggs_get_level": _level,

@@ -63,7 +63,8 @@ if not hasattr(F, "arrow_udf"):  # pragma: no cover - pyspark < 4.1
 __all__ = [
     "FUNCTIONS", "register", "local_session", "session_config", "spark_errors", "rollup", "write_geoparquet",
     "latlng_to_cell", "latlng_to_cell_str", "cell_to_parent", "cell_to_parent_str", "cell_to_children",
-    "cell_to_latlng", "cell_to_boundary_wkb", "grid_disk", "grid_path_cells", "polygon_to_cells", "cell_area", "get_level",
+    "cell_to_latlng", "cell_to_boundary_wkb", "grid_disk", "grid_path_cells", "cells_to_polygons_wkb",
+    "polygon_to_cells", "cell_area", "get_level",
     "is_valid_cell", "str_to_int", "int_to_str",
 ]
 
@@ -288,6 +289,11 @@ def grid_disk(cell: Any, k: Any, *, on_invalid: str = "raise") -> Any:
 def grid_path_cells(a: Any, b: Any, *, on_invalid: str = "raise") -> Any:
     """Column of arrays: a shortest path of edge neighbours from ``a`` to ``b``, both included (``dggs_grid_path_cells``)."""
     return _call("dggs_grid_path_cells", on_invalid, _col(a), _col(b))
+
+
+def cells_to_polygons_wkb(cells: Any, *, on_invalid: str = "raise") -> Any:
+    """Column of WKB outlines of each row's array of cells (``dggs_cells_to_polygons_wkb``; e.g. of ``collect_list``)."""
+    return _call("dggs_cells_to_polygons_wkb", on_invalid, _col(cells))
 
 
 def polygon_to_cells(wkb: Any, level: Any, mode: Any = "center", *, on_invalid: str = "raise") -> Any:

@@ -107,6 +107,22 @@ def test_batch_grid_path_cells(starts, kind):
         assert all(dggs.are_neighbor_cells(p, q) for p, q in zip(path, path[1:], strict=False))
 
 
+@given(st.lists(st.lists(cells(min_level=1, max_level=6), max_size=12) | st.none(), min_size=1, max_size=5),
+       st.sampled_from(["int", "str"]))
+@example([["A0", "A1", "A2", "A3", "A4", "A5"], None, []], "int")  # a whole face; a NULL row; an empty set
+@example([[c for c in dggs.get_base_cells()], ["E5", "J4"]], "str")  # the whole sphere; across the antimeridian
+def test_batch_cells_to_polygons_wkb(rows, kind):
+    """Each row's WKB is the Python API's outline of that row's set; NULL rows give NULL."""
+    typ = pa.list_(pa.string() if kind == "str" else pa.int64())
+    values = [None if r is None else (r if kind == "str" else [dggs.str_to_int(c) for c in r]) for r in rows]
+    got = batch_function("dggs_cells_to_polygons_wkb")(pa.array(values, typ)).to_pylist()
+    for wkb, r in zip(got, rows, strict=True):
+        if r is None:
+            assert wkb is None
+        else:
+            assert shapely.equals_exact(shapely.from_wkb(wkb), dggs.cells_to_polygons(r), tolerance=0)
+
+
 @given(st.lists(st.sampled_from(["C401", "Q9", "B2", "", "Z0", "A00000"]), min_size=1, max_size=12),
        st.sampled_from(["int", "str"]))
 @example(["C401", "Q9"], "str")
@@ -219,6 +235,9 @@ def test_spark_cell_functions_equal_python_api(spark):
     assert sql.a == pytest.approx(float(dggs.cell_area("F200021102")), rel=0) and sql.lv == 9
     path = spark.sql("SELECT dggs_grid_path_cells('A0', 'E2') AS p").first().p
     assert path == [dggs.str_to_int(c) for c in dggs.grid_path_cells("A0", "E2")]
+    df.createOrReplaceTempView("cells")
+    outline = spark.sql("SELECT dggs_cells_to_polygons_wkb(collect_list(c)) AS w FROM cells").first().w
+    assert shapely.equals(shapely.from_wkb(outline), dggs.cells_to_polygons(ids))
     far = F.element_at(ds.grid_disk("c", 2), -1)  # the last of the sorted disk: some cell within 2 steps
     paths = df.select("i", ds.grid_path_cells("c", far).alias("p")).toArrow().sort_by("i").column("p").to_pylist()
     assert paths == [[int(x) for x in dggs.grid_path_cells(int(c), int(sorted(dggs.grid_disk(int(c), 2))[-1]))]
