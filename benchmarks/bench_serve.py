@@ -15,6 +15,7 @@ Run::
 
     .venv-bench/bin/python benchmarks/bench_serve.py                # 16 clients, 20 s
     .venv-bench/bin/python benchmarks/bench_serve.py --clients 4 --seconds 5
+    .venv-bench/bin/python benchmarks/bench_serve.py --projection IVEA   # a store binned on IVEA, its DGGRS
 """
 
 from __future__ import annotations
@@ -39,7 +40,7 @@ import numpy as np
 import dggs
 from dggs.storage import CellStore
 
-DGGRS = "DGGS-Split26-ISEA"
+DGGRS = "DGGS-Split26-ISEA"  # DGGS-Split26-IVEA with --projection IVEA (the store's DGGRS)
 
 #: The writer: appends sources of 50,000 rows in batches until told to stop.
 WRITER = r"""
@@ -135,14 +136,17 @@ def main() -> None:
     ap.add_argument("--rows", type=int, default=200_000, help="rows in the store before the test")
     ap.add_argument("--level", type=int, default=9)
     ap.add_argument("--batch", type=int, default=5_000, help="rows per batch of the concurrent ingest")
+    ap.add_argument("--projection", choices=["ISEA", "IVEA"], default="ISEA", help="the grid the store bins on")
     args = ap.parse_args()
+    global DGGRS
+    DGGRS = f"DGGS-Split26-{args.projection}"
 
     with tempfile.TemporaryDirectory() as tmp:
         db = Path(tmp) / "load.db"
         rng = np.random.default_rng(0)
         lat = np.degrees(np.arcsin(rng.uniform(-1, 1, args.rows)))
         lng = rng.uniform(-180, 180, args.rows)
-        with CellStore(db) as store:
+        with CellStore(db, projection=args.projection) as store:  # the writer reads it from the file
             store.ingest_points(lat, lng, args.level, {"pop": rng.integers(0, 1000, args.rows)})
             start_count = store.count()
         port = free_port()
@@ -186,7 +190,7 @@ def main() -> None:
     counts = merged.pop("counts", [])
     total = sum(len(v) for v in merged.values())
     print(f"### `dggs serve` under load ({args.clients} clients, {args.seconds:.0f} s, "
-          f"while an ingest writes)\n")
+          f"while an ingest writes{'' if args.projection == 'ISEA' else ', ' + DGGRS})\n")
     print(f"One `dggs serve` process (uvicorn, one worker) on 127.0.0.1 over a store of {args.rows:,} random points "
           f"at level {args.level}; {args.clients} client threads in another process, each on one keep-alive "
           f"connection, for {args.seconds:.0f} s; meanwhile a third process ingested "
