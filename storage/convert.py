@@ -17,7 +17,6 @@ from typing import Any
 import numpy as np
 
 import dggs
-from dggs.errors import DggsValueError
 
 from .crs import transform_points
 from .readers import RawBatch
@@ -315,9 +314,6 @@ def prepare(
     keep = np.flatnonzero(good)
     all_good = len(keep) == n
     known = np.asarray(batch.cells, dtype=object) if batch.cells is not None else None
-    if known is not None and locate is not dggs.latlng_to_cell and (known != "").any():
-        raise DggsValueError("polygon features are binned on ISEA only; a store binned on another projection "
-                             "takes points (ingest the polygons' points, or use an ISEA store)")
     if all_good and known is None:  # the common case: every row good, no cell given
         cells: Any = locate(lat, lng, level) if n else np.empty(0, dtype=object)
     else:

@@ -112,7 +112,8 @@ def ingest_geojson(
         kind="geojson",
         name=str(path),
         params={"format": "geojson", "values": names},
-        batches=lambda skip, types: readers_geojson.geojson_batches(features, names, level, batch_size, skip),
+        batches=lambda skip, types: readers_geojson.geojson_batches(
+            features, names, level, batch_size, skip, store.projection),
         level=level,
         declared=declared,
         options=options,
@@ -152,7 +153,7 @@ def ingest_vector(
         name=name,
         params={"format": "vector", "layer": layer, "values": names},
         batches=lambda skip, types: readers_vector.vector_batches(
-            file, layer, names, level, batch_size, skip, crs
+            file, layer, names, level, batch_size, skip, crs, store.projection
         ),
         level=level,
         declared=declared,

@@ -129,14 +129,19 @@ def feature_problem(feature: Any) -> tuple[Any, str] | None:
     return None
 
 
-def _add_cells(add: Any, row: int, prop: dict[str, Any], polygon: Any, level: int, bad: dict, at: int) -> None:
-    """One entry per cell whose centre ``polygon`` holds, at its centre; a bad entry if it holds none."""
-    found = dggs.polygon_to_cells(polygon, level)
+def _add_cells(add: Any, row: int, prop: dict[str, Any], polygon: Any, level: int, bad: dict, at: int,
+               grid: Any = None) -> None:
+    """One entry per cell whose centre ``polygon`` holds, at its centre; a bad entry if it holds none.
+
+    The cells are ``grid``'s (default ISEA's): the store's grid.
+    """
+    grid = dggs.Grid() if grid is None else grid
+    found = grid.polygon_to_cells(polygon, level)
     if not len(found):
         bad[at] = (None, polygon.geom_type, f"polygon holds no cell centre at level {level}")
         add(row, None, None, "", prop)
         return
-    clat, clng = dggs.cell_to_latlng(np.asarray(found))
+    clat, clng = grid.cell_to_latlng(np.asarray(found))
     triples = zip(np.asarray(found).tolist(), np.ravel(clat).tolist(), np.ravel(clng).tolist(), strict=True)
     for part, (cell, y, x) in enumerate(triples):
         add(row, y, x, cell, prop, part)
@@ -148,8 +153,9 @@ def geojson_batches(
     level: int,
     batch_size: int,
     skip: int = 0,
+    projection: str = "ISEA",
 ) -> Iterator[RawBatch]:
-    """Cut GeoJSON features into batches: points as they are, polygons as cells.
+    """Cut GeoJSON features into batches: points as they are, polygons as cells (of ``Grid(projection)``).
 
     A ``Polygon``/``MultiPolygon`` feature becomes one entry per cell at
     ``level`` whose centre lies inside it (:func:`dggs.polygon_to_cells`),
@@ -163,6 +169,7 @@ def geojson_batches(
     from shapely.errors import ShapelyError
     from shapely.geometry import shape
 
+    grid = dggs.Grid(projection)
     for start in range(skip, len(features), batch_size):
         chunk = features[start : start + batch_size]
         rows: list[int] = []
@@ -204,7 +211,8 @@ def geojson_batches(
                     for part, (x, y, *_) in enumerate(coords):
                         add(row, y, x, "", prop, part)
                 else:
-                    _add_cells(add, row, prop, shape({"type": kind, "coordinates": coords}), level, bad, len(rows))
+                    _add_cells(add, row, prop, shape({"type": kind, "coordinates": coords}), level, bad, len(rows),
+                               grid)
             except _Malformed as exc:
                 bad[len(rows)] = (None, kind, f"geometry is malformed: {exc}")
                 add(row, None, None, "", prop)

@@ -183,11 +183,13 @@ def vector_batches(
     batch_size: int,
     skip: int = 0,
     crs: Any = None,
+    projection: str = "ISEA",
 ) -> Iterator[RawBatch]:
     """Stream a layer's features as batches: points as they are, polygons as cells.
 
     ``crs`` is the layer's CRS (default: what the file says; WGS84 if it
     says nothing).  Records are features, numbered from 1 in layer order.
+    Polygons are filled with the cells of ``dggs.Grid(projection)``.
     """
     import shapely
 
@@ -201,7 +203,7 @@ def vector_batches(
         if transformer is not None:
             geoms = shapely.transform(geoms, lambda xy: _apply(transformer, xy))
         features = _features(geoms, values, props)
-        for raw in geojson_batches(features, values, level, n):
+        for raw in geojson_batches(features, values, level, n, projection=projection):
             raw.rows = [r + done for r in raw.rows]
             yield raw
         done += n

@@ -172,18 +172,36 @@ def test_exports_draw_the_store_grid():
         assert got.symmetric_difference(want).area < 1e-9
 
 
-def test_polygons_refused_on_ivea(tmp_path):
+def test_polygons_filled_with_ivea_cells(tmp_path):
     import json
 
+    ring = [[-179.0, 60.0], [179.0, 60.0], [179.0, 70.0], [-179.0, 70.0], [-179.0, 60.0]]  # across the antimeridian
     square = {"type": "Feature", "properties": {"v": 1},
               "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [5, 0], [5, 5], [0, 5], [0, 0]]]}}
+    polar = {"type": "Feature", "properties": {"v": 2}, "geometry": {"type": "Polygon", "coordinates": [ring]}}
     path = tmp_path / "square.geojson"
-    path.write_text(json.dumps({"type": "FeatureCollection", "features": [square]}))
+    path.write_text(json.dumps({"type": "FeatureCollection", "features": [square, polar]}))
     with CellStore(projection="IVEA") as store:
-        with pytest.raises(DggsValueError, match="ISEA"):
-            store.ingest_geojson(path, level=5)
-        assert store.count() == 0
+        store.ingest_geojson(path, level=6)
+        rows = list(store.conn.execute("SELECT cell, lat, lng, v FROM all_points"))
+    box = shapely.box(0, 0, 5, 5)
+    cells = [r[0] for r in rows if r[3] == 1]
+    # brute force: every level-6 cell whose IVEA centre lies in the square, among the square's neighbourhood
+    near = dggs.uncompact_cells(list(dict.fromkeys(dggs.Grid("IVEA").latlng_to_cell(
+        np.repeat(np.linspace(-1, 6, 30), 30), np.tile(np.linspace(-1, 6, 30), 30), 3).tolist())), 6)
+    clat, clng = IVEA.cell_to_latlng(np.asarray(near))
+    want = {c for c, y, x in zip(near, clat, clng, strict=True) if box.contains(shapely.Point(x, y))}
+    assert set(cells) == want
+    # each row sits at its cell's IVEA centre, inside the polygons
+    lat = np.array([r[1] for r in rows])
+    lng = np.array([r[2] for r in rows])
+    assert _inside(IVEA, [r[0] for r in rows], lat, lng).all()
+    assert any(r[3] == 2 for r in rows)
 
+
+def test_rasters_refused_on_ivea():
+    with CellStore(projection="IVEA") as store, pytest.raises(DggsValueError, match="IVEA"):
+        store.ingest_raster("no-such-raster.tif", 5)
 
 def test_cli_bin_projection(tmp_path):
     from click.testing import CliRunner
