@@ -295,3 +295,19 @@ def test_ivea_gives_back_isea_kinds_and_no_drift(name, how):
             assert lone.equals(one[0])
         else:
             np.testing.assert_array_equal(np.ravel(np.asarray(lone, dtype=float)), np.ravel(np.asarray(one, dtype=float)))
+
+
+def test_local_ij_is_topological_the_face_corners_do_not_move():
+    """Local ij unfolds the icosahedron by its faces' corners only (index/_kernel/local.py ``_unfold_tables``):
+    both projections put each planar corner on the same icosahedron vertex, so local ij is the same on both grids."""
+    from dggs.geometry import kernel
+
+    frames = np.ascontiguousarray(kernel.ISEA_FRAMES)
+    for face in range(20):
+        for x, y in kernel.FACE_CORNERS_CCW:
+            a = np.array(kernel.inverse_unit(frames, face, x, y))
+            b = np.array(ivea.face_inverse(frames, face, x, y))
+            assert np.abs(a - b).max() < 1e-14, (face, x, y)
+    anchor = "C4012" + "0" * 6
+    for cell in dggs.grid_disk(anchor, 3):
+        assert IVEA.local_ij_to_cell(anchor, *IVEA.cell_to_local_ij(anchor, cell)) == cell
