@@ -3,8 +3,8 @@
 The contract the front end (``static/index.html``) relies on:
 
 - ``GET /map/layers`` gives ``{"collection", "stored_level", "levels": [0..L], "columns": {name: SQL type},
-  "numeric_columns", "bbox": [w, s, e, n], "count", "max_zones"}``; ``max_zones`` is the most features
-  ``/map/cells`` returns.
+  "numeric_columns", "bbox": [w, s, e, n], "count", "max_zones", "dggrs"}``; ``max_zones`` is the most
+  features ``/map/cells`` returns, ``dggrs`` the DGGRS the store's data are served under (its zone information).
 - ``GET /map/cells?level=L&bbox=w,s,e,n&column=C&stat=count|sum|mean|min|max`` gives a GeoJSON
   FeatureCollection, one feature per non-empty cell at level ``L`` whose polygon meets the bbox (``w > e``
   crosses the antimeridian), with properties ``zone_id``, ``level``, ``area_km2``, ``count`` and ``value``
@@ -39,6 +39,7 @@ from fastapi.responses import JSONResponse, Response
 
 import dggs
 
+from .dggrs import dggrs_of
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
 from .params import Context, check_level, negotiate, parse_bbox
@@ -63,6 +64,7 @@ def layers(ctx: Context) -> dict[str, Any]:
         "bbox": list(summary.bbox) if summary.bbox is not None else [-180.0, -90.0, 180.0, 90.0],
         "count": summary.count,
         "max_zones": ctx.max_features,
+        "dggrs": dggrs_of(ctx.reader.projection),  # the popup's zone information: the grid the cells are drawn on
     }
 
 

@@ -16,7 +16,8 @@ from .standard import conforms
 # docs/serve.md: GET /map/layers.
 MAP_LAYERS: dict[str, Any] = {
     "type": "object",
-    "required": ["collection", "stored_level", "levels", "columns", "numeric_columns", "bbox", "count", "max_zones"],
+    "required": ["collection", "stored_level", "levels", "columns", "numeric_columns", "bbox", "count", "max_zones",
+                 "dggrs"],
     "additionalProperties": False,
     "properties": {
         "collection": {"type": "string"},
@@ -27,6 +28,7 @@ MAP_LAYERS: dict[str, Any] = {
         "bbox": {"type": "array", "minItems": 4, "maxItems": 4, "items": {"type": "number"}},
         "count": {"type": "integer", "minimum": 0},
         "max_zones": {"type": "integer", "minimum": 1},
+        "dggrs": {"enum": ["DGGS-Split26-ISEA", "DGGS-Split26-IVEA"]},
     },
 }
 

@@ -417,6 +417,7 @@ def test_map_layers_contract(client, points):
         "bbox": pytest.approx([points.lng.min(), points.lat.min(), points.lng.max(), points.lat.max()]),
         "count": points.lat.shape[0],
         "max_zones": 50_000,
+        "dggrs": "DGGS-Split26-ISEA",
     }
 
 

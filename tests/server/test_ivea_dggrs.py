@@ -197,3 +197,15 @@ def test_an_isea_store_refuses_ivea_data(store_path):
     assert shape(info["geometry"]).symmetric_difference(IVEA.cell_to_polygon("C4")).area < 1e-9
     assert [d["id"] for d in client.get("/dggs").json()["dggrs"]] == [ISEA_ID, IVEA_ID]
     assert [d["id"] for d in client.get(f"/collections/{store_path.stem}/dggs").json()["dggrs"]] == [ISEA_ID]
+
+
+def test_the_map_draws_and_names_the_store_grid(url):
+    layers = get(f"{url}/map/layers")
+    assert layers["dggrs"] == IVEA_ID  # the popup's zone information comes from the store's DGGRS
+    cells = get(f"{url}/map/cells?level=2&bbox=-30,20,30,60")
+    assert cells["features"]
+    for feature in cells["features"]:
+        zone = feature["properties"]["zone_id"]
+        want = IVEA.cell_to_polygon(zone, densify=map_densify(2))
+        assert shape(feature["geometry"]).symmetric_difference(want).area < 1e-5 * want.area
+        assert feature["properties"]["count"] == len(dggs.uncompact_cells([zone], LEVEL))

@@ -28,7 +28,8 @@ const BORDER_COLOUR = '#5f7389';
 // Natural Earth 1:50m countries (world-atlas), read with topojson-client; both from npm, like MapLibre.
 const COUNTRIES_URL = new URL('./vendor/world-atlas/countries-50m.json', import.meta.url);
 const TOPOJSON_URL = new URL('./vendor/topojson-client/topojson-client.min.js', import.meta.url);
-const ZONES_PATH = 'dggs/DGGS-Split26-ISEA/zones/';
+// The zones of the DGGRS the store's data were binned with (map/layers says which; ISEA before it loads).
+const zonesPath = () => `dggs/${encodeURIComponent((layers && layers.dggrs) || 'DGGS-Split26-ISEA')}/zones/`;
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -579,7 +580,7 @@ async function showCell(feature, lngLat) {
   popup.setLngLat(lngLat).setDOMContent(box).addTo(map);
 
   try {
-    const response = await fetch(ZONES_PATH + encodeURIComponent(p.zone_id), {
+    const response = await fetch(zonesPath() + encodeURIComponent(p.zone_id), {
       headers: { Accept: 'application/json' },
     });
     if (!response.ok || state.selected !== p.zone_id) return;
