@@ -6,9 +6,13 @@ Leeuwen and Strebe's vertex-oriented great circle projection (IVEA,
 :mod:`dggs.geometry.ivea`).  Faces, face frames, planar triangles, the Split
 (2:6) hierarchy, both id forms, neighbours and cell areas (both maps are
 equal-area) are the same, so a :class:`Grid` answers those with the
-module-level verbs, and answers location, centres, boundaries and polygons
-with the point kernels of its projection (:mod:`dggs.index._kernel.ivea_points`
-for IVEA).  The same id names a cell on both grids; its place on the globe
+module-level verbs (:data:`TOPOLOGICAL`), and answers every verb whose answer
+depends on where a cell sits on the globe (:data:`GEOMETRIC`) with the kernels
+of its projection: the module-level verb given ``projection="IVEA"``, which runs
+the ISEA code compiled again on IVEA's inverse (:mod:`dggs.index._kernel.ivea_points`,
+``ivea_fill``, ``ivea_edges``).  ``Grid("ISEA")``'s methods are the module-level
+functions themselves.  :data:`MODULE_ONLY` names the public names that are not
+methods.  The same id names a cell on both grids; its place on the globe
 differs by up to 56 km, 0.8 % of a face's edge (docs/grid.md, "The IVEA projection").
 """
 
