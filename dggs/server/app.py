@@ -101,7 +101,9 @@ def create_app(
         title=f"dggs: {reader.collection_id}",
         description=(
             "OGC API - DGGS (Part 1) over a cell store of equal-area triangular zones "
-            "(Split (2:6) on the ISEA icosahedron, Snyder's equal-area projection), and the JSON of its web map."
+            "(Split (2:6) on the icosahedron: DGGS-Split26-ISEA, Snyder's equal-area projection, and "
+            "DGGS-Split26-IVEA, the vertex-oriented great circle one; the store's data under the DGGRS they "
+            "were binned with), and the JSON of its web map."
         ),
         version=_version(),
         openapi_url=None,  # served by _serve_openapi_30 as OpenAPI 3.0
