@@ -113,6 +113,10 @@ class Grid:
     True
     >>> ivea.cell_area(cell) == Grid("isea").cell_area(cell)  # both equal-area
     True
+    >>> round(ivea.edge_length("C401.1", unit="km"), 1), round(Grid().edge_length("C401.1", unit="km"), 1)
+    (728.7, 726.3)
+    >>> ivea.grid_disk is Grid().grid_disk  # topological verbs: the module-level functions on both
+    True
     """
 
     def __init__(self, projection: str = "ISEA") -> None:
