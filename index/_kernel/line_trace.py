@@ -267,7 +267,21 @@ def _adjacent(a: np.uint64, b: np.uint64, level: int) -> bool:
 
 
 @njit(cache=True, nogil=True)
-def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
+def _between(a: np.uint64, b: np.uint64, level: int) -> np.uint64:
+    """The one edge neighbour ``a`` and ``b`` have in common, or 0 (none, or two)."""
+    found = np.uint64(0)
+    for i in range(3):
+        x = _neighbour(a, level, i)
+        for j in range(3):
+            if _neighbour(b, level, j) == x:
+                if found != 0:
+                    return np.uint64(0)
+                found = x
+    return found
+
+
+@njit(cache=True, nogil=True)
+def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut=True):
     """The cells along a chain of anchors, into ``out``; returns ``(cells, corner gaps)``, or ``(-1, 0)`` if ``out`` is full.
 
     Anchor ``k`` is ``(lat[k], lng[k])`` with the geodesic's azimuth
@@ -279,6 +293,22 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
     ``corner`` metres: then the pair (a corner between them) is recorded in
     ``fix`` as the index of the second cell in ``out``, for the caller to
     join around the corner.  Consecutive cells in ``out`` differ.
+
+    With ``shortcut`` (from level 1), two cells at most a step apart along
+    the line whose edge neighbours have exactly one cell in common are
+    joined through it without a point located: the cells of a level form a
+    bipartite graph, so the line crosses an even number of edges between
+    them, and with two it crosses the common neighbour; four or more would
+    take it round their shared corner the other way, across cells whose
+    angles there sum to 180 degrees or more (that corner has 6, 10 or 12
+    cells, or 4 and then two common neighbours).  A straight line cannot;
+    the line's image in the face plane is slightly curved, so at a corner
+    of 6 cells (exactly 180 degrees the other way) it could only by passing
+    it closer than its bend over one step, the same condition under which
+    two samples in edge neighbours (a corner of 4 cells) hide two cells
+    between them, which sampling alone already assumes away.  (A line
+    through the corner itself, within the corner length, goes round it the
+    shorter way, through the same cell.)
     """
     nfix = 0
     cap = out.shape[0]
@@ -310,7 +340,15 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
                     top -= 1
                     x0, x1, c0, c1 = sa[top], sb[top], ca[top], cb[top]
                     if c0 != c1 and not _adjacent(c0, c1, level):
-                        if (x1 - x0) * s >= corner and top + 2 <= _STACK:
+                        via = np.uint64(0)
+                        if shortcut and level > 0 and (x1 - x0) * s <= step:
+                            via = _between(c0, c1, level)
+                        if via != 0:
+                            if n >= cap:
+                                return -1, 0
+                            out[n] = via
+                            n += 1
+                        elif (x1 - x0) * s >= corner and top + 2 <= _STACK:
                             xm = 0.5 * (x0 + x1)
                             x, y, z = _point(c, xm)
                             cm = _cell_at(x, y, z, level)
@@ -318,10 +356,11 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix):
                             sa[top + 1], ca[top + 1], sb[top + 1], cb[top + 1] = x0, c0, xm, cm
                             top += 2
                             continue
-                        if nfix >= fix.shape[0]:
-                            return -1, 0
-                        fix[nfix] = n
-                        nfix += 1
+                        else:
+                            if nfix >= fix.shape[0]:
+                                return -1, 0
+                            fix[nfix] = n
+                            nfix += 1
                     if c1 != out[n - 1]:
                         if n >= cap:
                             return -1, 0

@@ -352,6 +352,34 @@ def test_tracer_locates_as_latlng_to_cell(pts, level):
     assert same.mean() >= 0.5 or len(pts) < 10  # ties are the exception
 
 
+def traced(pts: np.ndarray, level: int, shortcut: bool) -> list[int]:
+    from dggs.index import paths
+    from dggs.index._kernel import line_trace
+
+    lat, lng, az_out, az_in, span, _ = paths._anchors(np.ascontiguousarray(pts, dtype=np.float64), level)
+    out, fix = np.empty(100_000, dtype=np.uint64), np.empty(1000, dtype=np.int64)
+    edge = paths._short_edge(level)
+    n, _ = line_trace.trace(lat, lng, az_out, az_in, span, level, paths._STEP_EDGES * edge, paths._CORNER_M, out, fix, shortcut)
+    return out[:n].tolist()
+
+
+@settings(max_examples=examples(60))
+@given(st.sampled_from(SPECIAL), st.lists(st.tuples(st.floats(-1, 1), st.floats(-1, 1)), min_size=2, max_size=4),
+       st.integers(1, 16), st.floats(-4, 0))
+@example((90.0, 0.0), [(-0.5, 0.0), (-0.5, 180.0)], 9, 0.0)  # over the North Pole
+@example((0.0, 180.0), [(0.1, -1.0), (0.2, 1.0)], 12, 0.0)  # across the antimeridian
+@example((58.2825, 11.25), [(-0.1, -0.1), (0.1, 0.1)], 14, -2.0)  # by the icosahedron vertex at 58.28N 11.25E
+def test_common_neighbour_shortcut_equals_bisection(p, offsets, level, log_scale):
+    """Joining two cells through their one common neighbour gives the cells bisection finds (ids as ints and str)."""
+    scale = 10.0**log_scale
+    pts = np.array([(max(-90.0, min(90.0, p[0] + dy * scale)), p[1] + dx * scale) for dy, dx in offsets])
+    assume(not np.all(pts[1:] == pts[:-1]))
+    assume(np.unique(pts, axis=0).shape[0] == pts.shape[0])
+    fast, slow = traced(pts, level, True), traced(pts, level, False)
+    assert fast == slow
+    assert [dggs.int_to_str(c) for c in fast] == [dggs.int_to_str(c) for c in slow]
+
+
 def test_anchor_cells_are_located_as_given():
     """Points exactly at anchors (the polyline's own points) keep latlng_to_cell's ids, in str and int forms."""
     pts = np.array([(0.0, 180.0), (0.0, 179.9), (89.9, 179.9), (90.0, 0.0), (58.0, 11.0)])
