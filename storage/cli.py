@@ -276,7 +276,7 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
     with _open(db) as store:
         refuse_store(out, store.path)
         rows = store.aggregate(level, column, (stat,) if stat == "count" else ("count", stat))
-        path = store.path
+        path, projection = store.path, store.projection
     label = f"{stat} of {column}" if column and stat != "count" else "points"
     plot_cells(
         [r["cell"] for r in rows],
@@ -285,6 +285,7 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
         title=title or f"{Path(path).name}: {label} per cell, level {level}",
         label=label,
         log=log,
+        projection=projection,
     )
     click.echo(f"wrote {out} ({len(rows):,} cells)")
 

@@ -48,6 +48,7 @@ def plot_cells(
     cmap: str = "viridis",
     points: tuple[Sequence[float], Sequence[float]] | None = None,
     dpi: int = 150,
+    projection: str = "ISEA",
 ) -> None:
     """Draw ``cells`` coloured by ``values`` on a Mollweide world map, save as PNG.
 
@@ -70,6 +71,8 @@ def plot_cells(
         Points to draw as faint dots under the cells (e.g. the raw data).
     dpi : int, default 150
         Resolution of the PNG.
+    projection : {"ISEA", "IVEA"}, default "ISEA"
+        The grid the cells are drawn on (a store's ``projection``).
 
     Raises
     ------
@@ -97,7 +100,7 @@ def plot_cells(
     if cells:
         levels = {len(c) - 1 for c in cells}
         densify = 8 if min(levels) < 4 else 2
-        geoms = dggs.cell_to_polygon(np.asarray(cells), densify=densify)
+        geoms = dggs.Grid(projection).cell_to_polygon(np.asarray(cells), densify=densify)
         for geometry, value in zip(np.atleast_1d(geoms), vals, strict=True):
             for ring in _rings(geometry):
                 x, y = to_map.transform(ring[:, 0], ring[:, 1])

@@ -226,3 +226,18 @@ def test_cli_bin_projection(tmp_path):
     assert "IVEA" in again.output and "ISEA" in again.output
     bad = runner.invoke(main, ["bin", str(csv), "--db", str(tmp_path / "q.db"), "--projection", "HEALPIX"])
     assert bad.exit_code != 0 and "HEALPIX" in bad.output
+
+
+def test_plot_draws_the_store_grid(monkeypatch, tmp_path):
+    import dggs.storage.plot as plot
+
+    drawn: list[str] = []
+    real = dggs.Grid.cell_to_polygon
+
+    def spy(self, cell, *args, **kwargs):
+        drawn.append(self.projection)
+        return real(self, cell, *args, **kwargs)
+
+    monkeypatch.setattr(dggs.Grid, "cell_to_polygon", spy)
+    plot.plot_cells(["C40", "A0"], [1.0, 2.0], tmp_path / "m.png", projection="IVEA")
+    assert drawn == ["IVEA"]
