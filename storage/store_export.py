@@ -97,8 +97,7 @@ class ExportMethods:
         LevelError, LevelMismatchError
             If ``level`` is out of range or finer than the stored level.
         DggsValueError
-            If a stat is unknown or needs a numeric ``column``, or the store is binned on IVEA
-            (its tables are not drawn yet: use :meth:`to_geojson`).
+            If a stat is unknown or needs a numeric ``column``.
 
         Examples
         --------
@@ -110,7 +109,6 @@ class ExportMethods:
         """
         from dggs.arrow import cells_to_table
 
-        _isea_only(self._store, "to_arrow")
         stats = queries.export_stats(column, stats)
         # An analyst exports one roll-up in several formats: the last table is remembered while the file
         # is unchanged (the roll-up memo's file state), so the second format builds no polygons again.
@@ -121,6 +119,8 @@ class ExportMethods:
             return last[1]
         rows = self.aggregate(level, column, stats)
         table = cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
+        if self._store.projection != "ISEA":  # drawn with the grid the cells were binned on
+            table = _grid_geometry(table, self._store.projection, densify)
         # as the memo keeps it: others' commits as of before the roll-up, this connection's own changes
         # after it (a roll-up's temporary tables count as changes; nothing else writes meanwhile)
         self._last_table = ((*key, conn, version, self._store.conn.total_changes), table)
@@ -176,15 +176,6 @@ class ExportMethods:
         return int(table.num_rows)
 
 
-def _isea_only(store: Connection, what: str) -> None:
-    """Refuse ``what`` on a store binned on another projection than ISEA (its cells would be drawn misplaced)."""
-    if store.projection != "ISEA":
-        from dggs.errors import DggsValueError
-
-        raise DggsValueError(f"{what} draws cells on ISEA only; {store.path} is binned on {store.projection} "
-                             "(export it as GeoJSON: to_geojson or a .geojson file)")
-
-
 def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]],
                   densify: int | None) -> dict[str, Any]:
     """A FeatureCollection as :func:`dggs.cells_to_geojson` gives, the cells drawn on ``Grid(projection)``."""
@@ -199,3 +190,31 @@ def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]]
         for cell, poly, row in zip(cells, polys, props, strict=True)
     ]
     return {"type": "FeatureCollection", "features": features}
+
+
+def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
+    """``table`` (of :func:`dggs.arrow.cells_to_table`) with its cells drawn on ``Grid(projection)``.
+
+    Its ``geometry`` (counter-clockwise WKB), ``bbox`` (antimeridian bounds as GeoParquet 1.1 has them)
+    and ``geo`` metadata are replaced.
+    """
+    import json
+
+    import numpy as np
+    import pyarrow as pa
+    import shapely
+
+    from dggs._geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata
+
+    cells = np.asarray(table.column("cell").to_pylist(), dtype=str)
+    polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if len(cells) else np.empty(0, object)
+    polys = shapely.orient_polygons(polys, exterior_cw=False)
+    geometry = pa.array(shapely.to_wkb(polys, byte_order=1, output_dimension=2).tolist(), type=pa.binary())
+    bounds = covering_bounds(geometry, shapely.bounds(polys).reshape(-1, 4))
+    bbox = pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(BBOX_TYPE))
+    names = table.column_names
+    table = table.set_column(names.index("bbox"), table.schema.field("bbox"), bbox)
+    table = table.set_column(names.index("geometry"), table.schema.field("geometry"), geometry)
+    meta = dict(table.schema.metadata or {})
+    meta[b"geo"] = json.dumps(geo_metadata({g.geom_type for g in polys}, file_bbox(bounds))).encode()
+    return table.replace_schema_metadata(meta)

@@ -164,12 +164,34 @@ def test_exports_draw_the_store_grid():
     with CellStore(projection="IVEA") as store:
         store.ingest_points([51.05, -33.9], [-114.07, 151.2], 8, {"v": [1.0, 2.0]})
         fc = store.to_geojson(6, "v", densify=None)
-        with pytest.raises(DggsValueError, match="IVEA"):
-            store.to_arrow(6, "v")
     for feature in fc["features"]:
         got = shapely.geometry.shape(feature["geometry"])
         want = IVEA.cell_to_polygon(feature["properties"]["cell"])
         assert got.symmetric_difference(want).area < 1e-9
+
+
+def test_geoparquet_export_of_an_ivea_store(tmp_path, rng):
+    import pyarrow.parquet as pq
+
+    from tests.storage.geoparquet_rules import violations
+
+    # the poles, the antimeridian (cells split there) and random points
+    lat = np.concatenate([[90.0, -90.0, 10.0, -20.0, 65.0], rng.uniform(-90, 90, 300)])
+    lng = np.concatenate([[0.0, 0.0, 180.0, -179.99, 179.9], rng.uniform(-180, 180, 300)])
+    out = tmp_path / "cells.parquet"
+    with CellStore(projection="IVEA") as store:
+        store.ingest_points(lat, lng, 8, {"v": np.ones(len(lat))})
+        assert store.export(out, 3, "v") > 0
+        counts = {r["cell"]: r["count"] for r in store.aggregate(3)}
+    assert violations(out) == []  # every MUST of GeoParquet 1.1 (tests/storage/geoparquet_rules.py)
+    table = pq.read_table(out)
+    cells = table.column("cell").to_pylist()
+    assert dict(zip(cells, table.column("count").to_pylist(), strict=True)) == counts
+    got = shapely.from_wkb(table.column("geometry").to_pylist())
+    want = IVEA.cell_to_polygon(np.asarray(cells), densify=16)
+    assert (shapely.area(shapely.symmetric_difference(got, want)) <= 1e-9 * shapely.area(want)).all()
+    isea = dggs.cell_to_polygon(np.asarray(cells), densify=16)  # not the ISEA shapes of the same ids
+    assert (shapely.area(shapely.symmetric_difference(got, isea)) > 1e-4 * shapely.area(want)).mean() > 0.9
 
 
 def test_polygons_filled_with_ivea_cells(tmp_path):
