@@ -302,8 +302,11 @@ def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | 
     chunks: list[np.ndarray] = []
     for xy in parts:
         chunks.append(_trace(np.vstack([xy, xy]) if xy.shape[0] == 1 else xy, level, max_cells))
-    cells = np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.uint64)
-    if cells.size > 1:  # parts that end and start in one cell
-        cells = cells[np.concatenate([[True], cells[1:] != cells[:-1]])]
+    if len(chunks) == 1:  # one part: no repeats in a row already
+        cells = chunks[0]
+    else:
+        cells = np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.uint64)
+        if cells.size > 1:  # parts that end and start in one cell
+            cells = cells[np.concatenate([[True], cells[1:] != cells[:-1]])]
     check_size(int(cells.shape[0]), max_cells, "line_to_cells")
     return ids_array(cells, as_int)

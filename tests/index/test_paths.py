@@ -313,10 +313,15 @@ def test_interpolation_check_can_fail():
 
 
 def tracer_cells(lat: np.ndarray, lng: np.ndarray, level: int) -> np.ndarray:
+    """The tracer's cells of the points, each located alone and in a chain (the face search from the last face)."""
     from dggs.index._kernel import line_trace
 
     got = np.empty(lat.size, dtype=np.uint64)
-    line_trace.cells_at(np.ascontiguousarray(lat, dtype=np.float64), np.ascontiguousarray(lng, dtype=np.float64), level, got)
+    chained = np.empty(lat.size, dtype=np.uint64)
+    la, lo = np.ascontiguousarray(lat, dtype=np.float64), np.ascontiguousarray(lng, dtype=np.float64)
+    line_trace.cells_at(la, lo, level, got)
+    line_trace.cells_at(la, lo, level, chained, True)
+    assert got.tolist() == chained.tolist()
     return got
 
 
@@ -332,6 +337,7 @@ def near_cells(lat: float, lng: float, level: int) -> set[int]:
 @given(st.lists(st.tuples(st.floats(-90, 90), st.floats(-540, 540)), min_size=1, max_size=50), st.integers(0, 28))
 @example([(89.999, 0.0), (-89.999, 33.0), (0.001, 180.0), (0.0, -179.999), (45.0, 179.999)], 28)
 @example(SPECIAL, 1)  # poles, antimeridian, the icosahedron's vertices and edges: points on cell edges
+@example([(lat, 11.25 + 0.3 * k) for k in range(40) for lat in (57.5, 58.2825, 59.0)], 20)  # faces change along
 @example(SPECIAL, 13)
 @example(SPECIAL, 28)
 def test_tracer_locates_as_latlng_to_cell(pts, level):
