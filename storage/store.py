@@ -31,7 +31,7 @@ from dggs.errors import DggsValueError
 from . import queries
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
-from .projection import settle
+from .projection import ProjectionMethods, settle
 from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
 from .store_export import ExportMethods
@@ -42,7 +42,7 @@ from .store_rollups import RollupMethods
 __all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
 
-class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
+class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, ProjectionMethods):
     """Points binned into cells at one level, stored in SQLite.
 
     Parameters
@@ -104,16 +104,6 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods):
         except BaseException:
             self._store.close()
             raise
-
-    @property
-    def projection(self) -> str:
-        """The projection the cells were binned with, ``"ISEA"`` or ``"IVEA"`` (``meta.projection``)."""
-        return self._store.projection
-
-    @property
-    def grid(self) -> Any:
-        """The :class:`dggs.Grid` of the stored cells (locates points, draws and queries cells)."""
-        return dggs.Grid(self._store.projection)
 
     @property
     def conn(self) -> sqlite3.Connection:

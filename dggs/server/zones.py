@@ -91,10 +91,7 @@ def _links(request: Request, collection: str | None, zone: str | None = None,
 
 def zone_info(ctx: Context, request: Request, collection: str | None, zone: str, f: str | None,
               dggrs_id: str = DGGRS_ID) -> Response:
-    """Zone information (/req/core/zone-info, /rec/core/zone-info) on the grid of ``dggrs_id``.
-
-    The data count and statistics only under the DGGRS the store's data were binned with.
-    """
+    """Zone information (/req/core/zone-info, /rec/core/zone-info) on ``dggrs_id``'s grid (data: its own only)."""
     import shapely
     from shapely.geometry import mapping
 
@@ -153,10 +150,7 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 
 def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
               f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID) -> Response:
-    """The rows under ``zone`` rolled up to its sub-zones at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON).
-
-    Only under the DGGRS the store's data were binned with (404 naming it under the other).
-    """
+    """Sub-zone roll-ups of ``zone`` at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON), under the data's DGGRS only."""
     check_data_dggrs(ctx, dggrs_id)
     fmt = negotiate(request, f, DATA_FORMATS)
     mode = check_geometry(geometry)
