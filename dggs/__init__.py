@@ -265,6 +265,7 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
     from dggs.index.circles import circle_to_cells
+    from dggs.index.dissolve import cells_to_polygons
     from dggs.index.edges import (
         cells_to_directed_edge,
         directed_edge_to_boundary,
@@ -276,7 +277,6 @@ if TYPE_CHECKING:  # what the name table loads, for type checkers and IDEs
         origin_to_directed_edges,
         reverse_directed_edge,
     )
-    from dggs.index.dissolve import cells_to_polygons
     from dggs.index.grid import are_neighbor_cells, edge_neighbors, grid_disk, grid_distance, grid_ring
     from dggs.index.hierarchy import (
         cell_to_center_child,
