@@ -22,6 +22,8 @@ from typing import Any
 import numpy as np
 import pytest
 import shapely
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from shapely.geometry import shape
 
 import dggs
@@ -29,6 +31,7 @@ from dggs.server.reader import map_densify
 from dggs.storage import CellStore
 from tests.server.conftest import make_client
 from tests.server.standard import conforms
+from tests.strategies import cells, examples
 
 IVEA_ID, ISEA_ID = "DGGS-Split26-IVEA", "DGGS-Split26-ISEA"
 IVEA = dggs.Grid("IVEA")
@@ -205,3 +208,40 @@ def test_the_map_draws_and_names_the_store_grid(url):
         want = IVEA.cell_to_polygon(zone, densify=map_densify(2))
         assert shape(feature["geometry"]).symmetric_difference(want).area < 1e-5 * want.area
         assert feature["properties"]["count"] == len(dggs.uncompact_cells([zone], LEVEL))
+
+
+# -- properties, in-process (the same app the process serves) ---------------------------------------
+
+
+@pytest.fixture(scope="module")
+def app_client(ivea_store):
+    client = make_client(ivea_store)
+    with client:
+        yield client
+
+
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(cells(max_level=14))
+def test_any_zone_drawn_on_its_grid(app_client, zone):
+    for dggrs, grid in ((IVEA_ID, IVEA), (ISEA_ID, dggs.Grid("ISEA"))):
+        info = app_client.get(f"/dggs/{dggrs}/zones/{zone}").json()
+        want = grid.cell_to_polygon(zone)
+        assert shape(info["geometry"]).symmetric_difference(want).area <= 1e-9 * want.area
+        assert info["uint64Id"] == str(dggs.str_to_int(zone))  # the integer form names the same zone
+        if dggrs == IVEA_ID and len(zone) - 1 <= LEVEL:
+            assert info["dataCount"] == len(dggs.uncompact_cells([zone], LEVEL))
+        else:
+            assert "dataCount" not in info
+
+
+@settings(max_examples=examples(20), deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(cells(min_level=0, max_level=3), st.integers(3, 5))
+def test_integer_zone_lists_are_the_text_ones(app_client, parent, level):
+    level = max(level, len(parent) - 1)
+    query = f"/dggs/{IVEA_ID}/zones?zone-level={level}&compact-zones=false&parent-zone={parent}"
+    text = app_client.get(query).json()["zones"]
+    body = app_client.get(query + "&f=uint64").content
+    count = int(np.frombuffer(body[:8], dtype="<u8")[0])
+    ints = np.frombuffer(body[8:], dtype="<u8")
+    assert count == len(text) == len(dggs.uncompact_cells([parent], level))
+    assert [dggs.int_to_str(int(i)) for i in ints] == text
