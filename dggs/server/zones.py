@@ -372,7 +372,7 @@ def register(app: FastAPI, ctx: Context) -> None:
 
     def c_info(request: Request, collectionId: str, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
         check_collection(ctx, collectionId)
-        check_dggrs(dggrsId)
+        check_data_dggrs(ctx, dggrsId)  # a collection offers the DGGRS of its data only
         return zone_info(ctx, request, collectionId, parse_zone(zoneId), f, dggrsId)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,

@@ -148,10 +148,11 @@ ERRORS = [
     f"{ROOT}/zones?subset=Foo(1:2)", f"{ROOT}/zones?subset=Lat(1:2)&bbox=0,0,1,1", f"{ROOT}/zones?bbox-crs=EPSG:3857",
     f"{ROOT}/zones?geometry=hexagon", f"{ROOT}/zones?parent-zone=X9",
     f"{IVEA_ROOT}/zones/C4/data", f"{IVEA_ROOT}/zones?zone-level=3", IVEA_COLL, f"{IVEA_COLL}/zones/C4/data",
+    f"{IVEA_COLL}/zones/C401",
 ]
 #: Every route over a store binned on IVEA, under DGGS-Split26-IVEA (and the data routes of ISEA refused).
 IVEA_ROUTES = [url.replace(ROOT, IVEA_ROOT).replace(COLL, IVEA_COLL) for url in ROUTES if IVEA_ROOT not in url]
-IVEA_ERRORS = [f"{ROOT}/zones/C4/data", f"{ROOT}/zones", COLL, f"{COLL}/zones?zone-level=3"]
+IVEA_ERRORS = [f"{ROOT}/zones/C4/data", f"{ROOT}/zones", COLL, f"{COLL}/zones?zone-level=3", f"{COLL}/zones/C401"]
 
 
 @pytest.fixture(scope="module")

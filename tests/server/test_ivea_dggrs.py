@@ -178,7 +178,7 @@ def test_data_served_under_ivea(url, zone):
 
 @pytest.mark.parametrize("path", [f"/dggs/{ISEA_ID}/zones/C4/data", f"/dggs/{ISEA_ID}/zones",
                                   f"/collections/ivea/dggs/{ISEA_ID}/zones/C4/data",
-                                  f"/collections/ivea/dggs/{ISEA_ID}"])
+                                  f"/collections/ivea/dggs/{ISEA_ID}", f"/collections/ivea/dggs/{ISEA_ID}/zones/C4"])
 def test_data_refused_under_isea(url, path):
     code, body = status(url + path)
     assert code == 404
