@@ -16,7 +16,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_max_cells, check_size
+from ._checks import check_level, check_max_cells, check_projection, check_size
 from ._convert import cells_out_flat, id_name, ids_array, pair
 from ._corners import fans
 from ._kernel import line_trace as kline
@@ -167,6 +167,15 @@ def _tolerance(level: int) -> float:
     return max(_TOL_FLOOR, min(_TOL_M, _TOL_EDGE * _short_edge(level)))
 
 
+def _tracer(projection: str) -> Any:
+    """The compiled tracer of ``projection``: :mod:`.line_trace` (ISEA) or its IVEA build (loaded on first use)."""
+    if projection == "ISEA":
+        return kline
+    from ._kernel import ivea_lines
+
+    return ivea_lines
+
+
 def _anchors(xy: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Exact geodesic points along a polyline of distinct consecutive points, at most a span apart.
 
@@ -202,14 +211,18 @@ def _around(a: int, b: int) -> list[int]:
     return best
 
 
-def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
-    """The cells along one polyline of (lat, lng) points (at least two), traced by the compiled kernel."""
+def _trace(xy: np.ndarray, level: int, max_cells: Any, projection: str = "ISEA") -> np.ndarray:
+    """The cells along one polyline of (lat, lng) points (at least two), traced by ``projection``'s compiled kernel."""
     i, pts = kline.clean(np.ascontiguousarray(xy, dtype=np.float64))  # repeated points add no segment
     if i >= 0:
         raise CoordinateError(f"point ({float(xy[i, 0])!r}, {float(xy[i, 1])!r}) at index {i} is not a finite latitude in -90..90 and a finite longitude")
     xy = pts
-    if xy.shape[0] == 1:
+    if xy.shape[0] == 1 and projection == "ISEA":
         return np.asarray(latlng_to_cell(xy[:, 0], xy[:, 1], level, as_int=True), dtype=np.uint64).reshape(-1)
+    if xy.shape[0] == 1:  # IVEA's location of the one point, as Grid("IVEA").latlng_to_cell's
+        from ._kernel import ivea_points
+
+        return np.array([ivea_points.one_point(float(xy[0, 0]), float(xy[0, 1]), level)], dtype=np.uint64)
     lat, lng, az_out, az_in, span, dist = _anchors(xy, level)
     edge = _short_edge(level)
     bound = int(np.ceil(_CELLS_PER_EDGE * dist / edge).sum()) + _CELLS_EXTRA * dist.size
@@ -218,7 +231,7 @@ def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
     while True:
         out = np.empty(cap, dtype=np.uint64)
         fix = np.empty(max(16, cap // 8), dtype=np.int64)
-        n, nfix = kline.trace(lat, lng, az_out, az_in, span, level, _STEP_EDGES * edge, _CORNER_M, out, fix)
+        n, nfix = _tracer(projection).trace(lat, lng, az_out, az_in, span, level, _STEP_EDGES * edge, _CORNER_M, out, fix)
         if n >= 0:
             break
         cap *= 2  # pragma: no cover - the bound holds
@@ -233,7 +246,9 @@ def _trace(xy: np.ndarray, level: int, max_cells: Any) -> np.ndarray:
     return np.concatenate(pieces)
 
 
-def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | None = None) -> np.ndarray:
+def line_to_cells(
+    line: Any, level: int, as_int: bool = False, max_cells: int | None = None, *, projection: str = "ISEA"
+) -> np.ndarray:
     """The cells along a polyline, in order; each segment is the WGS84 geodesic between its points.
 
     Each segment gives :func:`dggs.geodesic_to_cells`'s cells: the first holds
@@ -268,6 +283,9 @@ def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | 
         Refuse lines of more cells than this (each segment checked before
         sampling, as :func:`dggs.geodesic_to_cells`, then the whole line;
         default :data:`dggs.index.hierarchy.MAX_CELLS`).
+    projection : {"ISEA", "IVEA"}
+        The grid whose cells are traced (``dggs.Grid(projection).line_to_cells``
+        passes it; the same tracer compiled on IVEA's forward, docs/grid.md).
 
     Returns
     -------
@@ -280,7 +298,7 @@ def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | 
     LevelError
         A bad level.
     DggsValueError
-        Another geometry than a line, or ``max_cells`` is not None or a non-negative integer.
+        Another geometry than a line, ``max_cells`` is not None or a non-negative integer, or another projection.
     TooManyCellsError
         The line would have more than ``max_cells`` cells.
 
@@ -295,13 +313,16 @@ def line_to_cells(line: Any, level: int, as_int: bool = False, max_cells: int | 
     >>> from shapely.geometry import LineString
     >>> line_to_cells(LineString([(179.5, 0.0), (-179.5, 0.0)]), 3).tolist()
     ['O321', 'O320', 'O310', 'O311', 'O301', 'O300']
+    >>> len(line_to_cells([(51.05, -114.07), (49.28, -123.12), (47.61, -122.33)], 7, projection="IVEA"))
+    19
     """
     level = check_level(level)
     check_max_cells(max_cells)
+    projection = check_projection(projection)
     parts = _parts(line)
     chunks: list[np.ndarray] = []
     for xy in parts:
-        chunks.append(_trace(np.vstack([xy, xy]) if xy.shape[0] == 1 else xy, level, max_cells))
+        chunks.append(_trace(np.vstack([xy, xy]) if xy.shape[0] == 1 else xy, level, max_cells, projection))
     if len(chunks) == 1:  # one part: no repeats in a row already
         cells = chunks[0]
     else:

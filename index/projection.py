@@ -10,7 +10,7 @@ module-level verbs (:data:`TOPOLOGICAL`), and answers every verb whose answer
 depends on where a cell sits on the globe (:data:`GEOMETRIC`) with the kernels
 of its projection: the module-level verb given ``projection="IVEA"``, which runs
 the ISEA code compiled again on IVEA's inverse (:mod:`dggs.index._kernel.ivea_points`,
-``ivea_fill``, ``ivea_edges``).  ``Grid("ISEA")``'s methods are the module-level
+``ivea_fill``, ``ivea_edges``, ``ivea_lines``).  ``Grid("ISEA")``'s methods are the module-level
 functions themselves.  :data:`MODULE_ONLY` names the public names that are not
 methods.  The same id names a cell on both grids; its place on the globe
 differs by up to 56 km, 0.8 % of a face's edge (docs/grid.md, "The IVEA projection").
@@ -42,7 +42,7 @@ GEOMETRIC = {
     "latlng_to_cell": points, "cell_to_latlng": points, "cell_to_boundary": points, "cell_to_polygon": points,
     "cells_to_geojson": points, "cells_to_polygons": dissolve, "polygon_to_cells": polyfill,
     "vertex_to_latlng": vertex, "cell_centers_distance": lines, "geodesic_to_cells": lines,
-    "circle_to_cells": circles, "directed_edge_to_boundary": edges, "edge_length": edges,
+    "circle_to_cells": circles, "directed_edge_to_boundary": edges, "edge_length": edges, "line_to_cells": paths,
 }
 #: Public verbs that read ids only (the hierarchy, neighbours, vertex and edge ids, local ij on the unfolded
 #: icosahedron, whose corners both projections share), and ``great_circle_distance`` (coordinates only):
@@ -57,10 +57,9 @@ TOPOLOGICAL = (
     "cell_to_vertexes", "grid_disk_vertex", "is_valid_vertex", "vertex_neighbors", "vertex_to_cells",
     "great_circle_distance", "cell_area",
 )
-#: Public names that are not verbs of a grid, or not yet on IVEA: ``Grid`` itself, the constant
-#: ``MAX_LEVEL``, ``level_table`` (the planar guide of docs and the CLI, the same on both), and
-#: ``line_to_cells``, whose tracer (index/paths.py) has no projection hook yet: ISEA only.
-MODULE_ONLY = ("Grid", "MAX_LEVEL", "level_table", "line_to_cells")
+#: Public names that are not verbs of a grid: ``Grid`` itself, the constant ``MAX_LEVEL`` and
+#: ``level_table`` (the planar guide of docs and the CLI, the same on both).
+MODULE_ONLY = ("Grid", "MAX_LEVEL", "level_table")
 
 
 def _locate(lat: np.ndarray, lng: np.ndarray, level: int) -> np.ndarray:
@@ -194,6 +193,10 @@ class Grid:
     ) -> np.ndarray:
         """The grid's cells along the WGS84 geodesic between two points, in order; see :func:`dggs.geodesic_to_cells`."""
         return lines.geodesic_to_cells(lat1, lng1, lat2, lng2, level, as_int, max_cells, projection=self.projection)
+
+    def line_to_cells(self, line: Any, level: int, as_int: bool = False, max_cells: int | None = None) -> np.ndarray:
+        """The grid's cells along a polyline of WGS84 geodesics, in order; see :func:`dggs.line_to_cells`."""
+        return paths.line_to_cells(line, level, as_int, max_cells, projection=self.projection)
 
     def circle_to_cells(
         self, lat: Any, lng: Any, radius_m: Any, level: int, mode: str = "center", as_int: bool = False,

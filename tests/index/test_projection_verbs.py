@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 
 import dggs
 from dggs.geometry import ivea, snyder
-from dggs.index import circles, dissolve, edges, lines, points
+from dggs.index import circles, dissolve, edges, lines, paths, points
 from dggs.index import projection as projection_module
 from dggs.index.projection import GEOMETRIC, MODULE_ONLY, TOPOLOGICAL
 from tests.index.test_projection_grid import R, planar_corners
@@ -93,13 +93,14 @@ def test_ivea_methods_answer_differently_from_isea():
         (lambda g: g.directed_edge_to_boundary(edge)),
         (lambda g: g.edge_length(edge)),
         (lambda g: g.circle_to_cells(0.5, 0.5, 100_000, 10).tolist()),
+        (lambda g: g.line_to_cells([(0.5, 0.5), (0.6, 0.7)], 12).tolist()),
     ]
     for f in pairs:
         assert f(ISEA_GRID) != f(IVEA)
 
 
 def test_doctests_of_the_verbs_given_a_projection():
-    for module in (points, dissolve, edges, lines, circles, projection_module):
+    for module in (points, dissolve, edges, lines, paths, circles, projection_module):
         assert doctest.testmod(module).failed == 0, module.__name__
 
 
@@ -112,6 +113,7 @@ def test_projection_keyword_checked():
         lambda: lines.cell_centers_distance("C401", "C402", projection="HEALPix"),
         lambda: lines.geodesic_to_cells(0, 0, 1, 1, 3, projection="HEALPix"),
         lambda: circles.circle_to_cells(0, 0, 1000, 3, projection="HEALPix"),
+        lambda: paths.line_to_cells([(0, 0), (1, 1)], 3, projection="HEALPix"),
     ):
         with pytest.raises(dggs.DggsValueError, match="projection 'HEALPix'"):
             call()
@@ -255,6 +257,75 @@ def test_geodesic_cells_hold_every_point_of_the_line(grid, how, p, q, level):
         for k in np.flatnonzero(~np.isin(seen, np.array(ids, dtype=np.uint64))).tolist():
             # a sample on a cell edge the line runs along: a cell of the line must hold a point 1 mm from it
             assert any(touches(grid, c, (lat_[k], lng_[k]), level) for c in ids), (lat_[k], lng_[k])
+
+
+def _polyline(p, offsets, scale):
+    return np.array([(max(-90.0, min(90.0, p[0] + dy * scale)), p[1] + dx * scale) for dy, dx in offsets])
+
+
+@pytest.mark.parametrize("grid", GRIDS, ids=repr)
+@pytest.mark.parametrize("how", FORMS)
+@settings(max_examples=examples(10), deadline=None)
+@given(st.sampled_from(special_points()), st.lists(st.tuples(st.floats(-1, 1), st.floats(-1, 1)), min_size=2, max_size=4),
+       st.integers(2, 12), st.sampled_from([0.01, 0.3, 3.0, 30.0]))
+@example((90.0, 0.0), [(-0.5, 0.0), (-0.5, 180.0), (-1.0, 90.0)], 9, 1.0)  # over the North Pole
+@example((-90.0, 0.0), [(0.5, -30.0), (0.5, 150.0)], 7, 1.0)  # over the South Pole
+@example((0.0, 180.0), [(0.1, -1.0), (0.2, 1.0), (-0.3, -0.5)], 12, 1.0)  # across the antimeridian, twice
+@example((58.282525588539, 11.25), [(-0.1, -0.1), (0.0, 0.0), (0.1, 0.1)], 11, 1.0)  # through an icosahedron vertex
+@example((26.565051177078, -168.75), [(0.0, 0.0), (-0.2, 0.3)], 10, 1.0)  # from the vertex at 26.57N 168.75W
+@example((0.0, 180.0), [(-1.0, 0.0), (1.0, 0.0)], 6, 30.0)  # along the antimeridian, 60 degrees
+def test_line_cells_hold_every_point_of_the_polyline(grid, how, p, offsets, level, scale):
+    pts = _polyline(p, offsets, scale)
+    got = grid.line_to_cells(pts, level, as_int=how == "int")
+    ids = [dggs.str_to_int(c) for c in got] if how == "str" else [int(c) for c in got]
+    other = grid.line_to_cells(pts, level, as_int=how == "str")  # the other form names the same cells
+    assert [dggs.str_to_int(c) if how == "int" else int(c) for c in other] == ids
+    assert len(ids) == 1 or bool(np.all(dggs.are_neighbor_cells(ids[:-1], ids[1:])))
+    # the polyline's own points keep the grid's latlng_to_cell ids; its ends are the first and the last cell
+    own = [int(c) for c in grid.latlng_to_cell(pts[:, 0], pts[:, 1], level, as_int=True)]
+    assert set(own) <= set(ids) and own[0] == ids[0] and own[-1] == ids[-1]
+    edge = dggs.level_table(level)[level]["short_edge_m"]
+    for (la1, lo1), (la2, lo2) in zip(pts[:-1], pts[1:], strict=True):
+        _, _, dist = GEOD.inv(lo1, la1, lo2, la2)
+        samples = GEOD.npts(lo1, la1, lo2, la2, int(min(20_000, 20 * dist / edge + 20)))
+        if not samples:
+            continue
+        lng_, lat_ = np.array(samples).T
+        seen = grid.latlng_to_cell(lat_, lng_, level, as_int=True)
+        for k in np.flatnonzero(~np.isin(seen, np.array(ids, dtype=np.uint64))).tolist():
+            # a sample on a cell edge the line runs along: a cell of the line must hold a point 1 mm from it
+            assert any(touches(grid, c, (lat_[k], lng_[k]), level) for c in ids), (lat_[k], lng_[k])
+
+
+@pytest.mark.parametrize("level", [1, 9, 20])
+def test_ivea_tracer_locates_as_the_ivea_grid(level):
+    """The tracer's trigonometry-free locator (built on IVEA's face_forward) gives Grid("IVEA")'s ids, lone and
+    chained (each point's face search from the last), at the special points and 2,000 random ones."""
+    from dggs.index._kernel import ivea_lines
+
+    rng = np.random.default_rng(level)
+    sp = np.array(special_points())
+    lat = np.concatenate([sp[:, 0], np.degrees(np.arcsin(rng.uniform(-1, 1, 2000)))])
+    lng = np.concatenate([sp[:, 1], rng.uniform(-180, 180, 2000)])
+    ref = np.asarray(IVEA.latlng_to_cell(lat, lng, level, as_int=True))
+    for chained in (False, True):
+        out = np.empty(lat.shape[0], dtype=np.uint64)
+        ivea_lines.cells_at(lat, lng, level, out, chained)
+        np.testing.assert_array_equal(out, ref)
+
+
+def test_line_kinds_parts_and_one_point_on_ivea():
+    from shapely.geometry import LineString, MultiLineString
+
+    line = [(51.05, -114.07), (49.28, -123.12)]
+    ref = IVEA.line_to_cells(line, 8)
+    assert IVEA.line_to_cells(LineString([(lng, lat) for lat, lng in line]), 8).tolist() == ref.tolist()
+    multi = IVEA.line_to_cells(MultiLineString([[(-114.07, 51.05), (-123.12, 49.28)], [(0.0, 0.0), (1.0, 1.0)]]), 8)
+    assert multi.tolist() == ref.tolist() + IVEA.line_to_cells([(0.0, 0.0), (1.0, 1.0)], 8).tolist()
+    for lat, lng in special_points()[:8]:
+        assert IVEA.line_to_cells([(lat, lng)], 6).tolist() == [IVEA.latlng_to_cell(lat, lng, 6)]
+    assert IVEA.line_to_cells(np.zeros((0, 2)), 6).tolist() == []
+    assert ref.tolist() != dggs.line_to_cells(line, 8).tolist()
 
 
 # --- the same kinds back as ISEA's, and a lone id the same as a one-element container ---------------------------
