@@ -300,18 +300,22 @@ def test_line_cells_hold_every_point_of_the_polyline(grid, how, p, offsets, leve
 @pytest.mark.parametrize("level", [1, 9, 20])
 def test_ivea_tracer_locates_as_the_ivea_grid(level):
     """The tracer's trigonometry-free locator (built on IVEA's face_forward) gives Grid("IVEA")'s ids, lone and
-    chained (each point's face search from the last), at the special points and 2,000 random ones."""
+    chained (each point's face search from the last), at 2,000 random points; at the special points (poles,
+    antimeridian, vertices, edges: ties on cell edges, broken either way by a rounding) a cell the point touches."""
     from dggs.index._kernel import ivea_lines
 
     rng = np.random.default_rng(level)
     sp = np.array(special_points())
-    lat = np.concatenate([sp[:, 0], np.degrees(np.arcsin(rng.uniform(-1, 1, 2000)))])
-    lng = np.concatenate([sp[:, 1], rng.uniform(-180, 180, 2000)])
+    lat = np.concatenate([np.degrees(np.arcsin(rng.uniform(-1, 1, 2000))), sp[:, 0]])
+    lng = np.concatenate([rng.uniform(-180, 180, 2000), sp[:, 1]])
     ref = np.asarray(IVEA.latlng_to_cell(lat, lng, level, as_int=True))
     for chained in (False, True):
         out = np.empty(lat.shape[0], dtype=np.uint64)
         ivea_lines.cells_at(lat, lng, level, out, chained)
-        np.testing.assert_array_equal(out, ref)
+        np.testing.assert_array_equal(out[:2000], ref[:2000])
+        for i in np.flatnonzero(out != ref).tolist():
+            assert touches(IVEA, int(out[i]), (lat[i], lng[i]), level), (lat[i], lng[i])
+        assert (out == ref).sum() >= lat.shape[0] - 10  # ties are the exception
 
 
 def test_line_kinds_parts_and_one_point_on_ivea():
