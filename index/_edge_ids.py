@@ -147,6 +147,8 @@ def is_edge(x: Any) -> bool:
 
 
 def _leaves(obj: Any) -> list[Any]:
+    if isinstance(obj, np.generic):  # a numpy scalar has tolist() too, giving one value
+        return [obj.item()]
     if isinstance(obj, (list, tuple)):
         return [y for x in obj for y in _leaves(x)]
     if isinstance(obj, np.ndarray):

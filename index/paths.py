@@ -111,6 +111,10 @@ def grid_path_cells(a: Any, b: Any, max_cells: int | None = None) -> Any:
     return [flat[s:e] for s, e in zip(bounds[:-1], bounds[1:], strict=True)]
 
 
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, (bool, np.bool_))
+
+
 def _parts(line: Any) -> list[np.ndarray]:
     """The polyline(s) as (N, 2) float arrays of (lat, lng)."""
     import shapely
@@ -124,7 +128,10 @@ def _parts(line: Any) -> list[np.ndarray]:
             raise DggsValueError(f"line must be a LineString or MultiLineString, not a {line.geom_type}")
         return [np.ascontiguousarray(shapely.get_coordinates(g)[:, ::-1], dtype=np.float64) for g in geoms if not g.is_empty]
     try:
-        xy = np.asarray(line, dtype=np.float64)
+        raw = np.asarray(line)
+        if raw.dtype.kind not in "iuf" and not (raw.dtype.kind == "O" and all(_is_number(v) for v in raw.reshape(-1))):
+            raise TypeError  # strings, bools, bytes and None are not coordinates (as in latlng_to_cell)
+        xy = raw.astype(np.float64)
     except (TypeError, ValueError):
         raise CoordinateError(f"line must be a shapely line or an (N, 2) array of (lat, lng) numbers, not {line!r}") from None
     if xy.ndim != 2 or xy.shape[1] != 2:

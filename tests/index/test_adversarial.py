@@ -197,12 +197,20 @@ ONE_CELL_FUNCS = {
     "vertex_neighbors": dggs.vertex_neighbors,
     "grid_disk_vertex": lambda c: dggs.grid_disk_vertex(c, 1),
     "cell_centers_distance": lambda c: dggs.cell_centers_distance(c, GOOD),
+    # issue 21: child positions, local (i, j), directed edges from cells, paths
+    "cell_to_child_pos": lambda c: dggs.cell_to_child_pos(c, 0),
+    "child_pos_to_cell": lambda c: dggs.child_pos_to_cell(0, c, dggs.MAX_LEVEL),
+    "cell_to_local_ij": lambda c: dggs.cell_to_local_ij(c, c),
+    "origin_to_directed_edges": dggs.origin_to_directed_edges,
+    "grid_path_cells": lambda c: dggs.grid_path_cells(c, c),
 }
 
 
 def test_every_public_function_is_covered():
     covered = set(ONE_CELL_FUNCS) | {"is_valid_cell", "latlng_to_cell", "polygon_to_cells", "get_num_cells", "get_base_cells", "level_table"}
     covered |= {"vertex_to_latlng", "vertex_to_cells", "is_valid_vertex", "great_circle_distance", "geodesic_to_cells"}
+    covered |= set(EDGE_FUNCS) | {"is_valid_directed_edge", "cells_to_directed_edge", "local_ij_to_cell"}
+    covered |= {"line_to_cells", "circle_to_cells"}
     public = {n for n in dggs.__all__ if callable(getattr(dggs, n)) and not isinstance(getattr(dggs, n), type)}
     assert public <= covered, public - covered
 
@@ -731,3 +739,101 @@ def test_a_jagged_polygon_is_filled_exactly_and_its_work_follows_the_output(n):
     assert got.tolist() == want.tolist() and len(got) > 700
     # cells looked at: a few times those near the bounding box, however many vertices
     assert work["classified"] + work["tested"] < 20 * len(near)
+
+
+# --------------------------------------------------------------------------
+# Issue 21: directed edge ids, local (i, j), lines and circles
+# --------------------------------------------------------------------------
+
+GOOD_EDGE = "C401.1"
+EDGE_FUNCS = {
+    "directed_edge_to_cells": dggs.directed_edge_to_cells,
+    "get_directed_edge_origin": dggs.get_directed_edge_origin,
+    "get_directed_edge_destination": dggs.get_directed_edge_destination,
+    "reverse_directed_edge": dggs.reverse_directed_edge,
+    "directed_edge_to_boundary": dggs.directed_edge_to_boundary,
+    "edge_length": dggs.edge_length,
+}
+CORRUPT_EDGES = ["C401.3", "C401.", "C401.1.1", ".1", "C9.0", "C401 .1", "C401.-1", "C401.1 ", 1 << 63, (1 << 64) - 1]
+
+
+def edge_scalars():
+    edges = st.sampled_from([GOOD_EDGE, "A.0", "T5.2", "C4" + "0" * 26 + ".2", dggs.cells_to_directed_edge(GOOD_INT, dggs.edge_neighbors(GOOD_INT)[0])])
+    return st.one_of(any_scalars(), st.sampled_from(CORRUPT_EDGES), edges, st.text(alphabet="ACT0125.", max_size=8))
+
+
+@settings(max_examples=EXAMPLES)
+@given(value=edge_scalars(), func=st.sampled_from(sorted(EDGE_FUNCS)))
+def test_directed_edge_ids(value, func):
+    """An edge function answers exactly the valid directed edges; anything else is an InvalidCellError naming it."""
+    valid = dggs.is_valid_directed_edge(value)
+    assert valid in (True, False)
+    ok, res = outcome(EDGE_FUNCS[func], value)
+    if ok:
+        assert valid, f"{func} accepted {value!r}"
+    else:
+        assert not valid, (func, value, res)
+        assert isinstance(res, dggs.InvalidCellError), res
+        names(res, value)
+
+
+@settings(max_examples=EXAMPLES)
+@given(a=any_scalars(), b=any_scalars())
+@example(a=GOOD, b="C4012")  # a neighbour's child: two levels
+@example(a=GOOD, b="T522")  # same level, not neighbours
+def test_cells_to_directed_edge_pairs(a, b):
+    """Two cells: an edge only for two edge neighbours; else a typed error (the corrupt id named)."""
+    ok, res = outcome(dggs.cells_to_directed_edge, a, b)
+    va, vb = dggs.is_valid_cell(a), dggs.is_valid_cell(b)
+    if ok:
+        assert va and vb and dggs.are_neighbor_cells(a, b), (a, b)
+        assert dggs.directed_edge_to_cells(res) == [a, b] or dggs.is_valid_directed_edge(res)
+    elif not (va and vb):
+        assert isinstance(res, dggs.InvalidCellError), res
+        names(res, *([] if va else [a]), *([] if vb else [b]))
+    else:
+        assert isinstance(res, dggs.DggsValueError), res
+
+
+@settings(max_examples=EXAMPLES)
+@given(i=st.one_of(st.sampled_from(COUNT_ARGS + BAD_NUMBERS), st.integers(-(1 << 70), 1 << 70)), j=st.sampled_from([0, 1, -1, 2.5, None]))
+def test_local_ij_to_cell_arguments(i, j):
+    """Lattice coordinates: integers only; a pair that names no cell or lies out of range is a DggsValueError."""
+    ok, res = outcome(dggs.local_ij_to_cell, GOOD, i, j)
+    ints = all(isinstance(_py(v), int) and not isinstance(_py(v), bool) for v in (i, j))
+    if ok:
+        assert ints, (i, j)
+        assert dggs.cell_to_local_ij(GOOD, res) == (i, j) or list(dggs.cell_to_local_ij(GOOD, res)) == [i, j]
+    else:
+        assert isinstance(res, dggs.DggsValueError), res
+
+
+@settings(max_examples=EXAMPLES)
+@given(lat=st.one_of(st.sampled_from(BAD_NUMBERS + EDGE_NUMBERS), st.floats()), lng=st.one_of(st.sampled_from(BAD_NUMBERS + EDGE_NUMBERS), st.floats()))
+def test_line_to_cells_coordinates(lat, lng):
+    """A polyline's vertex: a path of neighbours for real coordinates in range, else a CoordinateError."""
+    ok, res = outcome(lambda: dggs.line_to_cells(np.array([[lat, lng], [0.0, 0.0]], dtype=object), 4))
+    good = _numbers_ok([lat, lng]) and -90 <= float(_py(lat)) <= 90
+    if ok:
+        assert good, (lat, lng)
+        assert all(dggs.are_neighbor_cells(x, y) for x, y in zip(res[:-1], res[1:], strict=True))
+    else:
+        assert isinstance(res, dggs.CoordinateError), res
+
+
+@settings(max_examples=EXAMPLES)
+@given(radius=st.one_of(st.sampled_from(BAD_NUMBERS + EDGE_NUMBERS + [-1.0, 1e7, 1e7 + 1]), st.floats()), lat=st.sampled_from([0.0, 90.0, -90.0, 91.0, math.nan]))
+def test_circle_to_cells_arguments(radius, lat):
+    """A radius in metres 0..10,000 km and a centre in range give cells; anything else a typed error."""
+    ok, res = outcome(dggs.circle_to_cells, lat, 179.9, radius, 2)
+    r = _py(radius)
+    good_r = isinstance(r, (int, float)) and not isinstance(r, bool) and math.isfinite(r) and 0 <= r <= 1e7
+    good_c = math.isfinite(lat) and abs(lat) <= 90
+    if ok:
+        assert good_r and good_c, (lat, radius)
+        assert all(dggs.get_level(c) == 2 for c in res)
+    elif not good_c:
+        assert isinstance(res, dggs.CoordinateError), res
+    else:
+        assert not good_r and isinstance(res, dggs.DggsValueError), res
+        names(res, radius)
