@@ -9,7 +9,6 @@ WGS84 geodesic between the two points.
 
 from __future__ import annotations
 
-import math
 from functools import lru_cache
 from typing import Any
 
@@ -17,13 +16,9 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_projection, check_size
-from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, id_name, ids_array, pair_kind, values_out
-from ._corners import fans
-from ._kernel import grid as kg
+from ._checks import check_level, check_projection
+from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, pair_kind, values_out
 from ._kernel import points as kp
-from .measure import level_table
-from .points import latlng_to_cell
 
 __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells", "DISTANCE_UNITS"]
 
@@ -163,91 +158,17 @@ def cell_centers_distance(a: Any, b: Any, unit: str = "m", *, projection: str = 
 # Cells along a geodesic
 # --------------------------------------------------------------------------
 
-#: Samples per short cell edge along the geodesic (gaps left are filled by bisection).
-_SAMPLES_PER_EDGE = 4
-#: Bisection stops at this length (metres): two cells that still meet only at a corner there
-#: are joined around that corner.
-_CORNER_M = 1e-4
-#: Cells per short cell edge of line length in the size bound checked before sampling.  In the
-#: plane a segment crosses the six line families of the kisrhombille (spacings 3 and sqrt 3
-#: short edges, :func:`dggs.index._kernel.grid_tables.line_spacings`) at most
-#: 2 (1/3 + 1/sqrt 3) = 1.82 times per short edge (the |cos| of three directions 60 degrees
-#: apart sum to at most 2); the projection's distortion raised that to 1.98 on random lines at
-#: levels 3-10, so 3 leaves a margin of half.
-_CELLS_PER_EDGE = 3.0
-#: Cells the bound adds for the ends and the face crossings (up to 6 line families per face).
-_CELLS_EXTRA = 24
-#: Samples converted at once (bounds the memory of sampling by this, not by the line).
-_CHUNK = 1 << 20
-
-
-def _cells_at(line: tuple[float, float, float], s: np.ndarray, level: int, projection: str = "ISEA") -> np.ndarray:
-    lat1, lng1, az = line
-    n = s.shape[0]
-    lng, lat, _ = _geod().fwd(np.full(n, lng1), np.full(n, lat1), np.full(n, az), s)
-    lat, lng = np.asarray(lat, dtype=np.float64), np.asarray(lng, dtype=np.float64)
-    if projection == "ISEA":
-        ids: np.ndarray = latlng_to_cell(lat, lng, level, as_int=True)
-    else:  # IVEA's location (loaded on first use)
-        from ._kernel import ivea_points
-
-        ids = np.empty(n, dtype=np.uint64)
-        ivea_points.locate(n, lat, lng, level, ids)
-    return ids
-
-
-def _neighbours(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    out = np.empty(a.shape[0], dtype=bool)
-    kg.are_neighbours(np.ascontiguousarray(a), np.ascontiguousarray(b), out)
-    return out
-
-
-def _around_corner(a: int, b: int) -> list[int]:
-    """The cells strictly between ``a`` and ``b`` on the shorter way around a corner they share."""
-    around, sizes = fans(np.full(3, a, dtype=np.uint64), np.arange(3))
-    best: list[int] | None = None
-    for fan, size in zip(around, sizes, strict=True):
-        ring = [int(c) for c in fan[:size]]
-        if b in ring:
-            p = ring.index(b)
-            way = ring[1:p] if p <= size - p else ring[p + 1 :][::-1]
-            if best is None or len(way) < len(best):
-                best = way
-    if best is None:
-        raise RuntimeError(f"cells {id_name(a)!r} and {id_name(b)!r} share no corner")
-    return best
-
-
-def _between(
-    line: tuple[float, float, float], level: int, sa: float, ca: int, sb: float, cb: int, projection: str = "ISEA"
-) -> list[int]:
-    """Cells strictly between ``ca`` (at distance ``sa``) and ``cb`` (at ``sb``) on the line, in order.
-
-    Bisects until consecutive cells share an edge; consecutive cells that meet only at a
-    corner when less than :data:`_CORNER_M` apart are joined around it.
-    """
-    if ca == cb or _neighbours(np.array([ca], np.uint64), np.array([cb], np.uint64))[0]:
-        return []
-    if sb - sa < _CORNER_M:
-        return _around_corner(ca, cb)
-    sm = 0.5 * (sa + sb)
-    cm = int(_cells_at(line, np.array([sm]), level, projection)[0])
-    mid = [cm] if cm not in (ca, cb) else []
-    return _between(line, level, sa, ca, sm, cm, projection) + mid + _between(line, level, sm, cm, sb, cb, projection)
-
-
 def geodesic_to_cells(
     lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None,
     *, projection: str = "ISEA",
 ) -> np.ndarray:
     """The cells along the WGS84 geodesic from one point to another, in order (h3's ``grid_path_cells``).
 
-    The geodesic (``pyproj.Geod``) is sampled every quarter of a short cell
-    edge, the samples' cells are deduplicated in order, and wherever two
-    consecutive cells are not edge neighbours (the line clipped a cell
-    between two samples) the stretch between them is bisected until they are.
-    A line that passes within 0.1 mm of a corner is joined around that corner
-    the shorter way.  Hence the first cell holds the start point, the last
+    The one-segment case of :func:`dggs.line_to_cells`: the geodesic
+    (``pyproj.Geod``) is traced by the compiled tracer, which samples it every
+    half short edge and bisects wherever two consecutive cells are not edge
+    neighbours; a line that passes within 0.1 mm of a corner is joined around
+    that corner the shorter way.  Hence the first cell holds the start point, the last
     the end point, every cell meets the geodesic, and consecutive cells share
     an edge.  A cell can appear twice if the geodesic leaves and re-enters it
     (curved edges), never twice in a row.
@@ -297,47 +218,6 @@ def geodesic_to_cells(
         as_float_scalar(v, n) for v, n in ((lat1, "latitude"), (lng1, "longitude"), (lat2, "latitude"), (lng2, "longitude"))
     )
     _check_range(np.array([lat1, lat2]), np.array([lng1, lng2]), "a")
-    az, _, dist = _geod().inv(lng1, lat1, lng2, lat2)
-    edge = level_table(level)[level]["short_edge_m"]
-    check_size(int(math.ceil(_CELLS_PER_EDGE * dist / edge)) + _CELLS_EXTRA, max_cells, "geodesic_to_cells")
-    line = (lat1, lng1, az)
-    n = max(int(math.ceil(dist * _SAMPLES_PER_EDGE / edge)), 1)
-    step = dist / n  # sample i at i * step, the last at dist, as np.linspace(0, dist, n + 1)
-    kept_ids: list[np.ndarray] = []
-    kept_at: list[np.ndarray] = []
-    last = None
-    for lo in range(0, n + 1, _CHUNK):
-        at = np.arange(lo, min(lo + _CHUNK, n + 1), dtype=np.int64)
-        s = at * step
-        if at[-1] == n:
-            s[-1] = dist
-        ids = _cells_at(line, s, level, projection)
-        if at[-1] == n:
-            ids[-1] = _cells_at((lat2, lng2, 0.0), np.zeros(1), level, projection)[0]  # the end point itself
-        keep = np.ones(ids.shape[0], dtype=bool)
-        keep[1:] = ids[1:] != ids[:-1]
-        if last is not None:
-            keep[0] = ids[0] != last
-        last = ids[-1]
-        kept_ids.append(ids[keep])
-        kept_at.append(at[keep])
-    cells, idx = np.concatenate(kept_ids), np.concatenate(kept_at)
-    starts = np.where(idx == n, dist, idx * step)
-    gaps = np.flatnonzero(~_neighbours(cells[:-1], cells[1:])) if cells.size > 1 else np.zeros(0, dtype=np.int64)
-    if gaps.size:
-        parts: list[np.ndarray] = []
-        prev = 0
-        for g in gaps.tolist():
-            parts.append(cells[prev : g + 1])
-            # the stretch runs from the last sample in cells[g] to the first in cells[g + 1]
-            last_a = (idx[g + 1] - 1) * step
-            fill = _between(line, level, float(last_a), int(cells[g]), float(starts[g + 1]), int(cells[g + 1]), projection)
-            parts.append(np.array(fill, dtype=np.uint64))
-            prev = g + 1
-        parts.append(cells[prev:])
-        cells = np.concatenate(parts)
-        keep = np.ones(cells.shape[0], dtype=bool)
-        keep[1:] = cells[1:] != cells[:-1]
-        cells = cells[keep]
-    check_size(int(cells.shape[0]), max_cells, "geodesic_to_cells")
-    return ids_array(cells, as_int)
+    from .paths import line_to_cells  # the compiled tracer of polylines (paths imports nothing of this module)
+
+    return line_to_cells(np.array([[lat1, lng1], [lat2, lng2]]), level, as_int, max_cells, projection=projection)

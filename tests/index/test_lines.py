@@ -219,11 +219,11 @@ def test_long_line_refused_before_sampling(monkeypatch):
     needs more cells (lines meet up to about 2 cells per short edge here, more under the
     projection's distortion) and 99 million samples; the estimate must bound the output.
     """
-    import dggs.index.lines as ln
+    import dggs.index.paths as paths
 
     def no_sampling(*args, **kwargs):
-        raise AssertionError("sampled before the size check")
+        raise AssertionError("traced before the size check")
 
-    monkeypatch.setattr(ln, "_cells_at", no_sampling)
-    with pytest.raises(dggs.TooManyCellsError, match="geodesic_to_cells"):
+    monkeypatch.setattr(paths.kline, "trace", no_sampling)  # geodesic_to_cells is line_to_cells of one segment
+    with pytest.raises(dggs.TooManyCellsError, match="line_to_cells"):
         geodesic_to_cells(0, 0, 0.5, 179.9, 28)
