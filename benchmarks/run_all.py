@@ -34,7 +34,8 @@ ROOT = HERE.parent
 TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
            "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600,
-           "bench_dissolve.py": 900, "bench_scale.py": 2400}  # seconds (bench_raster: the 1.8 GB globe's memory run)
+           "bench_dissolve.py": 900, "bench_scale.py": 2400,
+           "bench_ivea.py": 600, "bench_projection_verbs.py": 600, "bench_handwritten_server.py": 600}  # seconds (bench_raster: the 1.8 GB globe's memory run)
 
 
 def run_script(name: str, args: list[str], env: dict[str, str]) -> tuple[str, str | None, float]:
@@ -92,6 +93,10 @@ def main() -> None:
             ("bench_edges.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_dissolve.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_scale.py", ["--quick"] if args.quick else [], thread_env(False)),  # Spark local[2], Dask
+            # IVEA against ISEA (no peer has IVEA on triangles): one core, as bench_snyder
+            ("bench_ivea.py", ["--points", "100000", "--repeats", "1"] if args.quick else [], thread_env(True)),
+            ("bench_projection_verbs.py", ["--points", "20000", "--repeats", "1"] if args.quick else [], thread_env(True)),
+            ("bench_handwritten_server.py", ["--n", "10000", "--rounds", "1"] if args.quick else [], thread_env(True)),
         ]
         results = [(name, *run_script(name, a, env)) for name, a, env in runs if name not in skip]
         kernel = json.loads(kjson.read_text()) if kjson.exists() else None
