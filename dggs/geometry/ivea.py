@@ -48,16 +48,12 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
-from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry._parallel import loops
-from dggs.geometry._validate import as_latlng
-from dggs.geometry.authalic import WGS84, Ellipsoid
+from dggs.geometry._checked import EllipsoidProjection, checked_forward, checked_inverse
 from dggs.geometry.constants import FACE_CIRCUMRADIUS, FACE_INRADIUS, G_ARC, ROT_COS, ROT_SIN, SQRT3, TINY
 from dggs.geometry.icosahedron import ISEA, Orientation
-from dggs.geometry.kernel import nearest_face, sector_of
-from dggs.geometry.snyder import checked_face_xy
+from dggs.geometry.kernel import face_loops, nearest_face, sector_of
 
 __all__ = ["forward", "inverse", "Projection", "face_forward", "face_inverse", "NATURAL_AREA", "VM_ARC"]
 
@@ -184,48 +180,13 @@ def face_inverse(frames: np.ndarray, face: int, x: float, y: float):
     return ox, oy, oz
 
 
-def _forward_rad(lat, lng, centres, frames, face, x, y):
-    """Spherical radians -> face, x, y on the unit sphere."""
-    for i in prange(lat.shape[0]):
-        cl = math.cos(lat[i])
-        face[i], x[i], y[i] = forward_unit(centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i]))
-
-
-def _inverse_deg(face, x, y, frames, lat, lng):
-    """Face-frame points -> spherical (lat, lng) degrees."""
-    for i in prange(face.shape[0]):
-        px, py, pz = face_inverse(frames, face[i], x[i], y[i])
-        lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
-        lng[i] = math.degrees(math.atan2(py, px))
-
-
-forward_rad = loops(_forward_rad)
-inverse_deg = loops(_inverse_deg)
+#: The batch loops (:func:`.kernel.face_loops`) over IVEA's per-point maps.
+forward_rad, inverse_deg = face_loops(forward_unit, face_inverse, "ivea")
 
 
 # ----------------------------------------------------------------------------
 # The checked public API (as dggs.geometry.snyder's)
 # ----------------------------------------------------------------------------
-def _real(value: Any, name: str) -> None:
-    """Raise :class:`CoordinateError` naming a value that is not a real number (str, bool, None...)."""
-    items = value if isinstance(value, (list, tuple)) else [value]
-    arr = np.asarray(value, dtype=object) if isinstance(value, (list, tuple)) else np.asarray(value)
-    if arr.dtype.kind in "iuf":
-        return
-    for i, v in enumerate(np.ravel(np.asarray(items, dtype=object))):
-        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
-            raise CoordinateError(f"{name} {v!r} at index {i} is not a real number")
-
-
-def _run_forward(lat: np.ndarray, lng: np.ndarray, orientation: Orientation):
-    geo = orientation.geometry
-    n = lat.shape[0]
-    face, x, y = np.empty(n, dtype=np.intp), np.empty(n), np.empty(n)
-    forward_rad(n, np.ascontiguousarray(lat), np.ascontiguousarray(lng), np.ascontiguousarray(geo.centres),
-                np.ascontiguousarray(geo.frames), face, x, y)
-    return face, x, y
-
-
 def forward(lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, Any, Any]:
     """Project spherical latitude/longitude (degrees) to a face and face-plane ``(x, y)`` by IVEA.
 
@@ -256,14 +217,7 @@ def forward(lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, A
     >>> face.tolist()
     [0, 16]
     """
-    _real(lat, "latitude")
-    _real(lng, "longitude")
-    lat_a, lng_a, scalar = as_latlng(lat, lng)
-    face, x, y = _run_forward(np.radians(lat_a), np.radians(lng_a), orientation)
-    if scalar:
-        return int(face[0]), float(x[0]), float(y[0])
-    shape = np.shape(np.broadcast(np.asarray(lat), np.asarray(lng)))
-    return face.reshape(shape), x.reshape(shape), y.reshape(shape)
+    return checked_forward(forward_rad, lat, lng, orientation)
 
 
 def inverse(face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple[Any, Any]:
@@ -296,19 +250,10 @@ def inverse(face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple
     >>> round(float(lat), 6), round(float(lng), 6)
     (69.094843, -78.75)
     """
-    if not isinstance(orientation, Orientation):
-        raise DggsValueError(f"orientation {orientation!r} is not an Orientation")
-    face_a, x_a, y_a, shape, scalar = checked_face_xy(face, x, y)
-    n = face_a.shape[0]
-    lat, lng = np.empty(n), np.empty(n)
-    inverse_deg(n, np.ascontiguousarray(face_a, dtype=np.int64), np.ascontiguousarray(x_a),
-                np.ascontiguousarray(y_a), np.ascontiguousarray(orientation.geometry.frames), lat, lng)
-    if scalar:
-        return float(lat[0]), float(lng[0])
-    return lat.reshape(shape), lng.reshape(shape)
+    return checked_inverse(inverse_deg, face, x, y, orientation)
 
 
-class Projection:
+class Projection(EllipsoidProjection):
     """IVEA on an ellipsoid (via authalic latitude) or a sphere, in metres (as :class:`.snyder.Projection`).
 
     Parameters
@@ -328,28 +273,6 @@ class Projection:
     [0.0, 0.0]
     """
 
-    def __init__(self, ellipsoid: Ellipsoid = WGS84, orientation: Orientation = ISEA) -> None:
-        self.ellipsoid = ellipsoid
-        self.orientation = orientation
-        self.radius = ellipsoid.authalic_radius
-
-    def __repr__(self) -> str:
-        return f"ivea.Projection(ellipsoid={self.ellipsoid.name}, orientation={self.orientation})"
-
-    def forward(self, lat: Any, lng: Any) -> tuple[Any, Any, Any]:
-        """Geodetic degrees -> ``(face, x, y)`` with x, y in metres."""
-        _real(lat, "latitude")
-        _real(lng, "longitude")
-        lat_a, lng_a, scalar = as_latlng(lat, lng)
-        beta = self.ellipsoid.geodetic_to_authalic(np.radians(lat_a))
-        face, x, y = _run_forward(np.asarray(beta, dtype=np.float64), np.radians(lng_a), self.orientation)
-        x, y = x * self.radius, y * self.radius
-        if scalar:
-            return int(face[0]), float(x[0]), float(y[0])
-        return face, x, y
-
-    def inverse(self, face: Any, x: Any, y: Any) -> tuple[Any, Any]:
-        """``(face, x, y)`` in metres -> geodetic ``(lat, lng)`` in degrees."""
-        lat, lng = inverse(face, np.divide(x, self.radius), np.divide(y, self.radius), self.orientation)
-        lat = self.ellipsoid.authalic_to_geodetic_deg(lat)
-        return (float(lat), lng) if np.ndim(lat) == 0 else (lat, lng)
+    forward_rad = forward_rad
+    inverse_deg = inverse_deg
+    label = "ivea.Projection"

@@ -25,7 +25,7 @@ import os
 import numpy as np
 from numba import njit, prange
 
-from ._parallel import loops
+from ._parallel import Loops, loops
 from .authalic import WGS84
 from .constants import (
     COS_G,
@@ -121,8 +121,7 @@ def unit_to_geodetic(px: float, py: float, pz: float):
     r2 = h2 + pz * pz
     s2 = 2.0 * pz * h / r2
     two_c2 = 2.0 * (h2 - pz * pz) / r2
-    b1 = 0.0
-    b2 = 0.0
+    b1 = b2 = 0.0
     for i in range(TO_GEODETIC.shape[0] - 1, -1, -1):
         b1, b2 = two_c2 * b1 - b2 + TO_GEODETIC[i], b1
     return math.degrees(beta + b1 * s2), math.degrees(math.atan2(py, px))
@@ -143,8 +142,7 @@ def geodetic_to_unit(lat_deg: float, lng_deg: float):
     cp = math.cos(phi)
     s2 = 2.0 * sp * cp
     two_c2 = 2.0 * ((cp - sp) * (cp + sp))
-    b1 = 0.0
-    b2 = 0.0
+    b1 = b2 = 0.0
     for i in range(TO_AUTHALIC.shape[0] - 1, -1, -1):
         b1, b2 = two_c2 * b1 - b2 + TO_AUTHALIC[i], b1
     d = b1 * s2
@@ -370,27 +368,30 @@ def child_corners(ax, ay, bx, by, cx, cy, digit: int):
 
 
 # ----------------------------------------------------------------------------
-# Loops for dggs.geometry.snyder.forward / inverse (any orientation)
+# Loops for the checked forward / inverse of snyder (below) and ivea (any orientation)
 # ----------------------------------------------------------------------------
-def _forward_rad(lat, lng, centres, frames, face, x, y):
-    """Spherical radians -> face, x, y on the unit sphere."""
-    for i in prange(lat.shape[0]):
-        cl = math.cos(lat[i])
-        face[i], x[i], y[i] = forward_unit(centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), math.sin(lat[i]))
+def face_loops(forward_unit, inverse_unit, name: str) -> tuple[Loops, Loops]:
+    """The batch loops over one projection's per-point maps (Snyder's, IVEA's).
+
+    ``forward_rad(n, lat, lng, centres, frames, face, x, y)`` and ``inverse_deg(n, face, x, y, frames, lat, lng)``;
+    ``name`` keeps each projection's compiled code in its own cache entries.
+    """
+
+    def _forward_rad(lat, lng, centres, frames, face, x, y):
+        for i in prange(lat.shape[0]):
+            cl, sl = math.cos(lat[i]), math.sin(lat[i])
+            face[i], x[i], y[i] = forward_unit(centres, frames, cl * math.cos(lng[i]), cl * math.sin(lng[i]), sl)
+
+    def _inverse_deg(face, x, y, frames, lat, lng):
+        for i in prange(face.shape[0]):
+            px, py, pz = inverse_unit(frames, face[i], x[i], y[i])
+            lat[i], lng[i] = math.degrees(math.atan2(pz, math.hypot(px, py))), math.degrees(math.atan2(py, px))
+
+    _forward_rad.__qualname__, _inverse_deg.__qualname__ = f"{name}_forward_rad", f"{name}_inverse_deg"
+    return loops(_forward_rad), loops(_inverse_deg)
 
 
-def _inverse_deg(face, x, y, frames, lat, lng):
-    """Face-frame points -> spherical (lat, lng) degrees."""
-    for i in prange(face.shape[0]):
-        px, py, pz = inverse_unit(frames, face[i], x[i], y[i])
-        lat[i] = math.degrees(math.atan2(pz, math.hypot(px, py)))
-        lng[i] = math.degrees(math.atan2(py, px))
-
-
-#: ``forward_rad(n, lat, lng, centres, frames, face, x, y)``: threads chosen by :func:`._parallel.parallel`.
-forward_rad = loops(_forward_rad)
-#: ``inverse_deg(n, face, x, y, frames, lat, lng)``: threads chosen by :func:`._parallel.parallel`.
-inverse_deg = loops(_inverse_deg)
+forward_rad, inverse_deg = face_loops(forward_unit, inverse_unit, "snyder")
 
 
 def write_jump_file() -> None:
