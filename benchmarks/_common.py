@@ -313,6 +313,40 @@ def loadavg() -> list[float]:
         return [float("nan")] * 3
 
 
+# --------------------------------------------------------------------------- ISEA against IVEA
+
+
+def projection_args(doc: str, argv: list[str] | None, points: int, level: int) -> Any:
+    """The options of a benchmark of ISEA against IVEA: ``--points``, ``--repeats``, ``--level``."""
+    import argparse
+
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--points", type=int, default=points)
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--level", type=int, default=level)
+    return parser.parse_args(argv)
+
+
+def projection_table(cases: dict[Any, Any], repeats: int, heading: str) -> None:
+    """Time ``cases`` keyed ``(operation, "ISEA" | "IVEA")`` and print IVEA's time over ISEA's (Markdown).
+
+    The cases run in turn (:func:`interleaved`, 60 s a case at most); the table of ns per item follows
+    ``heading``, the thread setting and the load average, then the notes, if any.
+    """
+    res = interleaved(cases, repeats, budget=60.0)
+    print(f"{heading}, DGGS_THREADS={os.environ.get('DGGS_THREADS', 'unset')}, load average {loadavg()}\n")
+    print("| operation | ISEA ns/item | IVEA ns/item | IVEA / ISEA |")
+    print("|---|---:|---:|---:|")
+    for op in dict.fromkeys(k[0] for k in cases):
+        a, b = res.get((op, "ISEA")), res.get((op, "IVEA"))
+        if a is None or b is None:
+            continue
+        ta, tb = a["wall"] / a["units"], b["wall"] / b["units"]
+        print(f"| {op} | {fmt_ns(ta)} | {fmt_ns(tb)} | {tb / ta:.2f} |")
+    if NOTES:
+        print("\n" + notes_section())
+
+
 # --------------------------------------------------------------------------- subprocesses
 
 

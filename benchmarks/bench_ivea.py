@@ -16,10 +16,9 @@ Run::
 
 from __future__ import annotations
 
-import argparse
-import os
 import sys
 from pathlib import Path
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -31,17 +30,13 @@ import _common  # noqa: E402
 
 def main(argv: list[str] | None = None) -> None:
     """Print the table (Markdown) of ISEA against IVEA."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--points", type=int, default=1_000_000)
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--level", type=int, default=15)
-    args = parser.parse_args(argv)
+    args = _common.projection_args(__doc__, argv, points=1_000_000, level=15)
     lat, lng = _common.points(args.points)
     grids = {"ISEA": dggs.Grid("ISEA"), "IVEA": dggs.Grid("IVEA")}
     projections = {"ISEA": snyder, "IVEA": ivea}
     planar = {k: m.forward(lat, lng) for k, m in projections.items()}
     ids = dggs.latlng_to_cell(lat, lng, args.level, as_int=True)
-    cases = {}
+    cases: dict[Any, Any] = {}
     for name in ("ISEA", "IVEA"):
         m, g, fxy = projections[name], grids[name], planar[name]
         cases[("projection forward", name)] = (lambda m=m: m.forward(lat, lng), args.points)
@@ -51,19 +46,7 @@ def main(argv: list[str] | None = None) -> None:
         cases[("cell_to_latlng", name)] = (lambda g=g: g.cell_to_latlng(ids), args.points)
         cases[("cell_to_boundary", name)] = (lambda g=g: g.cell_to_boundary(ids), args.points)
         cases[("cell_to_boundary densify=8", name)] = (lambda g=g: g.cell_to_boundary(ids, densify=8), args.points)
-    res = _common.interleaved(cases, args.repeats, budget=60.0)
-    print(f"{args.points:,} points, DGGS_THREADS={os.environ.get('DGGS_THREADS', 'unset')}, "
-          f"load average {_common.loadavg()}\n")
-    print("| operation | ISEA ns/item | IVEA ns/item | IVEA / ISEA |")
-    print("|---|---:|---:|---:|")
-    for op in dict.fromkeys(k[0] for k in cases):
-        a, b = res.get((op, "ISEA")), res.get((op, "IVEA"))
-        if a is None or b is None:
-            continue
-        ta, tb = a["wall"] / a["units"], b["wall"] / b["units"]
-        print(f"| {op} | {_common.fmt_ns(ta)} | {_common.fmt_ns(tb)} | {tb / ta:.2f} |")
-    if _common.NOTES:
-        print("\n" + _common.notes_section())
+    _common.projection_table(cases, args.repeats, f"{args.points:,} points")
 
 
 if __name__ == "__main__":

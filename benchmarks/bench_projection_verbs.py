@@ -16,10 +16,9 @@ Run::
 
 from __future__ import annotations
 
-import argparse
-import os
 import sys
 from pathlib import Path
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -32,17 +31,13 @@ import _common  # noqa: E402
 
 def main(argv: list[str] | None = None) -> None:
     """Print the table (Markdown) of ISEA against IVEA."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--points", type=int, default=100_000)
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--level", type=int, default=12)
-    args = parser.parse_args(argv)
+    args = _common.projection_args(__doc__, argv, points=100_000, level=12)
     lat, lng = _common.points(args.points)
     ids = dggs.latlng_to_cell(lat, lng, args.level, as_int=True)
     edges = np.asarray(dggs.origin_to_directed_edges(ids))[:, 1].copy()
     few = ids[: max(1, args.points // 100)]
     disk = dggs.grid_disk("C4012" + "0" * (args.level - 5), 20)
-    cases = {}
+    cases: dict[Any, Any] = {}
     for name in ("ISEA", "IVEA"):
         g = dggs.Grid(name)
         cases[("edge_length", name)] = (lambda g=g: g.edge_length(edges), args.points)
@@ -57,19 +52,7 @@ def main(argv: list[str] | None = None) -> None:
         n_line = len(dggs.Grid(name).geodesic_to_cells(51.05, -114.07, 49.28, -123.12, args.level))
         cases[("geodesic_to_cells Calgary-Vancouver", name)] = (
             lambda g=g: g.geodesic_to_cells(51.05, -114.07, 49.28, -123.12, args.level), n_line)
-    res = _common.interleaved(cases, args.repeats, budget=60.0)
-    print(f"{args.points:,} points at level {args.level}, DGGS_THREADS={os.environ.get('DGGS_THREADS', 'unset')}, "
-          f"load average {_common.loadavg()}\n")
-    print("| operation | ISEA ns/item | IVEA ns/item | IVEA / ISEA |")
-    print("|---|---:|---:|---:|")
-    for op in dict.fromkeys(k[0] for k in cases):
-        a, b = res.get((op, "ISEA")), res.get((op, "IVEA"))
-        if a is None or b is None:
-            continue
-        ta, tb = a["wall"] / a["units"], b["wall"] / b["units"]
-        print(f"| {op} | {_common.fmt_ns(ta)} | {_common.fmt_ns(tb)} | {tb / ta:.2f} |")
-    if _common.NOTES:
-        print("\n" + _common.notes_section())
+    _common.projection_table(cases, args.repeats, f"{args.points:,} points at level {args.level}")
 
 
 if __name__ == "__main__":
