@@ -313,6 +313,28 @@ def loadavg() -> list[float]:
         return [float("nan")] * 3
 
 
+# --------------------------------------------------------------------------- against h3
+
+
+def nearest_level(res: int, h3: Any) -> int:
+    """The dggs level whose cell area is nearest H3's average at ``res`` (in log ratio)."""
+    import math
+
+    import dggs
+
+    target = h3.average_hexagon_area(res, unit="m^2")
+    table = dggs.level_table(dggs.MAX_LEVEL)
+    return min(range(dggs.MAX_LEVEL + 1), key=lambda lv: abs(math.log(table[lv]["area_m2"] / target)))
+
+
+def print_report(out: list[str], load0: list[float]) -> None:
+    """Print a report's lines, then the load average at the start (``load0``) and now, then the notes."""
+    out.append(f"Load average at the start and the end: {', '.join(f'{x:.2f}' for x in load0)}; "
+               f"{', '.join(f'{x:.2f}' for x in loadavg())}.\n")
+    out.append(notes_section())
+    print("\n".join(out))
+
+
 # --------------------------------------------------------------------------- ISEA against IVEA
 
 

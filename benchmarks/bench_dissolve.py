@@ -23,7 +23,6 @@ Medians of ``--repeat`` calls, one after the other, one process.  Run::
 from __future__ import annotations
 
 import argparse
-import math
 import statistics
 import sys
 from collections.abc import Callable
@@ -38,20 +37,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import dggs  # noqa: E402
 
-from _common import fmt_ns, fmt_ratio, loadavg, notes_section, run_once, try_import  # noqa: E402
+from _common import fmt_ns, fmt_ratio, loadavg, nearest_level, print_report, run_once, try_import  # noqa: E402
 
 
 def median_time(fn: Callable[[], Any], repeat: int) -> float:
     """Median wall seconds of ``repeat`` calls (after one warm-up call)."""
     fn()
     return statistics.median(run_once(fn)[0] for _ in range(repeat))
-
-
-def nearest_level(res: int, h3: Any) -> int:
-    """The dggs level whose cell area is nearest H3's average at ``res`` (in log ratio)."""
-    target = h3.average_hexagon_area(res, unit="m^2")
-    table = dggs.level_table(dggs.MAX_LEVEL)
-    return min(range(dggs.MAX_LEVEL + 1), key=lambda lv: abs(math.log(table[lv]["area_m2"] / target)))
 
 
 def union_table(level: int, shape: Any, repeat: int) -> list[str]:
@@ -133,10 +125,7 @@ def main() -> None:
         h3v = try_import("h3ronpy.vector")
         for res, k in ((5, 30 if args.quick else 100), (7, 30 if args.quick else 100)):
             out += h3_table(h3, h3v, res, k, repeat) + [""]
-    out.append(f"Load average at the start and the end: {', '.join(f'{x:.2f}' for x in load0)}; "
-               f"{', '.join(f'{x:.2f}' for x in loadavg())}.\n")
-    out.append(notes_section())
-    print("\n".join(out))
+    print_report(out, load0)
 
 
 if __name__ == "__main__":

@@ -16,7 +16,6 @@ Run::
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -28,17 +27,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import dggs  # noqa: E402
 
-from _common import fmt_ns, fmt_ratio, interleaved, loadavg, notes_section, points, try_import  # noqa: E402
+from _common import fmt_ns, fmt_ratio, interleaved, loadavg, nearest_level, points, print_report, try_import  # noqa: E402
 
 H3_RES = 9
 PARENT_RES = 5
-
-
-def nearest_level(res: int, h3: Any) -> int:
-    """The dggs level whose cell area is nearest H3's average at ``res`` (in log ratio)."""
-    target = h3.average_hexagon_area(res, unit="m^2")
-    table = dggs.level_table(dggs.MAX_LEVEL)
-    return min(range(dggs.MAX_LEVEL + 1), key=lambda lv: abs(math.log(table[lv]["area_m2"] / target)))
 
 
 def table(title: str, cases: dict[str, tuple[Callable[[], Any], int]], repeat: int, dggs_key: str, h3_key: str) -> list[str]:
@@ -149,10 +141,7 @@ def main() -> None:
         "h3-py per call (int)": (lambda: [hb.local_ij_to_cell(a, i, j) for a, (i, j) in zip(ha, hij, strict=True)], calls),
     }, repeat, "dggs array (uint64)", "h3-py per call (int)")
 
-    out.append(f"Load average at the start and the end: {', '.join(f'{x:.2f}' for x in load0)}; "
-               f"{', '.join(f'{x:.2f}' for x in loadavg())}.\n")
-    out.append(notes_section())
-    print("\n".join(out))
+    print_report(out, load0)
 
 
 if __name__ == "__main__":

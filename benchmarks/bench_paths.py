@@ -24,7 +24,6 @@ Run::
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 from pathlib import Path
 from typing import Any
@@ -35,16 +34,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import dggs  # noqa: E402
 
-from _common import SEED, fmt_ns, fmt_ratio, interleaved, loadavg, notes_section, points, try_import  # noqa: E402
+from _common import SEED, fmt_ns, fmt_ratio, interleaved, loadavg, nearest_level, points, print_report, try_import  # noqa: E402
 
 H3_RES = (7, 9)
-
-
-def nearest_level(res: int, h3: Any) -> int:
-    """The dggs level whose cell area is nearest H3's average at ``res`` (in log ratio)."""
-    target = h3.average_hexagon_area(res, unit="m^2")
-    table = dggs.level_table(dggs.MAX_LEVEL)
-    return min(range(dggs.MAX_LEVEL + 1), key=lambda lv: abs(math.log(table[lv]["area_m2"] / target)))
 
 
 def pairs(n: int, km: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -182,10 +174,7 @@ def main() -> None:
     for res in H3_RES:
         km = args.km * (3.0 if res == 7 else 1.0)
         out += line_table(h3, h3v, res, 20 if args.quick else 100, 20, km, repeat) + [""]
-    out.append(f"Load average at the start and the end: {', '.join(f'{x:.2f}' for x in load0)}; "
-               f"{', '.join(f'{x:.2f}' for x in loadavg())}.\n")
-    out.append(notes_section())
-    print("\n".join(out))
+    print_report(out, load0)
 
 
 if __name__ == "__main__":
