@@ -14,14 +14,14 @@ NULL; errors are those of the Python API, named by the SQL function
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
-import duckdb
 import numpy as np
 import pyarrow as pa
 
-from dggs._duckdb_more import _lists
-from dggs.duckdb import _ID_KINDS, _LATLNG_ARROW, _create, _numbers, _out, _sql_errors, _valid
+from dggs._duckdb_more import _lists, typed_macro
+from dggs.duckdb import _ID_KINDS, _LATLNG_ARROW, _numbers, _out, _sql_errors, _valid
 from dggs.index.edges import (
     cells_to_directed_edge,
     directed_edge_to_boundary,
@@ -230,15 +230,5 @@ def register_edges(con: Any) -> set[str]:
     [({'i': 4, 'j': 2}, 'C402')]
     """
     for name in EDGE_FUNCTIONS:
-        overloads = []
-        for sql_type, (suffix, _) in _ID_KINDS.items():
-            params, returns, fn = _per_kind(name, sql_type)
-            _create(con, f"{name}_{suffix}", fn, params, returns)
-            args = _ARGS.get(name, ("edge",))
-            typed = ", ".join(f"{arg} {typ}" for arg, typ in zip(args, params, strict=True))
-            overloads.append(f"({typed}) AS {name}_{suffix}({', '.join(args)})")
-        try:
-            con.execute(f"CREATE OR REPLACE TEMPORARY MACRO {name}{', '.join(overloads)}")
-        except duckdb.ParserException as exc:  # typed macro parameters came in DuckDB 1.4
-            raise RuntimeError(f"dggs.duckdb needs DuckDB >= 1.4 (this is {duckdb.__version__}): {exc}") from exc
+        typed_macro(con, name, partial(_per_kind, name), _ARGS.get(name, ("edge",)))
     return set(EDGE_FUNCTIONS)

@@ -15,6 +15,7 @@ skipped.  Errors are those of the Python API, named by the SQL function.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 import duckdb
@@ -254,6 +255,27 @@ _ARGS = {"dggs_grid_distance": ("a", "b"), "dggs_compact_cells": ("cells",), "dg
          "dggs_cells_to_polygon_wkb": ("cells",), "dggs_grid_disk": ("cell", "k"), "dggs_grid_ring": ("cell", "k")}  # fmt: skip
 
 
+def typed_macro(con: Any, name: str, per_kind: Callable[[str], tuple[list[str], str, Callable[..., Any]]],
+                args: tuple[str, ...] | None = None) -> None:
+    """Add one UDF per id kind (``{name}_i64``, ...) and the macro ``name`` that picks one by argument types.
+
+    ``per_kind(sql_type)`` gives the UDF's SQL parameter types, return type and Python function; ``args`` the
+    macro's argument names (default ``cell, level``, as many as parameters).  Used by the edge and path
+    functions too.
+    """
+    overloads = []
+    for sql_type, (suffix, _) in _ID_KINDS.items():
+        params, returns, fn = per_kind(sql_type)
+        _create(con, f"{name}_{suffix}", fn, params, returns)
+        names = args or ("cell", "level")[: len(params)]
+        typed = ", ".join(f"{arg} {typ}" for arg, typ in zip(names, params, strict=True))
+        overloads.append(f"({typed}) AS {name}_{suffix}({', '.join(names)})")
+    try:
+        con.execute(f"CREATE OR REPLACE TEMPORARY MACRO {name}{', '.join(overloads)}")
+    except duckdb.ParserException as exc:  # typed macro parameters came in DuckDB 1.4
+        raise RuntimeError(f"dggs.duckdb needs DuckDB >= 1.4 (this is {duckdb.__version__}): {exc}") from exc
+
+
 def register_more(con: Any) -> set[str]:
     """Add the functions of ``dggs.duckdb._MORE_FUNCTIONS`` to ``con``; the names added."""
     for name, sql_type in (("dggs_polygon_to_cells", "BIGINT"), ("dggs_polygon_to_cells_str", "VARCHAR")):
@@ -261,15 +283,5 @@ def register_more(con: Any) -> set[str]:
     for name in _MORE_FUNCTIONS:
         if name.startswith("dggs_polygon_to_cells"):
             continue
-        overloads = []
-        for sql_type, (suffix, _) in _ID_KINDS.items():
-            params, returns, fn = _per_kind(name, sql_type)
-            _create(con, f"{name}_{suffix}", fn, params, returns)
-            args = _ARGS.get(name, ("cell", "level")[: len(params)])
-            typed = ", ".join(f"{arg} {typ}" for arg, typ in zip(args, params, strict=True))
-            overloads.append(f"({typed}) AS {name}_{suffix}({', '.join(args)})")
-        try:
-            con.execute(f"CREATE OR REPLACE TEMPORARY MACRO {name}{', '.join(overloads)}")
-        except duckdb.ParserException as exc:  # typed macro parameters came in DuckDB 1.4
-            raise RuntimeError(f"dggs.duckdb needs DuckDB >= 1.4 (this is {duckdb.__version__}): {exc}") from exc
+        typed_macro(con, name, partial(_per_kind, name), _ARGS.get(name))
     return set(_MORE_FUNCTIONS)

@@ -19,13 +19,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-import duckdb
 import numpy as np
 import pyarrow as pa
 import shapely
 
-from dggs._duckdb_more import _id_lists
-from dggs.duckdb import _ID_KINDS, _create, _ids, _numbers, _sql_errors, _valid
+from dggs._duckdb_more import _id_lists, typed_macro
+from dggs.duckdb import _create, _ids, _numbers, _sql_errors, _valid
 from dggs.errors import DggsValueError
 from dggs.index.circles import circle_to_cells
 from dggs.index.paths import grid_path_cells, line_to_cells
@@ -110,12 +109,5 @@ def register_paths(con: Any) -> set[str]:
         _create(con, f"dggs_circle_to_cells{suffix}", _circle(f"dggs_circle_to_cells{suffix}", sql_type),
                 ["DOUBLE", "DOUBLE", "DOUBLE", "BIGINT", "VARCHAR"], f"{sql_type}[]")  # fmt: skip
     name = "dggs_grid_path_cells"
-    overloads = []
-    for sql_type, (suffix, _) in _ID_KINDS.items():
-        _create(con, f"{name}_{suffix}", _path(name, sql_type), [sql_type, sql_type], f"{sql_type}[]")
-        overloads.append(f"(a {sql_type}, b {sql_type}) AS {name}_{suffix}(a, b)")
-    try:
-        con.execute(f"CREATE OR REPLACE TEMPORARY MACRO {name}{', '.join(overloads)}")
-    except duckdb.ParserException as exc:  # typed macro parameters came in DuckDB 1.4
-        raise RuntimeError(f"dggs.duckdb needs DuckDB >= 1.4 (this is {duckdb.__version__}): {exc}") from exc
+    typed_macro(con, name, lambda t: ([t, t], f"{t}[]", _path(name, t)), ("a", "b"))
     return set(PATH_FUNCTIONS)
