@@ -38,7 +38,7 @@ from dggs.geometry._parallel import loops
 
 from .bits import level_of, range_end, shift_of
 from .grid import _neighbour
-from .points import _ISEA_FRAMES, _POLE_LEAD, _crossing, _lat_lng_at, _pole_on, corners
+from .points import _ISEA_FRAMES, _POLE_LEAD, _crossing, _edge_params, _lat_lng_at, _pole_on, corners
 
 __all__ = ["boundary_descendants", "chain", "drop_covered", "outline_mask", "ring_points", "ring_point_bound"]
 
@@ -228,14 +228,7 @@ def ring_points(cell: np.ndarray, col: np.ndarray, steps: np.ndarray, starts: np
             fn, nx0, ny0, nx1, ny1 = _edge(cell[kn], col[kn])
             end_at_pole = _pole_on(fn, nx0, ny0, nx1, ny1) == 0.0
             tp = _pole_on(face, x0, y0, x1, y1)
-            m = 0
-            for j in range(step + 1):
-                t = j / step
-                if tp > 0.0 and (j - 1) / step < tp < t:
-                    ts[m] = tp
-                    m += 1
-                ts[m] = t
-                m += 1
+            m = _edge_params(ts, step, tp)
             lead = _POLE_LEAD / step
             for q in range(m - 1):
                 ta, tb = ts[q], ts[q + 1]

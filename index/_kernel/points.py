@@ -232,6 +232,24 @@ def _pole_on(face: int, x0, y0, x1, y1) -> float:
 
 
 @njit(cache=True, nogil=True)
+def _edge_params(ts, step: int, tp: float) -> int:
+    """Fill ``ts`` with a densified edge's parameters ``j / step`` (j = 0..step), sorted; return how many.
+
+    The pole's parameter ``tp`` goes among them when it falls inside a step.  Boundaries and dissolved
+    outlines alike.
+    """
+    m = 0
+    for j in range(step + 1):
+        t = j / step
+        if tp > 0.0 and (j - 1) / step < tp < t:
+            ts[m] = tp
+            m += 1
+        ts[m] = t
+        m += 1
+    return m
+
+
+@njit(cache=True, nogil=True)
 def _crossing(face: int, x0, y0, x1, y1, lo, hi, lng_lo):
     """Latitude where the curve from parameter lo (longitude ``lng_lo``) to hi reaches +-180 (bisection)."""
     lo_lat = 0.0
@@ -276,14 +294,7 @@ def special_ring(cell: np.uint64, densify: int, out) -> int:
         tp = _pole_on(face, x0, y0, x1, y1)
         tn = _pole_on(face, xs[(e + 1) % 3], ys[(e + 1) % 3], xs[(e + 1) % 3 + 1], ys[(e + 1) % 3 + 1])
         end_at_pole = tn == 0.0  # this edge ends at a pole corner
-        m = 0
-        for j in range(step + 1):  # the parameters j / step and the pole's, sorted
-            t = j / step
-            if tp > 0.0 and (j - 1) / step < tp < t:
-                ts[m] = tp
-                m += 1
-            ts[m] = t
-            m += 1
+        m = _edge_params(ts, step, tp)
         for k in range(m - 1):
             ta, tb = ts[k], ts[k + 1]
             if ta == tp:
