@@ -44,7 +44,11 @@ from numba import njit
 
 from dggs.geometry import kernel as gk
 
+from . import bits
+from .chord import clear as _clear
+from .chord import corner_clear as _corner_clear
 from .grid import _neighbour
+from .line_layout import clean, layout
 from .points import encode_point, one_point
 
 __all__ = ["RHO_MIN", "cells_at", "clean", "geodetic", "interpolate", "layout", "span_for", "trace"]
@@ -95,71 +99,6 @@ def geodetic(x: float, y: float, z: float):
     """ECEF metres -> geodetic WGS84 (lat, lng) degrees of the foot of the normal (:func:`_foot`'s)."""
     sp, cp, sl, cl = _foot(x, y, z)
     return math.degrees(math.atan2(sp, cp)), math.degrees(math.atan2(sl, cl))
-
-
-@njit(cache=True, nogil=True)
-def clean(xy):
-    """The points without consecutive repeats, checked: ``(-1, points)``, or ``(i, empty)``.
-
-    ``i`` is the index of the first point that is not a finite latitude in
-    -90..90 and a finite longitude.
-    """
-    n = xy.shape[0]
-    keep = np.empty(n, dtype=np.bool_)
-    count = 0
-    for i in range(n):
-        la, lo = xy[i, 0], xy[i, 1]
-        if not (-90.0 <= la <= 90.0) or not np.isfinite(lo):
-            return i, np.empty((0, 2), dtype=np.float64)
-        keep[i] = i == 0 or la != xy[i - 1, 0] or lo != xy[i - 1, 1]
-        count += keep[i]
-    out = np.empty((count, 2), dtype=np.float64)
-    j = 0
-    for i in range(n):
-        if keep[i]:
-            out[j, 0], out[j, 1] = xy[i, 0], xy[i, 1]
-            j += 1
-    return -1, out
-
-
-@njit(cache=True, nogil=True)
-def layout(xy, az12, az21, dist, max_span):
-    """Anchor arrays for a polyline's segments cut into spans of at most ``max_span`` metres.
-
-    Returns ``(lat, lng, az_out, az_in, span, at, seg, s)``: the polyline's
-    points and their azimuths in place (``az21``, pyproj's back azimuth at
-    each end, turned round), and for each anchor between them its index
-    ``at``, segment ``seg`` and distance ``s`` from the segment's start, for
-    the caller to fill from ``pyproj.Geod.fwd``.
-    """
-    nseg = dist.shape[0]
-    m = np.empty(nseg, dtype=np.int64)
-    size = 1
-    inner = 0
-    for i in range(nseg):
-        m[i] = max(1, int(math.ceil(dist[i] / max_span)))
-        size += m[i]
-        inner += m[i] - 1
-    lat, lng = np.empty(size), np.empty(size)
-    az_out, az_in, span = np.zeros(size), np.zeros(size), np.zeros(size - 1)
-    at = np.empty(inner, dtype=np.int64)
-    seg = np.empty(inner, dtype=np.int64)
-    s = np.empty(inner)
-    k = 0
-    r = 0
-    for i in range(nseg):
-        lat[k], lng[k] = xy[i, 0], xy[i, 1]
-        az_out[k] = az12[i]
-        step = dist[i] / m[i]
-        for j in range(m[i]):
-            span[k + j] = step
-            if j > 0:
-                at[r], seg[r], s[r] = k + j, i, j * step
-                r += 1
-        k += m[i]
-        az_in[k] = az21[i] + 180.0
-    lat[k], lng[k] = xy[nseg, 0], xy[nseg, 1]
-    return lat, lng, az_out, az_in, span, at, seg, s
 
 
 @njit(cache=True, nogil=True)
@@ -219,8 +158,8 @@ def _foot(x: float, y: float, z: float):
 
 
 @njit(cache=True, nogil=True)
-def _cell_at(x: float, y: float, z: float, level: int, hint: int):
-    """``(cell, face)``: the cell holding the foot of ECEF point (x, y, z), as :func:`dggs.index._kernel.points.one_point`.
+def _sample(x: float, y: float, z: float, level: int, hint: int):
+    """``(cell, face, fx, fy)``: the cell holding the foot of ECEF point (x, y, z), as :func:`dggs.index._kernel.points.one_point`, and the point in its face's plane.
 
     The authalic shift is :func:`dggs.geometry.kernel.geodetic_to_unit`'s
     series on ``sin 2 phi`` and ``cos 2 phi``; the longitude's sine and
@@ -249,7 +188,30 @@ def _cell_at(x: float, y: float, z: float, level: int, hint: int):
     if face < 0 or px * _ISEA_CENTRES[face, 0] + py * _ISEA_CENTRES[face, 1] + pz * _ISEA_CENTRES[face, 2] <= _COS_20:
         face = gk.nearest_face(_ISEA_CENTRES, px, py, pz)
     fx, fy = gk.face_forward(_ISEA_FRAMES, face, px, py, pz)
-    return encode_point(face, fx, fy, level), face
+    return encode_point(face, fx, fy, level), face, fx, fy
+
+
+@njit(cache=True, nogil=True)
+def _cell_at(x: float, y: float, z: float, level: int, hint: int):
+    """``(cell, face)``: :func:`_sample`'s cell and face."""
+    cell, face, _, _ = _sample(x, y, z, level, hint)
+    return cell, face
+
+
+@njit(cache=True, nogil=True)
+def _anchor(lat: float, lng: float, level: int):
+    """``(cell, face, fx, fy)`` of a polyline's or pyproj's point: the cell as ``latlng_to_cell`` gives it.
+
+    The planar point is :func:`_sample`'s; where its face is not the cell's
+    (a point on a face edge, a tie) the face is -1, so that :func:`_clear`
+    trusts no planar test from it.
+    """
+    cell = one_point(lat, lng, level)
+    x, y, z = ecef(lat, lng)
+    _, face, fx, fy = _sample(x, y, z, level, -1)
+    if face != bits.face_of(cell):
+        face = -1
+    return cell, face, fx, fy
 
 
 @njit(cache=True, nogil=True)
@@ -304,11 +266,15 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut
     ``az_out[k]`` leaving it and ``az_in[k]`` arriving (they differ at a
     polyline's vertices); span ``k`` joins anchors ``k`` and ``k + 1`` along
     ``span[k]`` metres.  Each span is sampled every ``step`` metres or less;
-    where two consecutive samples' cells share no edge, the stretch between
-    them is bisected until every pair does, or the stretch is shorter than
-    ``corner`` metres: then the pair (a corner between them) is recorded in
-    ``fix`` as the index of the second cell in ``out``, for the caller to
-    join around the corner.  Consecutive cells in ``out`` differ.
+    where two consecutive samples' cells share no edge, or share one but
+    :func:`dggs.index._kernel.chord.clear` cannot tell from their points in
+    the face plane that the line crossed only that edge (it may have passed
+    round an end of it, through the cells beyond that corner), the stretch
+    between them is bisected until every pair is clear, or the stretch is
+    shorter than ``corner`` metres: then a pair sharing no edge (a corner
+    between them) is recorded in ``fix`` as the index of the second cell in
+    ``out``, for the caller to join around the corner, and a pair sharing
+    one is joined across it.  Consecutive cells in ``out`` differ.
 
     With ``shortcut`` (from level 1), two cells at most a step apart along
     the line whose edge neighbours have exactly one cell in common are
@@ -317,24 +283,28 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut
     them, and with two it crosses the common neighbour; four or more would
     take it round their shared corner the other way, across cells whose
     angles there sum to 180 degrees or more (that corner has 6, 10 or 12
-    cells, or 4 and then two common neighbours).  A straight line cannot;
-    the line's image in the face plane is slightly curved, so at a corner
-    of 6 cells (exactly 180 degrees the other way) it could only by passing
-    it closer than its bend over one step, the same condition under which
-    two samples in edge neighbours (a corner of 4 cells) hide two cells
-    between them, which sampling alone already assumes away.  (A line
+    cells, or 4 and then two common neighbours).  A straight line cannot,
+    but the line's image in the face plane bends (a kink where it crosses
+    one of the projection's sector boundaries), so the join is taken only
+    where :func:`dggs.index._kernel.chord.corner_clear` finds the chord
+    between the two samples farther from their shared corner than that
+    bend; otherwise the stretch is bisected.  (A line
     through the corner itself, within the corner length, goes round it the
     shorter way, through the same cell.)
     """
     nfix = 0
     cap = out.shape[0]
-    prev = one_point(lat[0], lng[0], level)
+    prev, pf, px, py = _anchor(lat[0], lng[0], level)
     out[0] = prev
     n = 1
     sa = np.empty(_STACK, dtype=np.float64)
     sb = np.empty(_STACK, dtype=np.float64)
     ca = np.empty(_STACK, dtype=np.uint64)
     cb = np.empty(_STACK, dtype=np.uint64)
+    fa = np.empty(_STACK, dtype=np.int64)
+    fb = np.empty(_STACK, dtype=np.int64)
+    pa = np.empty((_STACK, 2), dtype=np.float64)
+    pb = np.empty((_STACK, 2), dtype=np.float64)
     hint = -1
     for k in range(lat.shape[0] - 1):
         s = span[k]
@@ -344,45 +314,58 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut
         for j in range(1, m + 1):
             if j == m:
                 t1 = 1.0
-                cur = one_point(lat[k + 1], lng[k + 1], level)
+                cur, cf, cx, cy = _anchor(lat[k + 1], lng[k + 1], level)
             else:
                 t1 = j / m
                 x, y, z = _point(c, t1)
-                cur, hint = _cell_at(x, y, z, level, hint)
+                cur, cf, cx, cy = _sample(x, y, z, level, hint)
+                hint = cf
             if cur != prev:
                 # bisect (t0, prev) .. (t1, cur), emitting every cell after prev up to cur
                 sa[0], ca[0], sb[0], cb[0] = t0, prev, t1, cur
+                fa[0], pa[0, 0], pa[0, 1], fb[0], pb[0, 0], pb[0, 1] = pf, px, py, cf, cx, cy
                 top = 1
                 while top > 0:
                     top -= 1
                     x0, x1, c0, c1 = sa[top], sb[top], ca[top], cb[top]
-                    if c0 != c1 and not _adjacent(c0, c1, level):
-                        via = np.uint64(0)
-                        if shortcut and level > 0 and (x1 - x0) * s <= step:
-                            via = _between(c0, c1, level)
-                        if via != 0:
-                            if n >= cap:
-                                return -1, 0
-                            out[n] = via
-                            n += 1
-                        elif (x1 - x0) * s >= corner and top + 2 <= _STACK:
-                            xm = 0.5 * (x0 + x1)
-                            x, y, z = _point(c, xm)
-                            cm, hint = _cell_at(x, y, z, level, hint)
-                            sa[top], ca[top], sb[top], cb[top] = xm, cm, x1, c1
-                            sa[top + 1], ca[top + 1], sb[top + 1], cb[top + 1] = x0, c0, xm, cm
-                            top += 2
-                            continue
-                        else:
-                            if nfix >= fix.shape[0]:
-                                return -1, 0
-                            fix[nfix] = n
-                            nfix += 1
+                    if c0 != c1:
+                        near = _adjacent(c0, c1, level)
+                        if not near or not _clear(c0, c1, fa[top], pa[top, 0], pa[top, 1], fb[top], pb[top, 0], pb[top, 1]):
+                            via = np.uint64(0)
+                            if not near and shortcut and level > 0 and (x1 - x0) * s <= step:
+                                via = _between(c0, c1, level)
+                                if via != 0 and not _corner_clear(c0, c1, fa[top], pa[top, 0], pa[top, 1], fb[top], pb[top, 0], pb[top, 1]):
+                                    via = np.uint64(0)
+                            if via != 0:
+                                if n >= cap:
+                                    return -1, 0
+                                out[n] = via
+                                n += 1
+                            elif (x1 - x0) * s >= corner and top + 2 <= _STACK:
+                                xm = 0.5 * (x0 + x1)
+                                x, y, z = _point(c, xm)
+                                cm, mf, mx, my = _sample(x, y, z, level, hint)
+                                hint = mf
+                                # (x0 .. xm) above (xm .. x1): the first half is taken first
+                                sa[top + 1], ca[top + 1], sb[top + 1], cb[top + 1] = x0, c0, xm, cm
+                                fa[top + 1], pa[top + 1, 0], pa[top + 1, 1] = fa[top], pa[top, 0], pa[top, 1]
+                                fb[top + 1], pb[top + 1, 0], pb[top + 1, 1] = mf, mx, my
+                                sa[top], ca[top] = xm, cm  # (xm .. x1) keeps its end
+                                fa[top], pa[top, 0], pa[top, 1] = mf, mx, my
+                                top += 2
+                                continue
+                            elif not near:
+                                if nfix >= fix.shape[0]:
+                                    return -1, 0
+                                fix[nfix] = n
+                                nfix += 1
                     if c1 != out[n - 1]:
                         if n >= cap:
                             return -1, 0
                         out[n] = c1
                         n += 1
-                prev = cur
+                prev, pf, px, py = cur, cf, cx, cy
+            else:
+                pf, px, py = cf, cx, cy
             t0 = t1
     return n, nfix

@@ -333,6 +333,100 @@ def near_cells(lat: float, lng: float, level: int) -> set[int]:
     return set(around) | {dggs.latlng_to_cell(lat, lng, level, as_int=True)}
 
 
+def geodesic_cells(p: tuple[float, float], q: tuple[float, float], n: int, level: int) -> np.ndarray:
+    """latlng_to_cell's ids (int) of ``n`` points pyproj.Geod.npts spaces along the geodesic p -> q, with p and q."""
+    pts = np.array(GEOD.npts(p[1], p[0], q[1], q[0], n)).reshape(-1, 2)
+    lat = np.concatenate([[p[0]], pts[:, 1], [q[0]]])
+    lng = np.concatenate([[p[1]], pts[:, 0], [q[1]]])
+    return np.stack([lat, lng], axis=1), np.asarray(dggs.latlng_to_cell(lat, lng, level, as_int=True))
+
+
+def check_visits(got: set[int], pts: np.ndarray, cells: np.ndarray, level: int) -> None:
+    """Every sample's cell is in ``got``, or the sample is on an edge of a cell in ``got`` (near_cells)."""
+    for i in np.flatnonzero(~np.isin(cells, np.fromiter(got, dtype=np.uint64, count=len(got)))).tolist():
+        assert near_cells(float(pts[i, 0]), float(pts[i, 1]), level) & got, (pts[i].tolist(), dggs.int_to_str(int(cells[i])))
+
+
+def sector_point(face: int, k: int, to_vertex: bool, s: float) -> tuple[float, float]:
+    """A point (geodetic) a fraction ``s`` of the way from a face's centre to its vertex or edge midpoint ``k``.
+
+    These arcs bound Snyder's six sectors of the face (and so the level-1
+    cells): the projection's derivative jumps across them, the image of a
+    line kinks there, the case where a line can pass round a corner of two
+    edge neighbours between two samples.
+    """
+    from dggs.geometry.authalic import WGS84
+    from dggs.geometry.icosahedron import ISEA, xyz_to_latlng
+
+    geo = ISEA.geometry
+    a, b = geo.vertices[geo.face_vertices[face, k]], geo.vertices[geo.face_vertices[face, (k + 1) % 3]]
+    c = sum(geo.vertices[geo.face_vertices[face, i]] for i in range(3))
+    c, end = c / np.linalg.norm(c), (a if to_vertex else (a + b) / np.linalg.norm(a + b))
+    w = math.acos(min(1.0, float(c @ end)))
+    v = (math.sin((1 - s) * w) * c + math.sin(s * w) * end) / math.sin(w)  # slerp on the authalic sphere
+    beta, lng = xyz_to_latlng(np.asarray(v))
+    return float(WGS84.authalic_to_geodetic_deg(math.degrees(float(beta)))), math.degrees(float(lng))
+
+
+@pytest.mark.parametrize("as_int", [False, True])
+def test_line_past_a_shared_edge_end(as_int):
+    """Issue 21: samples in edge neighbours A010022 and A510022, the line clipping the two cells round a corner of that edge.
+
+    The reference is pyproj.Geod.npts's 200,000 points along the geodesic, located by latlng_to_cell.
+    """
+    p, q = (-18.0755686040723, -47.03252558853899), (84.96875, 92.5)
+    pts, ref = geodesic_cells(p, q, 200_000, 6)
+    assert {dggs.str_to_int("A010021"), dggs.str_to_int("A510021")} <= set(ref.tolist())  # the oracle sees them
+    got = dggs.line_to_cells(np.array([p, q]), 6, as_int=as_int)
+    ids = [int(c) for c in got] if as_int else [dggs.str_to_int(c) for c in got.tolist()]
+    check_visits(set(ids), pts, ref, 6)
+    k = ids.index(dggs.str_to_int("A010022"))
+    assert [dggs.int_to_str(c) for c in ids[k : k + 4]] == ["A010022", "A010021", "A510021", "A510022"]
+
+
+@settings(max_examples=examples(40))
+@given(st.sampled_from(SPECIAL) | st.tuples(st.floats(-89, 89), st.floats(-180, 180))
+       | st.builds(sector_point, st.integers(0, 19), st.integers(0, 2), st.booleans(), st.floats(0.02, 0.98)),
+       st.integers(3, 9), st.integers(0, 3), st.floats(-4, -0.5), st.floats(0, 360), st.floats(0, 360), st.floats(200_000, 6_000_000))
+@example((-18.0755686040723, -47.03252558853899), 6, 0, -3.0, 0.0, 45.0, 3_000_000.0)  # at an icosahedron vertex
+@example((90.0, 0.0), 5, 1, -2.0, 90.0, 10.0, 2_000_000.0)  # at the North Pole
+@example((0.0, 180.0), 7, 2, -1.5, 200.0, 120.0, 1_000_000.0)  # on the antimeridian
+@example((31.83235904133608, -78.74999999999999), 9, 0, -0.5, 300.0, 270.0, 5_000_000.0)  # on an icosahedron edge
+# found by this test on the tracer before issue 21's fix: lines by a sector boundary that it traced straight
+# across an edge, or through a common neighbour (the shortcut), where they pass round the corner the other way
+@example((37.72956328564418, -122.53897910334729), 7, 3, -1.9272919787000369, 272.8249427784052, 192.95710495800844, 4102011.1935712826)
+@example((24.23959486538753, -84.65691651429962), 9, 3, -2.85185703640098, 336.0727524116093, 309.7275143103781, 2450867.069682196)
+@example((72.03263628670362, 73.612518738394), 6, 3, -1.4773335983321054, 66.31283919888655, 318.96032100804734, 5402249.9235415775)
+def test_long_line_near_a_cell_corner_visits_every_sampled_cell(p, level, corner, log_off, bearing, az, half):
+    """A long geodesic passing 1e-4 to 0.3 short edges from a corner of a cell: every cell it crosses is traced.
+
+    The line runs ``half`` metres each way from a point that far from the
+    corner; the oracle is pyproj.Geod.npts's points along it (20 a short edge,
+    and 20,000 in the 6 short edges round the corner, or the whole line if shorter), located by
+    latlng_to_cell.  str and int ids alike.
+    """
+    edge = dggs.level_table(level)[level]["short_edge_m"]
+    cell = dggs.latlng_to_cell(p[0], p[1], level)
+    ring = np.asarray(dggs.cell_to_boundary(cell, densify=0), dtype=np.float64)  # (lat, lng) corners
+    if corner == 3:  # the corner nearest p (on a sector boundary for sector_point's p)
+        corner = int(np.argmin([GEOD.inv(p[1], p[0], c[1], c[0])[2] for c in ring]))
+    v = ring[corner]
+    lng0, lat0, _ = GEOD.fwd(v[1], v[0], bearing, 10.0**log_off * edge)
+    lng1, lat1, _ = GEOD.fwd(lng0, lat0, az + 180.0, half)
+    lng2, lat2, _ = GEOD.fwd(lng0, lat0, az, half)
+    a, b = (lat1, lng1), (lat2, lng2)
+    got_str = dggs.line_to_cells(np.array([a, b]), level)
+    got_int = dggs.line_to_cells(np.array([a, b]), level, as_int=True)
+    assert [dggs.int_to_str(int(c)) for c in got_int] == got_str.tolist()
+    got = set(np.asarray(got_int).tolist())
+    w = min(3 * edge, half)
+    lw1, aw1, _ = GEOD.fwd(lng0, lat0, az + 180.0, w)
+    lw2, aw2, _ = GEOD.fwd(lng0, lat0, az, w)
+    for ends, n in (((a, b), int(min(20_000, 40 * half / edge))), (((aw1, lw1), (aw2, lw2)), 20_000)):
+        pts, cells = geodesic_cells(ends[0], ends[1], n, level)
+        check_visits(got, pts, cells, level)
+
+
 @settings(max_examples=examples(40))
 @given(st.lists(st.tuples(st.floats(-90, 90), st.floats(-540, 540)), min_size=1, max_size=50), st.integers(0, 28))
 @example([(89.999, 0.0), (-89.999, 33.0), (0.001, 180.0), (0.0, -179.999), (45.0, 179.999)], 28)
