@@ -102,7 +102,13 @@ def check_against_union(cells, densify=0, fine=None):
     assert got.area == pytest.approx(plane_cells, rel=1e-9)
     union = shapely.union_all(polys)
     if abs(union.area - plane_cells) > 1e-9 * plane_cells:
-        union = shapely.coverage_union_all(polys)
+        try:
+            union = shapely.coverage_union_all(polys)
+        except shapely.errors.GEOSException:  # a TopologyException on some blobs round a pole (level 4, k 4)
+            union = None
+    if union is None:  # no GEOS union to compare with: every cell inside the outline, and the same area, suffice
+        assert float(shapely.area(shapely.difference(polys, got)).sum()) <= 1e-9 * plane_cells
+        union = got
     assert union.area == pytest.approx(plane_cells, rel=1e-9)
     assert shapely.symmetric_difference(got, union).area <= 1e-9 * union.area
     xmin, ymin, xmax, ymax = union.bounds
@@ -133,6 +139,8 @@ def _disk(lat, lng, level, k):
 @example(seeds=[(0.0, 180.0)], level=6, k=4, densify=0, form="int")
 @example(seeds=[(45.0, -180.0), (45.0, 179.0)], level=4, k=2, densify=2, form="str")
 @example(seeds=[SPECIAL[6]], level=3, k=2, densify=0, form="str")  # an icosahedron vertex
+@example(seeds=[(0.0, 174.0), (-87.0, 0.0)], level=4, k=4, densify=0, form="str")  # GEOS: TopologyException
+@example(seeds=[(0.0, 174.0), (-87.0, 0.0)], level=4, k=4, densify=2, form="int")
 def test_random_blobs(seeds, level, k, densify, form):
     """Seeds grown by grid_disk (overlapping disks: duplicates merged), str and int ids alike."""
     cells = np.unique(np.concatenate([_disk(lat, lng, level, k) for lat, lng in seeds]))
