@@ -31,7 +31,7 @@ from numba import njit
 from . import bits
 from .points import triangle
 
-__all__ = ["BEND", "clear", "corner_clear", "dist_to_segment"]
+__all__ = ["BEND", "clear", "corner_clear", "corners6", "crosses", "dist_to_segment"]
 
 #: Bound on how far the face-plane image of a geodesic strays from its chord, as a fraction of the
 #: chord's length (the module's measurement: at most 0.137 on ISEA, 0.068 on IVEA).
@@ -67,8 +67,21 @@ def clear(a: np.uint64, b: np.uint64, fa: int, xa: float, ya: float, fb: int, xb
     """
     if fa < 0 or fa != fb or bits.face_of(a) != fa or bits.face_of(b) != fb:
         return False
-    _, a0x, a0y, a1x, a1y, a2x, a2y = triangle(a)
-    _, b0x, b0y, b1x, b1y, b2x, b2y = triangle(b)
+    return crosses(corners6(a), corners6(b), xa, ya, xb, yb)
+
+
+@njit(cache=True, nogil=True)
+def corners6(cell: np.uint64):
+    """The planar corners of a cell as six numbers (:func:`dggs.index._kernel.points.triangle`'s, without the face)."""
+    _, a0x, a0y, a1x, a1y, a2x, a2y = triangle(cell)
+    return a0x, a0y, a1x, a1y, a2x, a2y
+
+
+@njit(cache=True, nogil=True)
+def crosses(ta, tb, xa: float, ya: float, xb: float, yb: float) -> bool:
+    """:func:`clear`'s test on the corners ``ta`` and ``tb`` (:func:`corners6`) of two cells on the samples' face."""
+    a0x, a0y, a1x, a1y, a2x, a2y = ta
+    b0x, b0y, b1x, b1y, b2x, b2y = tb
     # a's corner that is not b's is the one farthest from all of b's corners
     far = -1.0
     rx, ry = 0.0, 0.0

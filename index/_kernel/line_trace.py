@@ -45,8 +45,9 @@ from numba import njit
 from dggs.geometry import kernel as gk
 
 from . import bits
-from .chord import clear as _clear
 from .chord import corner_clear as _corner_clear
+from .chord import corners6 as _corners6
+from .chord import crosses as _crosses
 from .grid import _neighbour
 from .line_layout import clean, layout
 from .points import encode_point, one_point
@@ -306,6 +307,7 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut
     pa = np.empty((_STACK, 2), dtype=np.float64)
     pb = np.empty((_STACK, 2), dtype=np.float64)
     hint = -1
+    kc, kt = np.uint64(0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     for k in range(lat.shape[0] - 1):
         s = span[k]
         c = _span(lat, lng, az_out, az_in, span, k)
@@ -330,7 +332,13 @@ def trace(lat, lng, az_out, az_in, span, level, step, corner, out, fix, shortcut
                     x0, x1, c0, c1 = sa[top], sb[top], ca[top], cb[top]
                     if c0 != c1:
                         near = _adjacent(c0, c1, level)
-                        if not near or not _clear(c0, c1, fa[top], pa[top, 0], pa[top, 1], fb[top], pb[top, 0], pb[top, 1]):
+                        ok = False
+                        if near and fa[top] >= 0 and fa[top] == fb[top] and bits.face_of(c0) == fa[top] and bits.face_of(c1) == fa[top]:
+                            # chord.clear, the last cell's corners kept (the next pair mostly starts there)
+                            ta = kt if c0 == kc else _corners6(c0)
+                            kc, kt = c1, _corners6(c1)
+                            ok = _crosses(ta, kt, pa[top, 0], pa[top, 1], pb[top, 0], pb[top, 1])
+                        if not ok:
                             via = np.uint64(0)
                             if not near and shortcut and level > 0 and (x1 - x0) * s <= step:
                                 via = _between(c0, c1, level)
