@@ -274,7 +274,9 @@ def line_to_cells(
     them; between them a compiled tracer samples every half short edge a
     curve within 0.1 mm of the geodesic (1e-6 of the short edge from level
     20) and bisects the gaps (:mod:`dggs.index._kernel.line_trace` derives
-    the bound).
+    the bound), and every pair of samples in edge neighbours that a test in
+    the face plane cannot show to have crossed only their shared edge (the
+    line may pass round an end of it, :mod:`dggs.index._kernel.chord`).
 
     Parameters
     ----------
