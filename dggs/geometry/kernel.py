@@ -128,18 +128,12 @@ def unit_to_geodetic(px: float, py: float, pz: float):
 
 
 @njit(cache=True, nogil=True)
-def geodetic_to_unit(lat_deg: float, lng_deg: float):
-    """Geodetic WGS84 degrees -> unit vector on the authalic sphere, with two sine-cosine pairs.
+def authalic_sincos(sp: float, cp: float):
+    """``(sin beta, cos beta)`` of the authalic latitude from the geodetic one's ``sin phi`` and ``cos phi``.
 
-    The authalic shift ``d = beta - phi`` (below 0.0023 rad for WGS84) is
-    summed from ``sin 2 phi`` and ``cos 2 phi`` built from ``sin phi`` and
-    ``cos phi``; ``sin d`` and ``cos d`` are their Taylor series to the
-    ninth order (error below 1e-28), and ``beta``'s sine and cosine follow
-    by the angle-sum rule.
+    The shift ``d = beta - phi`` (below 0.0023 rad for WGS84) is summed from ``sin 2 phi`` and ``cos 2 phi``;
+    ``sin d``, ``cos d`` are Taylor series to the ninth order (error below 1e-28), then the angle-sum rule.
     """
-    phi = math.radians(lat_deg)
-    sp = math.sin(phi)
-    cp = math.cos(phi)
     s2 = 2.0 * sp * cp
     two_c2 = 2.0 * ((cp - sp) * (cp + sp))
     b1 = b2 = 0.0
@@ -149,8 +143,14 @@ def geodetic_to_unit(lat_deg: float, lng_deg: float):
     d2 = d * d
     sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))))
     cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)))
-    sb = sp * cd + cp * sd
-    cb = cp * cd - sp * sd
+    return sp * cd + cp * sd, cp * cd - sp * sd
+
+
+@njit(cache=True, nogil=True)
+def geodetic_to_unit(lat_deg: float, lng_deg: float):
+    """Geodetic WGS84 degrees -> unit vector on the authalic sphere (:func:`authalic_sincos`)."""
+    phi = math.radians(lat_deg)
+    sb, cb = authalic_sincos(math.sin(phi), math.cos(phi))
     lam = math.radians(wrap_degrees(lng_deg))
     return cb * math.cos(lam), cb * math.sin(lam), sb
 

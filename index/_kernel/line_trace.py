@@ -62,7 +62,6 @@ _EP2 = _E2 / (1.0 - _E2)
 #: The smallest radius of curvature of the WGS84 ellipsoid (metres): the meridian's at the equator, b**2 / a.
 RHO_MIN = _B * _B / _A
 _STACK = 256
-_TO_AUTHALIC = gk.TO_AUTHALIC
 _COS_20 = math.cos(math.radians(20.0))
 _ISEA_CENTRES = gk.ISEA_CENTRES
 _ISEA_FRAMES = gk.ISEA_FRAMES
@@ -162,7 +161,7 @@ def _foot(x: float, y: float, z: float):
 def _sample(x: float, y: float, z: float, level: int, hint: int):
     """``(cell, face, fx, fy)``: the cell holding the foot of ECEF point (x, y, z), as :func:`dggs.index._kernel.points.one_point`, and the point in its face's plane.
 
-    The authalic shift is :func:`dggs.geometry.kernel.geodetic_to_unit`'s
+    The authalic shift is :func:`dggs.geometry.kernel.authalic_sincos`'s
     series on ``sin 2 phi`` and ``cos 2 phi``; the longitude's sine and
     cosine come from (x, y), so no trigonometric function is called.  The
     face is :func:`dggs.geometry.kernel.nearest_face`'s; a point within 20
@@ -172,18 +171,7 @@ def _sample(x: float, y: float, z: float, level: int, hint: int):
     dot products against nearest_face's tie bias of at most 7.6e-15).
     """
     sp, cp, sl, cl = _foot(x, y, z)
-    s2 = 2.0 * sp * cp
-    two_c2 = 2.0 * ((cp - sp) * (cp + sp))
-    b1 = 0.0
-    b2 = 0.0
-    for i in range(_TO_AUTHALIC.shape[0] - 1, -1, -1):
-        b1, b2 = two_c2 * b1 - b2 + _TO_AUTHALIC[i], b1
-    d = b1 * s2
-    d2 = d * d
-    sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))))
-    cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)))
-    sb = sp * cd + cp * sd
-    cb = cp * cd - sp * sd
+    sb, cb = gk.authalic_sincos(sp, cp)
     px, py, pz = cb * cl, cb * sl, sb
     face = hint
     if face < 0 or px * _ISEA_CENTRES[face, 0] + py * _ISEA_CENTRES[face, 1] + pz * _ISEA_CENTRES[face, 2] <= _COS_20:
