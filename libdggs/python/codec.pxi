@@ -1,0 +1,1 @@
+# codec: filled in by its port (see core.pyx).

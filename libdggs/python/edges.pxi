@@ -1,0 +1,1 @@
+# edges: filled in by its port (see core.pyx).

@@ -1,0 +1,1 @@
+# fill: filled in by its port (see core.pyx).

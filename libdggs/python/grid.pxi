@@ -1,0 +1,1 @@
+# grid: filled in by its port (see core.pyx).

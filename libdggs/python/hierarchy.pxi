@@ -1,0 +1,1 @@
+# hierarchy: filled in by its port (see core.pyx).

@@ -1,0 +1,1 @@
+# lines: filled in by its port (see core.pyx).

@@ -1,0 +1,1 @@
+# pixels: filled in by its port (see core.pyx).

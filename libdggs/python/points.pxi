@@ -1,0 +1,1 @@
+# points: filled in by its port (see core.pyx).
