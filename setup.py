@@ -10,6 +10,7 @@ OpenMP (gcc, clang with libomp); elsewhere they run on one thread.
 from __future__ import annotations
 
 import glob
+import importlib.util
 import os
 import subprocess
 import sys
@@ -71,4 +72,13 @@ def _core_extension() -> list[Extension]:
     )
 
 
-setup(ext_modules=_core_extension(), cmdclass={"build_ext": BuildExt})
+def _build_py() -> type:
+    """The web map's build step (dggs/server/_build.py), loaded by path: importing dggs itself needs the core."""
+    spec = importlib.util.spec_from_file_location("_dggs_build", os.path.join(HERE, "dggs", "server", "_build.py"))
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.BuildPy
+
+
+setup(ext_modules=_core_extension(), cmdclass={"build_ext": BuildExt, "build_py": _build_py()})

@@ -12,7 +12,8 @@ from cython.parallel cimport prange
 from libc.stdint cimport int64_t, uint8_t, uint32_t, uint64_t
 
 #: Smallest amount of work (items) that runs on several threads.
-PARALLEL_MIN = 8192
+cdef Py_ssize_t PARALLEL_MIN_C = 8192
+PARALLEL_MIN = PARALLEL_MIN_C
 cdef int _THREADS = 1
 
 
@@ -31,7 +32,26 @@ def get_threads():
 
 cdef inline int _nthreads(Py_ssize_t work) noexcept nogil:
     """Threads for a loop over ``work`` items: all of them from PARALLEL_MIN items on, else one."""
-    return _THREADS if (_THREADS > 1 and work >= 8192) else 1
+    return _THREADS if (_THREADS > 1 and work >= PARALLEL_MIN_C) else 1
+
+
+cdef extern from *:
+    """
+    #ifdef _OPENMP
+    #include <omp.h>
+    static int dggs_binding_thread(void) { return omp_get_thread_num(); }
+    #else
+    static int dggs_binding_thread(void) { return 0; }
+    #endif
+    """
+    int dggs_binding_thread() noexcept nogil
+
+
+def thread_of_item(Py_ssize_t n, int[:] out):
+    """Write the OpenMP thread number of each item of ``out``, looped as every batch is (the threads' test probe)."""
+    cdef Py_ssize_t i
+    for i in prange(out.shape[0], nogil=True, num_threads=_nthreads(n), schedule='static'):
+        out[i] = dggs_binding_thread()
 
 
 include "errors.pxi"
