@@ -8,13 +8,24 @@ BENCH_VENV := .venv-bench
 BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
-.PHONY: demo test test-all test-browser static static-if-npm bench clean
+.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean
 
-$(STAMP): pyproject.toml
+# The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
+# when the venv is made, and again here whenever a C, Cython or build file changes (an editable install does not
+# notice). cmake and ninja for the C tests come from pip, so a machine needs only Python, a C compiler and make.
+CORE_SOURCES := setup.py $(wildcard libdggs/src/*.c libdggs/src/*.h libdggs/include/*.h libdggs/python/*.pyx libdggs/python/*.pxi)
+CORE := $(VENV)/.core-built
+
+$(STAMP): pyproject.toml setup.py
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet "setuptools>=77" wheel "Cython>=3.0" cmake ninja
 	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster,spark]'
 	touch $(STAMP)
+
+$(CORE): $(STAMP) $(CORE_SOURCES)
+	$(PY) setup.py --quiet build_ext --inplace
+	touch $(CORE)
 
 # The web map's front-end dependencies from npm, pinned by the lock file: MapLibre GL JS, Natural Earth's
 # countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static
@@ -38,26 +49,51 @@ static-if-npm:
 	@command -v npm >/dev/null 2>&1 && $(MAKE) --no-print-directory static || \
 		echo "note: MapLibre GL JS not installed (needs npm); the map page of dggs serve stays blank until make static"
 
-demo: $(STAMP) static-if-npm
+demo: $(CORE) static-if-npm
 	$(VENV)/bin/dggs demo
 
 # test: the quick suite (pyproject's addopts leave out the slow and browser tests; the default hypothesis
 # profile runs 20 examples a property). test-all (CI): every test but the browser ones, the ci profile's
 # 100 examples (HYPOTHESIS_PROFILE=thorough make test-all for 2000).
-test: $(STAMP) static-if-npm
-	$(PY) -m ruff check dggs index storage experiments tests examples
+test: $(CORE) static-if-npm
+	$(PY) -m ruff check dggs index storage experiments tests examples libdggs
 	$(PY) -m mypy
+	$(MAKE) --no-print-directory test-core
 	$(PY) -m pytest -q
 
-test-all: $(STAMP) static-if-npm
-	$(PY) -m ruff check dggs index storage experiments tests examples
+test-all: $(CORE) static-if-npm
+	$(PY) -m ruff check dggs index storage experiments tests examples libdggs
 	$(PY) -m mypy
+	$(MAKE) --no-print-directory test-core test-core-sanitize fuzz
 	HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-ci} $(PY) -m pytest -q -m 'not browser'
+
+# The C core's own tests (ctest), built warning-free (-Werror) as a static and a shared library.
+CMAKE := $(VENV)/bin/cmake
+test-core: $(STAMP)
+	$(CMAKE) -S libdggs -B build/libdggs -G Ninja -DCMAKE_MAKE_PROGRAM=$(abspath $(VENV))/bin/ninja \
+		-DCMAKE_BUILD_TYPE=Release -DDGGS_WERROR=ON >/dev/null
+	$(CMAKE) --build build/libdggs
+	$(VENV)/bin/ctest --test-dir build/libdggs --output-on-failure
+
+# The same C tests, and the Python suite's kernel tests over a dggs._core built likewise, under
+# AddressSanitizer and UBSan (gcc's runtimes, preloaded into the Python process): libdggs/tools/sanitize.sh.
+test-core-sanitize: $(STAMP)
+	$(CMAKE) -S libdggs -B build/libdggs-san -G Ninja -DCMAKE_MAKE_PROGRAM=$(abspath $(VENV))/bin/ninja \
+		-DCMAKE_BUILD_TYPE=Debug -DDGGS_SANITIZE=ON -DDGGS_WERROR=ON >/dev/null
+	$(CMAKE) --build build/libdggs-san
+	$(VENV)/bin/ctest --test-dir build/libdggs-san --output-on-failure
+	PY=$(PY) sh libdggs/tools/sanitize.sh
+
+# A bounded fuzz run of the core under the sanitizers (id parsing, boundaries, polygon fill, lines):
+# libdggs/fuzz/, libFuzzer where clang is installed (Debian's clang, installed here if missing and root).
+FUZZ_SECONDS ?= 30
+fuzz: $(STAMP)
+	PY=$(PY) FUZZ_SECONDS=$(FUZZ_SECONDS) sh libdggs/fuzz/run.sh
 
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout
 # (no sandbox user), so a /tmp that only root may write to does not stop it.
-test-browser: $(STAMP) $(STATIC)
+test-browser: $(CORE) $(STATIC)
 	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
 		(apt-get -o APT::Sandbox::User=root update -q && \
 		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q chromium chromium-driver)
@@ -76,4 +112,4 @@ bench: $(BENCH_STAMP)
 clean:
 	rm -rf $(VENV) $(BENCH_VENV) build *.egg-info demo.db demo-cells.geojson demo-map.png \
 		dggs/server/node_modules dggs/server/static/vendor
-	find . -path ./.venv -prune -o \( -name "*.nbi" -o -name "*.nbc" \) -print | xargs rm -f  # numba caches
+	rm -f dggs/_core.*.so dggs/_core.*.pyd

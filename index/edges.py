@@ -48,11 +48,11 @@ __all__ = [
 #: Chords per edge for lengths (and twice as many), extrapolated: within 1e-8 of the length.
 PIECES = 16
 _UNITS = {"m": 1.0, "km": 1e-3}
-_ONE_ORIGIN = Entry(ke.one_origin, "uint64(uint64)")
-_ONE_DESTINATION = Entry(ke.one_destination, "uint64(uint64)")
-_ONE_ENDS = Entry(ke.one_ends, "UniTuple(uint64, 2)(uint64)")
-_ONE_REVERSE = Entry(ke.one_reverse, "uint64(uint64)")
-_ONE_LENGTH = Entry(ke.one_length, "UniTuple(float64, 2)(uint64, int64)")
+_ONE_ORIGIN = Entry(ke.one_origin)
+_ONE_DESTINATION = Entry(ke.one_destination)
+_ONE_ENDS = Entry(ke.one_ends)
+_ONE_REVERSE = Entry(ke.one_reverse)
+_ONE_LENGTH = Entry(ke.one_length)
 
 
 def _refuse_level_28(ids: np.ndarray) -> None:

@@ -107,8 +107,8 @@ def _uncompact(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
 
 _LEVEL = Op(many=_levels, out=VALUE, one=level_of)
 _FACE = Op(many=_faces, out=VALUE, one=face_of)
-_PARENT = Op(many=_parents, out=CELL, one_str=Entry(ks.parent_str, "unicode_type(unicode_type, int64)"),
-              one_int=Entry(kh.parent_of, "int64(int64, int64)"))
+_PARENT = Op(many=_parents, out=CELL, one_str=Entry(ks.parent_str),
+              one_int=Entry(kh.parent_of))
 _CHILDREN = Op(many=_children, out=FLAT)
 _CENTER_CHILD = Op(many=_center_children, out=CELL)
 _COMPACT = Op(many=kc.compact, out=FLAT)

@@ -44,11 +44,11 @@ def _centres(ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 _LOCATE = Op(many=_locate, out=_CELL, one=kp.one_point, form="str",
-             one_str=Entry(ks.point_str, "unicode_type(float64, float64, int64)"))
+             one_str=Entry(ks.point_str))
 _LOCATE_INT = Op(many=_locate, out=_CELL, one=kp.one_point, form="int",
-                 one_int=Entry(kp.one_point, "uint64(float64, float64, int64)"))
-_CENTRE = Op(many=_centres, out=VALUE, one_str=Entry(ks.centre_str, "UniTuple(float64, 2)(unicode_type)"),
-             one_int=Entry(kp.centre_of, "UniTuple(float64, 2)(int64)"))
+                 one_int=Entry(kp.one_point))
+_CENTRE = Op(many=_centres, out=VALUE, one_str=Entry(ks.centre_str),
+             one_int=Entry(kp.centre_of))
 _BOUNDARY = Op(many=boundaries, out=VALUE)
 _POLYGON = Op(many=geometries, out=VALUE)
 

@@ -8,8 +8,7 @@ result goes back into the container that came in.  An op may also have
 or ``int`` id then skips the containers altogether (a few hundred
 nanoseconds instead of a few microseconds).  ``one_str`` and ``one_int``,
 compiled :class:`Entry` points that take the lone ``str`` or ``int`` itself
-and give the finished answer, skip the Python string codec and numba's type
-dispatch as well.  ``one`` answers a miss (the
+and give the finished answer, skip the Python string codec as well.  ``one`` answers a miss (the
 null id 0, NaN, an empty array) for anything it cannot answer, and the id
 then takes the general path, which explains it.  Since every check happens
 in the verb before :func:`apply` and both paths run the same kernel, a
@@ -63,37 +62,27 @@ _PLAIN_NUMBERS = (float, int)
 
 
 class Entry:
-    """A compiled kernel's entry point for one signature, looked up on the first call.
+    """A compiled single-id entry point of the core (:mod:`dggs._core`), called as it is.
 
-    numba's dispatcher spends 80-150 ns per call choosing the signature (about
-    1 µs for a ``str`` argument); ``entry.call`` is the compiled function of
-    ``signature`` itself.  The first ``entry.call(...)`` compiles ``kernel`` for
-    it (or loads it from the cache) and rebinds ``call``, so nothing is compiled
-    at import.
+    The binding's functions take the lone ``str``, ``int`` or float point themselves (no type dispatch, no
+    array), so ``entry.call`` is the function itself; the class names the role in an :class:`Op`.
 
     Parameters
     ----------
-    kernel : numba dispatcher
+    kernel : callable
         The compiled function.
-    signature : str
-        Its numba signature, e.g. ``"unicode_type(unicode_type, int64)"``.
 
     Examples
     --------
     >>> from dggs.index._kernel import scalar
-    >>> Entry(scalar.parent_str, "unicode_type(unicode_type, int64)").call("C401", -1)
+    >>> Entry(scalar.parent_str).call("C401", -1)
     'C40'
     """
 
-    __slots__ = ("_kernel", "_signature", "call")
+    __slots__ = ("call",)
 
-    def __init__(self, kernel: Any, signature: str) -> None:
-        self._kernel, self._signature = kernel, signature
-        self.call: Callable[..., Any] = self._first
-
-    def _first(self, *args: Any) -> Any:
-        self.call = self._kernel.compile(self._signature)
-        return self.call(*args)
+    def __init__(self, kernel: Callable[..., Any]) -> None:
+        self.call: Callable[..., Any] = kernel
 
 
 @dataclass(frozen=True)
