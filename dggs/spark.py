@@ -28,10 +28,8 @@ batch, its values and the partition; Spark reports it on the driver as a
 ``PythonException`` holding that text, which :func:`spark_errors` turns back
 into the typed error.  With ``on_invalid="null"`` bad rows give NULL.
 
-Workers compile nothing twice: the kernels are compiled once and kept in
-numba's cache (``dggs/geometry/_cache.py``); on a cluster set
-``spark.executorEnv.NUMBA_CACHE_DIR`` to a directory each worker can write
-(:func:`session_config` does), and Spark's reused Python workers
+Workers compile nothing: the grid is the compiled C core (``dggs._core``) of the installed package, so a
+worker's first call costs what every other does, and Spark's reused Python workers
 (``spark.python.worker.reuse``, on by default) import dggs once each.
 """
 
@@ -115,23 +113,19 @@ def register(spark: Any, on_invalid: str = "raise") -> Any:
     return spark
 
 
-def session_config(numba_cache_dir: str | None = None, python: str | None = None) -> dict[str, str]:
-    """Spark settings for dggs's workers: the numba cache directory and the worker Python.
+def session_config(python: str | None = None) -> dict[str, str]:
+    """Spark settings for dggs's workers: the worker Python, reused between tasks.
 
     Parameters
     ----------
-    numba_cache_dir : str, optional
-        A directory every worker can write (on a cluster: one per node, or a
-        shared one); default ``$NUMBA_CACHE_DIR`` if set, else nothing is set
-        and dggs caches in its package folder or ``~/.cache/numba``.
     python : str, optional
         The Python of the workers; default this interpreter (``sys.executable``).
 
     Returns
     -------
     dict of str
-        ``spark.executorEnv.NUMBA_CACHE_DIR``, ``spark.pyspark.python`` and
-        ``spark.python.worker.reuse``; pass as ``SparkSession.builder.config(map=...)``.
+        ``spark.pyspark.python`` and ``spark.python.worker.reuse``; pass as
+        ``SparkSession.builder.config(map=...)``.
 
     Raises
     ------
@@ -139,17 +133,13 @@ def session_config(numba_cache_dir: str | None = None, python: str | None = None
 
     Examples
     --------
-    >>> session_config("/tmp/numba", "/usr/bin/python3")["spark.executorEnv.NUMBA_CACHE_DIR"]
-    '/tmp/numba'
+    >>> session_config("/usr/bin/python3")
+    {'spark.pyspark.python': '/usr/bin/python3', 'spark.python.worker.reuse': 'true'}
     """
-    conf = {"spark.pyspark.python": python or sys.executable, "spark.python.worker.reuse": "true"}
-    cache = numba_cache_dir or os.environ.get("NUMBA_CACHE_DIR")
-    if cache:
-        conf["spark.executorEnv.NUMBA_CACHE_DIR"] = str(cache)
-    return conf
+    return {"spark.pyspark.python": python or sys.executable, "spark.python.worker.reuse": "true"}
 
 
-def local_session(master: str = "local[2]", numba_cache_dir: str | None = None, **conf: str) -> Any:
+def local_session(master: str = "local[2]", **conf: str) -> Any:
     """A SparkSession on this machine with :func:`session_config` and the dggs functions registered.
 
     Spark starts its Python workers with ``$PYSPARK_PYTHON`` (default ``python3``), not the driver's
@@ -158,8 +148,6 @@ def local_session(master: str = "local[2]", numba_cache_dir: str | None = None, 
     Parameters
     ----------
     master : str, default "local[2]"
-    numba_cache_dir : str, optional
-        As :func:`session_config`.
     **conf : str
         More Spark settings (dots written as such: ``**{"spark.sql.shuffle.partitions": "8"}``).
 
@@ -180,7 +168,7 @@ def local_session(master: str = "local[2]", numba_cache_dir: str | None = None, 
     from pyspark.sql import SparkSession
 
     os.environ.setdefault("PYSPARK_PYTHON", sys.executable)
-    settings: dict[str, Any] = {**session_config(numba_cache_dir), **conf}
+    settings: dict[str, Any] = {**session_config(), **conf}
     return register(SparkSession.builder.master(master).config(map=settings).getOrCreate())
 
 

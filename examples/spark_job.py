@@ -6,7 +6,7 @@ Run locally (Spark local[2], Java 17):
 
 or over your own Parquet points (columns lat, lng, value) and on a cluster (the same code under spark-submit):
 
-    spark-submit --conf spark.executorEnv.NUMBA_CACHE_DIR=/local/numba examples/spark_job.py --input 'hdfs:///points'
+    spark-submit examples/spark_job.py --input 'hdfs:///points'
 
 Needs the optional extra: pip install 'dggs[spark]'.  Spark's Python workers run $PYSPARK_PYTHON;
 dggs.spark.local_session sets it to this interpreter when it is unset.

@@ -60,18 +60,6 @@ def serve(store: str, host: str, port: int, max_zones: int, max_features: int, r
 
     app = create_app(store, max_zones=max_zones, max_features=max_features, refresh=refresh)  # StorageError: one line, exit 1
     _check_port(host, port)
-    import threading
-
-    from .warm import warm_kernels
-
-    # compiled once per installation (then loaded from numba's cache), so the first map view needs no compiling
-    note = threading.Timer(2.0, lambda: click.echo("compiling the grid kernels, once for this installation ...",
-                                                   err=True))
-    note.start()
-    try:
-        warm_kernels()
-    finally:
-        note.cancel()
     from .vendor import VENDOR_HELP, missing_vendor
 
     if missing_vendor():

@@ -168,7 +168,6 @@ pytestmark_spark = pytest.mark.slow  # the JVM and two Python workers: ~1 minute
 def spark(tmp_path_factory):
     import dggs.spark
 
-    cache = str(tmp_path_factory.mktemp("numba"))
     conf = {"spark.ui.enabled": "false", "spark.ui.showConsoleProgress": "false",
             "spark.sql.shuffle.partitions": "4", "spark.sql.execution.arrow.maxRecordsPerBatch": "3000"}
     # the JVM and the Python workers it starts (`python -m pyspark.daemon`, which puts the working directory
@@ -176,7 +175,7 @@ def spark(tmp_path_factory):
     here = os.getcwd()
     os.chdir(tmp_path_factory.mktemp("spark-cwd"))
     try:
-        session = dggs.spark.local_session("local[2]", numba_cache_dir=cache, **conf)
+        session = dggs.spark.local_session("local[2]", **conf)
     finally:
         os.chdir(here)
     session.sparkContext.setLogLevel("ERROR")
@@ -281,13 +280,19 @@ def test_spark_nulls_and_errors(spark):
 
 
 @pytestmark_spark
-def test_spark_workers_get_the_numba_cache_dir(spark):
-    """session_config's NUMBA_CACHE_DIR reaches the Python workers, and they compile into it."""
-    cache = spark.conf.get("spark.executorEnv.NUMBA_CACHE_DIR")
-    seen = spark.sparkContext.parallelize(range(2), 2).map(lambda _: os.environ.get("NUMBA_CACHE_DIR")).collect()
-    assert seen == [cache, cache]
-    spark.sql("SELECT dggs_latlng_to_cell(1.0, 2.0, 5)").collect()
-    assert list(Path(cache).glob("dggs-*/*/*.nbc")), "the workers cached no compiled kernel"
+def test_spark_workers_compile_nothing(spark):
+    """The workers answer from the compiled core: no numba (or any JIT) is loaded in them."""
+    def probe(_):
+        import sys
+
+        import dggs
+
+        return dggs.latlng_to_cell(1.0, 2.0, 5), sorted(m for m in ("numba", "llvmlite") if m in sys.modules)
+
+    seen = spark.sparkContext.parallelize(range(2), 2).map(probe).collect()
+    import dggs
+
+    assert seen == [(dggs.latlng_to_cell(1.0, 2.0, 5), [])] * 2
 
 
 @pytestmark_spark

@@ -576,7 +576,7 @@ def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
 
 
 @pytest.mark.parametrize("name", ["app", "dggrs", "encodings", "errors", "geojson", "mapdata", "models", "ogc", "params",
-                                  "reader", "vendor", "warm", "zones"])
+                                  "reader", "vendor", "zones"])
 def test_doctests(name):
     module = importlib.import_module(f"dggs.server.{name}")
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
