@@ -24,7 +24,9 @@ The rules:
     ``storage/*`` and the rest go through the verbs or the converter and
     shape modules (``dggs.index._convert``, ``dggs.index._shapes``).
 (d) The geometry floor: ``dggs/geometry/*`` imports nothing from ``dggs``
-    but ``dggs.errors`` and ``dggs.geometry.*``.
+    but ``dggs.errors``, ``dggs.geometry.*`` and the compiled core ``dggs._core``.
+(f) Only the kernel floors bind the compiled core: ``dggs._core`` is imported
+    by ``dggs.geometry`` and ``dggs.index._kernel`` modules alone.
 (e) Every module is at most 400 lines.
 
 Each check lists every offence as ``file:line: what``.
@@ -179,10 +181,21 @@ def test_geometry_imports_only_errors_and_geometry():
             for source in sources:
                 if source.split(".")[0] != "dggs":
                     continue
-                if source == "dggs.errors" or source == "dggs.geometry" or source.startswith("dggs.geometry."):
+                if source in ("dggs.errors", "dggs._core", "dggs.geometry") or source.startswith("dggs.geometry."):
                     continue
                 offences.append(f"{_where(module, node)}: {module} imports {source}")
     _report(offences)
+
+
+def test_only_the_kernel_floors_bind_the_compiled_core():
+    offences = []
+    for module in TREES:
+        if module.startswith(("dggs.geometry", "dggs.index._kernel")):
+            continue
+        for node, name, _ in _imports(module):
+            if name == "dggs._core" or name.startswith("dggs._core."):
+                offences.append(f"{_where(module, node)}: {module} imports {name}")
+    _report(sorted(set(offences)))
 
 
 @pytest.mark.parametrize("folder", list(PACKAGES.values()), ids=list(PACKAGES))
