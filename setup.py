@@ -81,4 +81,8 @@ def _build_py() -> type:
     return module.BuildPy
 
 
+# The web map's vendor folder is a package of pyproject.toml's list (so setuptools does not warn about it) filled from
+# npm at build time (dggs/server/_build.py); without npm it stays empty, but it must exist.
+os.makedirs(os.path.join(HERE, "dggs", "server", "static", "vendor"), exist_ok=True)
+
 setup(ext_modules=_core_extension(), cmdclass={"build_ext": BuildExt, "build_py": _build_py()})
