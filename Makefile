@@ -11,21 +11,28 @@ BENCH_STAMP := $(BENCH_VENV)/.installed
 .PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
-# when the venv is made, and again here whenever a C, Cython or build file changes (an editable install does not
-# notice). cmake and ninja for the C tests come from pip, so a machine needs only Python, a C compiler and make.
-CORE_SOURCES := setup.py $(wildcard libdggs/src/*.c libdggs/src/*.h libdggs/include/*.h libdggs/python/*.pyx libdggs/python/*.pxi)
-CORE := $(VENV)/.core-built
+# when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
+# install does not notice; an unchanged core takes a second). cmake and ninja for the C tests come from pip, so a
+# machine needs only Python, a C compiler and make. `make demo` installs only what the demo needs (DEMO_STAMP);
+# `make test` everything (STAMP), which serves the demo too.
+DEMO_STAMP := $(VENV)/.installed-demo
+BUILD_TOOLS := "setuptools>=77" wheel "Cython>=3.0"
+BUILD_CORE = $(PY) setup.py --quiet build_ext --inplace
+DEMO_DEPS = $(if $(wildcard $(STAMP)),$(STAMP),$(DEMO_STAMP))
 
 $(STAMP): pyproject.toml setup.py
-	$(PYTHON) -m venv $(VENV)
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet "setuptools>=77" wheel "Cython>=3.0" cmake ninja
+	$(PY) -m pip install --quiet $(BUILD_TOOLS) cmake ninja
 	$(PY) -m pip install --quiet -e '.[test,demo,plot,dask,pandas,duckdb,xarray,vector,serve,raster,spark]'
 	touch $(STAMP)
 
-$(CORE): $(STAMP) $(CORE_SOURCES)
-	$(PY) setup.py --quiet build_ext --inplace
-	touch $(CORE)
+$(DEMO_STAMP): pyproject.toml setup.py
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet $(BUILD_TOOLS)
+	$(PY) -m pip install --quiet -e '.[demo]'
+	touch $(DEMO_STAMP)
 
 # The web map's front-end dependencies from npm, pinned by the lock file: MapLibre GL JS, Natural Earth's
 # countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static
@@ -49,19 +56,22 @@ static-if-npm:
 	@command -v npm >/dev/null 2>&1 && $(MAKE) --no-print-directory static || \
 		echo "note: MapLibre GL JS not installed (needs npm); the map page of dggs serve stays blank until make static"
 
-demo: $(CORE) static-if-npm
+demo: $(DEMO_DEPS) static-if-npm
+	@$(BUILD_CORE)
 	$(VENV)/bin/dggs demo
 
 # test: the quick suite (pyproject's addopts leave out the slow and browser tests; the default hypothesis
 # profile runs 20 examples a property). test-all (CI): every test but the browser ones, the ci profile's
 # 100 examples (HYPOTHESIS_PROFILE=thorough make test-all for 2000).
-test: $(CORE) static-if-npm
+test: $(STAMP) static-if-npm
+	@$(BUILD_CORE)
 	$(PY) -m ruff check dggs index storage experiments tests examples libdggs
 	$(PY) -m mypy
 	$(MAKE) --no-print-directory test-core
 	$(PY) -m pytest -q
 
-test-all: $(CORE) static-if-npm
+test-all: $(STAMP) static-if-npm
+	@$(BUILD_CORE)
 	$(PY) -m ruff check dggs index storage experiments tests examples libdggs
 	$(PY) -m mypy
 	$(MAKE) --no-print-directory test-core test-core-sanitize fuzz
@@ -93,7 +103,8 @@ fuzz: $(STAMP)
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout
 # (no sandbox user), so a /tmp that only root may write to does not stop it.
-test-browser: $(CORE) $(STATIC)
+test-browser: $(STAMP) $(STATIC)
+	@$(BUILD_CORE)
 	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
 		(apt-get -o APT::Sandbox::User=root update -q && \
 		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q chromium chromium-driver)
