@@ -21,12 +21,12 @@ Examples
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
-from dggs.geometry._parallel import Loops
 from dggs.geometry._validate import as_latlng
 from dggs.geometry.authalic import WGS84, Ellipsoid
 from dggs.geometry.constants import FACE_INRADIUS
@@ -124,7 +124,7 @@ def checked_face_xy(face: Any, x: Any, y: Any) -> tuple[np.ndarray, np.ndarray, 
 
 
 def _run_forward(
-    forward_rad: Loops, lat: np.ndarray, lng: np.ndarray, orientation: Orientation
+    forward_rad: Callable[..., Any], lat: np.ndarray, lng: np.ndarray, orientation: Orientation
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Forward of radian arrays (1-d) through a compiled loop."""
     geo = orientation.geometry
@@ -137,7 +137,7 @@ def _run_forward(
     return face, x, y
 
 
-def checked_forward(forward_rad: Loops, lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, Any, Any]:
+def checked_forward(forward_rad: Callable[..., Any], lat: Any, lng: Any, orientation: Orientation = ISEA) -> tuple[Any, Any, Any]:
     """Check spherical ``(lat, lng)`` degrees and run ``forward_rad``: ``(face, x, y)`` shaped as the input."""
     numbers(lat, "latitude")
     numbers(lng, "longitude")
@@ -149,7 +149,7 @@ def checked_forward(forward_rad: Loops, lat: Any, lng: Any, orientation: Orienta
     return face.reshape(shape), x.reshape(shape), y.reshape(shape)
 
 
-def checked_inverse(inverse_deg: Loops, face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple[Any, Any]:
+def checked_inverse(inverse_deg: Callable[..., Any], face: Any, x: Any, y: Any, orientation: Orientation = ISEA) -> tuple[Any, Any]:
     """Check face-plane input and run ``inverse_deg``: spherical ``(lat, lng)`` degrees shaped as the input."""
     if not isinstance(orientation, Orientation):
         raise DggsValueError(f"orientation {orientation!r} is not an Orientation")
@@ -180,8 +180,8 @@ class EllipsoidProjection:
     """
 
     #: The kernel's loops (:func:`.kernel.face_loops`).
-    forward_rad: Loops
-    inverse_deg: Loops
+    forward_rad: Callable[..., Any]
+    inverse_deg: Callable[..., Any]
     #: The class name shown by ``repr``.
     label = "Projection"
 
