@@ -13,10 +13,16 @@ if ! command -v clang >/dev/null 2>&1 && [ "$(id -u)" = 0 ] && command -v apt-ge
         >"$OUT/apt.log" 2>&1 || echo "note: clang could not be installed; fuzzing with the random driver"
 fi
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1"
+LIBFUZZER=no
+if command -v clang >/dev/null 2>&1; then
+    printf '#include <stddef.h>\n#include <stdint.h>\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; (void)n; return 0; }\n' \
+        >"$OUT/probe.c"
+    clang -fsanitize=fuzzer "$OUT/probe.c" -o "$OUT/probe" 2>/dev/null && LIBFUZZER=yes
+fi
 SRC="libdggs/src/*.c"
 for target in libdggs/fuzz/fuzz_*.c; do
     name=$(basename "$target" .c)
-    if command -v clang >/dev/null 2>&1 && clang -fsanitize=fuzzer -x c /dev/null -o /dev/null 2>/dev/null; then
+    if [ "$LIBFUZZER" = yes ]; then
         clang -std=c11 -ffp-contract=off $SAN -fsanitize=fuzzer -Ilibdggs/include -Ilibdggs/src $target $SRC -lm \
             -o "$OUT/$name"
         corpus="$OUT/$name-corpus"
