@@ -53,17 +53,76 @@ const char *dggs_error_string(dggs_error err);
 
 /* ---- ids and strings (codec.c) ---------------------------------------------------------------- */
 
+/* The id of string id `s` (a NUL-terminated face letter 'A'..'T', a level-1 digit '0'..'5', then one digit
+ * '0'..'2' per further level) into *out. DGGS_E_CELL if `s` is not a string id (empty, too long, another
+ * character); *out is then unchanged. */
+dggs_error dggs_string_to_cell(const char *s, dggs_cell *out);
+
+/* The string id of `cell` into `buf` of `size` bytes, NUL-terminated. A buffer of DGGS_MAX_CHARS + 1 bytes
+ * always suffices (a level-l id takes l + 2). DGGS_E_CELL if `cell` is not a well-formed id, DGGS_E_BUFFER if
+ * `buf` is too small (nothing written then). */
+dggs_error dggs_cell_to_string(dggs_cell cell, char *buf, size_t size);
+
+/* 1 if `cell` is a well-formed id (marker set, face 0..19, digits in range, no empty level above a filled
+ * one), else 0. */
+int dggs_is_valid_cell(dggs_cell cell);
+
+/* The level 0..DGGS_MAX_LEVEL of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_level(dggs_cell cell);
+
+/* The face 0..19 (its level-0 ancestor) of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_face(dggs_cell cell);
+
 /* ---- end ids and strings ---- */
 
 
 
 /* ---- projection (geometry.c, ivea.c) ---------------------------------------------------------- */
 
+/* Geodetic WGS84 (lat, lng) degrees -> the face (0..19) holding the point and its (x, y) in that face's
+ * frame (origin at the face centre, +y towards the face's vertex 0, on the unit authalic sphere: multiply by
+ * the authalic radius, 6371007.1809 m, for metres), by `proj` (Snyder's ISEA or IVEA) in PROJ's ISEA
+ * orientation; the grid's own point location (the authalic latitude by kernel.authalic_sincos). Longitudes
+ * wrap. Errors: DGGS_E_LATLNG (a latitude outside -90..90 or a coordinate that is not finite),
+ * DGGS_E_PROJECTION (not a dggs_projection); outputs are untouched on error. */
+dggs_error dggs_geo_to_face(double lat, double lng, dggs_projection proj, int *face, double *x, double *y);
+
+/* Face (0..19) and face-frame (x, y) on the unit authalic sphere -> geodetic WGS84 (lat, lng) degrees, longitude
+ * in -180..180, by `proj`'s closed-form inverse. Errors: DGGS_E_DOMAIN (a face outside 0..19, or a point off
+ * its face triangle by more than 1e-9 of the inradius, as dggs.geometry.snyder.inverse),
+ * DGGS_E_LATLNG (x or y not finite), DGGS_E_PROJECTION; outputs are untouched on error. */
+dggs_error dggs_face_to_geo(int face, double x, double y, dggs_projection proj, double *lat, double *lng);
+
 /* ---- end projection ---- */
 
 
 
 /* ---- points, centres, boundaries (points.c) --------------------------------------------------- */
+
+/* Most points per edge dggs_cell_to_boundary adds (Python's DENSIFY_LIMIT). */
+#define DGGS_MAX_DENSIFY 100000
+
+/* The id of the level-`level` cell holding the point (lat, lng) (WGS84 geodetic degrees; any longitude) on
+ * projection `proj`, into *out. DGGS_E_LATLNG for a latitude outside -90..90 (or NaN) or a longitude that is
+ * not finite, DGGS_E_LEVEL for a level outside 0..DGGS_MAX_LEVEL, DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_latlng_to_cell(double lat, double lng, int level, dggs_projection proj, dggs_cell *out);
+
+/* The centre of `cell` (its planar centroid on the face, mapped back by `proj`) as WGS84 degrees, latitude
+ * into *lat and longitude (-180..180) into *lng. DGGS_E_CELL if `cell` is not a well-formed id,
+ * DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_cell_to_latlng(dggs_cell cell, dggs_projection proj, double *lat, double *lng);
+
+/* The number of points dggs_cell_to_boundary writes for `densify`: 3 (densify + 1), into *points.
+ * DGGS_E_DOMAIN for a densify outside 0..DGGS_MAX_DENSIFY. */
+dggs_error dggs_cell_to_boundary_size(int densify, size_t *points);
+
+/* The boundary of `cell`: its three corners counter-clockwise seen from outside, each followed by `densify`
+ * points along the edge (straight on the face plane), as (lat, lng) degree pairs into `lat_lng` (room for
+ * `size` points, 2 size doubles; not closed: the first point is not repeated); the count of points into
+ * *count. DGGS_E_CELL, DGGS_E_DOMAIN (densify), DGGS_E_PROJECTION, DGGS_E_BUFFER if `size` is under
+ * dggs_cell_to_boundary_size's (nothing written then). */
+dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection proj, double *lat_lng, size_t size,
+                                 size_t *count);
 
 /* ---- end points ---- */
 
