@@ -143,6 +143,10 @@ dggs_error dggs_cell_to_children_size(dggs_cell cell, int child_level, int64_t *
  * dggs_cell_to_children_size's). Errors: those of dggs_cell_to_children_size, DGGS_E_BUFFER (size too small;
  * nothing written). */
 dggs_error dggs_cell_to_children(dggs_cell cell, int child_level, dggs_cell *children, int64_t size);
+/* The descendant of `cell` at `child_level` (the cell's level .. DGGS_MAX_LEVEL) that holds the cell's centre (its
+ * planar centroid; a base cell's centre goes to its level-1 cell 0). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_LEVEL_MISMATCH (child_level coarser than the cell). */
+dggs_error dggs_cell_to_center_child(dggs_cell cell, int child_level, dggs_cell *child);
 
 /* The size of the buffer dggs_compact_cells needs for `num_cells` cells (num_cells, plus the sort's scratch from
  * 4096 cells on: 2 num_cells + 20480). Errors: DGGS_E_DOMAIN (num_cells < 0). */

@@ -6,6 +6,8 @@
 
 #include <stdint.h>
 
+#include "points.h"
+
 #define U1 ((uint64_t)1)
 
 /* hierarchy.py _ones: code 1 (digit 0) in every 2-bit field of levels first .. last (2 <= first; empty if
@@ -202,4 +204,12 @@ dggs_error dggs_cell_to_children(dggs_cell cell, int child_level, dggs_cell *chi
     if (size < need) return DGGS_E_BUFFER;
     int64_t bad;
     return dggs_children(&cell, 1, child_level, children, size, &bad);
+}
+
+dggs_error dggs_cell_to_center_child(dggs_cell cell, int child_level, dggs_cell *child) {
+    if (!dggs_is_valid(cell)) return DGGS_E_CELL;
+    if (child_level < 0 || child_level > DGGS_MAX_LEVEL) return DGGS_E_LEVEL;
+    if (dggs_level_of(cell) > child_level) return DGGS_E_LEVEL_MISMATCH;
+    *child = dggs_one_center_child(cell, child_level);
+    return DGGS_OK;
 }
