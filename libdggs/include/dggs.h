@@ -144,7 +144,7 @@ dggs_error dggs_cell_to_children_size(dggs_cell cell, int child_level, int64_t *
  * nothing written). */
 dggs_error dggs_cell_to_children(dggs_cell cell, int child_level, dggs_cell *children, int64_t size);
 /* The descendant of `cell` at `child_level` (the cell's level .. DGGS_MAX_LEVEL) that holds the cell's centre (its
- * planar centroid; a base cell's centre goes to its level-1 cell 0). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * planar centroid, located by the level's tie rules). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
  * DGGS_E_LEVEL_MISMATCH (child_level coarser than the cell). */
 dggs_error dggs_cell_to_center_child(dggs_cell cell, int child_level, dggs_cell *child);
 

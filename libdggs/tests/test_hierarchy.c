@@ -177,6 +177,13 @@ static void test_public(void) {
     CHECK(dggs_cell_to_children(sid("T"), 1, out, 5) == DGGS_E_BUFFER);
     CHECK(dggs_cell_to_children(sid("T"), 1, out, 6) == DGGS_OK);
     CHECK_EQ_U64(out[5], sid("T5"));
+    /* cell_to_center_child("C401") == "C4011", cell_to_center_child("C", 1) == "C1" (the level-1 tie rule) */
+    CHECK(dggs_cell_to_center_child(sid("C401"), 4, &p) == DGGS_OK && p == sid("C4011"));
+    CHECK(dggs_cell_to_center_child(sid("C401"), 3, &p) == DGGS_OK && p == sid("C401"));
+    CHECK(dggs_cell_to_center_child(sid("C"), 1, &p) == DGGS_OK && p == sid("C1"));
+    CHECK(dggs_cell_to_center_child(sid("C401"), 2, &p) == DGGS_E_LEVEL_MISMATCH);
+    CHECK(dggs_cell_to_center_child(sid("C401"), 29, &p) == DGGS_E_LEVEL);
+    CHECK(dggs_cell_to_center_child(0, 5, &p) == DGGS_E_CELL);
 }
 
 int main(void) {
