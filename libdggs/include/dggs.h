@@ -130,6 +130,44 @@ dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection pr
 
 /* ---- hierarchy and compaction (hierarchy.c, compact.c) ---------------------------------------- */
 
+/* The ancestor of `cell` at `parent_level` (0 .. the cell's level; the cell's own level gives the cell).
+ * Errors: DGGS_E_CELL (not a cell), DGGS_E_LEVEL (parent_level outside 0..DGGS_MAX_LEVEL),
+ * DGGS_E_LEVEL_MISMATCH (parent_level finer than the cell). */
+dggs_error dggs_cell_to_parent(dggs_cell cell, int parent_level, dggs_cell *parent);
+
+/* The number of descendants of `cell` at `child_level` (the cell's level .. DGGS_MAX_LEVEL): 3^(child_level -
+ * level), 6 * 3^(child_level - 1) for a base cell, 1 at the cell's own level. Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_LEVEL_MISMATCH (child_level coarser than the cell). */
+dggs_error dggs_cell_to_children_size(dggs_cell cell, int child_level, int64_t *size);
+/* The descendants of `cell` at `child_level`, in id order, into `children` (`size` entries, at least
+ * dggs_cell_to_children_size's). Errors: those of dggs_cell_to_children_size, DGGS_E_BUFFER (size too small;
+ * nothing written). */
+dggs_error dggs_cell_to_children(dggs_cell cell, int child_level, dggs_cell *children, int64_t size);
+/* The descendant of `cell` at `child_level` (the cell's level .. DGGS_MAX_LEVEL) that holds the cell's centre (its
+ * planar centroid, located by the level's tie rules). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_LEVEL_MISMATCH (child_level coarser than the cell). */
+dggs_error dggs_cell_to_center_child(dggs_cell cell, int child_level, dggs_cell *child);
+
+/* The size of the buffer dggs_compact_cells needs for `num_cells` cells (num_cells, plus the sort's scratch from
+ * 4096 cells on: 2 num_cells + 20480). Errors: DGGS_E_DOMAIN (num_cells < 0). */
+dggs_error dggs_compact_cells_size(int64_t num_cells, int64_t *size);
+/* Replace every complete set of siblings by their parent, recursively: the fewest cells covering the area of
+ * `cells` (any order, any levels, duplicates and cells inside another allowed), sorted, into the first *num_out
+ * entries of `out` (`out_size` entries, at least dggs_compact_cells_size's; the rest is scratch; `out` must not
+ * overlap `cells`). Errors: DGGS_E_CELL (a cell is not a cell id), DGGS_E_DOMAIN (num_cells < 0), DGGS_E_BUFFER. */
+dggs_error dggs_compact_cells(const dggs_cell *cells, int64_t num_cells, dggs_cell *out, int64_t out_size,
+                              int64_t *num_out);
+/* The size of the buffer dggs_uncompact_cells needs to expand `cells` to `level`: the larger of the number of
+ * descendants at `level` of all cells (counted with any overlap; saturated at 2^63 - 1) and the sort's
+ * scratch (num_cells, plus 2 num_cells + 20480 from 4096 cells on). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_DOMAIN (num_cells < 0), DGGS_E_LEVEL_MISMATCH (a cell finer than `level`). */
+dggs_error dggs_uncompact_cells_size(const dggs_cell *cells, int64_t num_cells, int level, int64_t *size);
+/* All descendants at `level` of the area `cells` cover, sorted and unique (the inverse of compaction), into the
+ * first *num_out entries of `out` (`out_size` entries, at least dggs_uncompact_cells_size's; `out` must not
+ * overlap `cells`). Errors: those of dggs_uncompact_cells_size, DGGS_E_BUFFER. */
+dggs_error dggs_uncompact_cells(const dggs_cell *cells, int64_t num_cells, int level, dggs_cell *out,
+                                int64_t out_size, int64_t *num_out);
+
 /* ---- end hierarchy ---- */
 
 
@@ -159,6 +197,25 @@ dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection pr
 
 
 /* ---- local (i, j), child positions, directed edges, vertices (local.c, edges.c) ---------------- */
+
+/* The position of `cell` among the descendants, at its own level, of its ancestor at `parent_level`, in id order
+ * (docs/grid.md, "Child positions"): the digits below parent_level in base 3, the level-1 digit in base 6 when
+ * parent_level is 0. Errors: DGGS_E_CELL, DGGS_E_LEVEL (parent_level outside 0..DGGS_MAX_LEVEL),
+ * DGGS_E_LEVEL_MISMATCH (parent_level finer than the cell). */
+dggs_error dggs_cell_to_child_pos(dggs_cell cell, int parent_level, int64_t *pos);
+/* The descendant of `parent` at `child_level` at position `pos` (the inverse of dggs_cell_to_child_pos).
+ * Errors: DGGS_E_CELL, DGGS_E_LEVEL, DGGS_E_LEVEL_MISMATCH (child_level coarser than the parent), DGGS_E_DOMAIN
+ * (pos outside 0 .. the parent's number of descendants at child_level - 1). */
+dggs_error dggs_child_pos_to_cell(int64_t pos, dggs_cell parent, int child_level, dggs_cell *child);
+
+/* Integer lattice coordinates (i, j) of `cell` around `anchor`, a cell of the same level (docs/grid.md, "Local
+ * coordinates"): the anchor is (0, 0); the cells of the anchor's face and of the three faces across its edges,
+ * unfolded into its plane, have one pair each. Errors: DGGS_E_CELL, DGGS_E_LEVEL_MISMATCH (two levels),
+ * DGGS_E_FAILED (a cell outside that range). */
+dggs_error dggs_cell_to_local_ij(dggs_cell anchor, dggs_cell cell, int64_t *i, int64_t *j);
+/* The cell at (i, j) around `anchor` (the exact inverse of dggs_cell_to_local_ij). Errors: DGGS_E_CELL (a bad
+ * anchor), DGGS_E_DOMAIN (a pair naming no cell: not a centroid of the lattice, or out of range). */
+dggs_error dggs_local_ij_to_cell(dggs_cell anchor, int64_t i, int64_t j, dggs_cell *cell);
 
 /* ---- end local ---- */
 
