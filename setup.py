@@ -47,7 +47,9 @@ class BuildExt(build_ext):
         else:
             omp = _has_openmp(list(self.compiler.compiler_so[:1]))
             for ext in self.extensions:
-                ext.extra_compile_args = ["-O3", "-std=c11", *FP_FLAGS] + (["-fopenmp"] if omp else [])
+                # Cython's prange loops leave a variable set but unused in the generated C (not in libdggs)
+                ext.extra_compile_args = ["-O3", "-std=c11", *FP_FLAGS, "-Wno-unused-but-set-variable"] + (
+                    ["-fopenmp"] if omp else [])
                 ext.extra_link_args = ["-fopenmp"] if omp else []
             if not omp:
                 print("note: no OpenMP in this C compiler; dggs's batch loops will run on one thread", file=sys.stderr)
