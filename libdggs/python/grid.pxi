@@ -30,6 +30,7 @@ cdef extern from "grid_tables.h" nogil:
     int64_t dggs_chart_distance(uint64_t a, uint64_t b, int level)
 
 cdef extern from "strips.h" nogil:
+    int DGGS_MAX_STRIP
     int64_t dggs_strip_distance(uint64_t a, uint64_t b, int level)
 
 cdef extern from "distance.h" nogil:
@@ -44,6 +45,14 @@ cdef extern from "paths.h" nogil:
     int DGGS_WALK_NEEDS_WORK
     int dggs_paths_walk(uint64_t a, uint64_t b, uint64_t *out, int64_t start, int64_t stop, uint64_t *work,
                         int64_t work_len)
+
+
+#: strips.MAX_STRIP: most face edges a searched strip crosses.
+MAX_STRIP = DGGS_MAX_STRIP
+#: distance.NEEDS_SEARCH: what :func:`distance` returns for a pair only a search can settle.
+NEEDS_SEARCH = DGGS_NEEDS_SEARCH
+#: distance.SEARCH_LIMIT: most steps the fallback search takes.
+SEARCH_LIMIT = DGGS_SEARCH_LIMIT
 
 
 # ---- grid (index/_kernel/grid.py) ---------------------------------------------------------------------------

@@ -29,6 +29,7 @@ COUNTS = {}
 
 
 def check(name: str, same: bool, items: int) -> None:
+    """Count ``items`` under ``name``; remember a mismatch."""
     COUNTS[name] = COUNTS.get(name, 0) + items
     if not same:
         FAIL.append(name)
@@ -46,6 +47,7 @@ def same_level_random(rng, ids):
 
 
 def main() -> int:
+    """Run every comparison; 0 if all equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=7)

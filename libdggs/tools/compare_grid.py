@@ -20,13 +20,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _grid_inputs import edge_ids, level_of, load_core, random_ids, walk_pairs  # noqa: E402
 
 from dggs.index._kernel import grid as K  # noqa: E402
-from dggs.index._kernel import grid_tables as T  # noqa: E402
 
 FAIL = []
 COUNTS = {}
 
 
 def check(name: str, same: bool, items: int) -> None:
+    """Count ``items`` under ``name``; remember a mismatch."""
     COUNTS[name] = COUNTS.get(name, 0) + items
     if not same:
         FAIL.append(name)
@@ -34,6 +34,7 @@ def check(name: str, same: bool, items: int) -> None:
 
 
 def rows(fn, ids, k, width, n_work=None):
+    """Run a disk or ring loop into fresh rows (filled with 99 first): (out, counts)."""
     out = np.full((ids.shape[0], width), 99, dtype=np.uint64)
     counts = np.full(ids.shape[0], 99, dtype=np.int64)
     fn(ids.shape[0] * width if n_work is None else n_work, ids, k, out, counts)
@@ -41,6 +42,7 @@ def rows(fn, ids, k, width, n_work=None):
 
 
 def main() -> int:
+    """Run every comparison; 0 if all equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=20240531)

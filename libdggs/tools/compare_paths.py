@@ -24,6 +24,7 @@ from dggs.index._kernel import paths as KP  # noqa: E402
 
 
 def main() -> int:
+    """Compare the paths; 0 if equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=11)

@@ -28,6 +28,7 @@ OUT = os.path.join(HERE, "..", "tests", "frozen_distance.h")
 
 
 def main() -> int:
+    """Write frozen_distance.h."""
     rng = np.random.default_rng(5)
     cells = frozen_cells()
     a = np.array([c for _, c in cells], np.uint64)
