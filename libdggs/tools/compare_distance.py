@@ -5,7 +5,7 @@ pairs of one level: neighbours reached by random walks of 1..200 steps, uniforml
 far apart), pairs among the edge ids (poles, antimeridian, icosahedron vertices, face corners and edges, both
 projections), every level 0..28. Exit code 0 only if every output is equal.
 
-    nice python libdggs/tools/compare_distance.py [--scale 1.0]
+    nice python libdggs/tools/compare_distance.py [--scale 1.0] [--threads 2]
 """
 
 from __future__ import annotations
@@ -51,8 +51,10 @@ def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--threads", type=int, default=2, help="the binding's threads (its batch loops' OpenMP path)")
     args = ap.parse_args()
     core = load_core()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(args.seed)
     t0 = time.time()
     edges = edge_ids()

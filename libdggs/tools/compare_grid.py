@@ -4,7 +4,7 @@ Runs index/_kernel/grid.py's functions (the installed numba package) and this wo
 ids of every level and on edge ids (poles, antimeridian, icosahedron vertices, face corners and edges, both
 projections), and asserts equal outputs. Exit code 0 only if every output is equal.
 
-    nice python libdggs/tools/compare_grid.py [--scale 1.0]
+    nice python libdggs/tools/compare_grid.py [--scale 1.0] [--threads 2]
 """
 
 from __future__ import annotations
@@ -46,8 +46,10 @@ def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=20240531)
+    ap.add_argument("--threads", type=int, default=2, help="the binding's threads (its batch loops' OpenMP path)")
     args = ap.parse_args()
     core = load_core()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(args.seed)
     t0 = time.time()
     edges = edge_ids()
@@ -116,7 +118,8 @@ def main() -> int:
 
     # disk_sizes: caps that stop early and caps that do not
     for k, cap in ((3, 5), (5, 40), (10, 10**6), (30, 500), (200, 3000), (2000, 10**5), (1 << 31, 2000)):
-        sel = np.concatenate([coarse[:2000], ids[rng.integers(0, ids.shape[0], int(2000 * args.scale))]])
+        m = int((2000 if cap <= 10**4 else 100) * args.scale) + 1
+        sel = np.concatenate([coarse[:m], ids[rng.integers(0, ids.shape[0], m)]])
         for chunk in np.array_split(sel, 8):
             ca, cb = np.zeros(chunk.shape[0], np.int64), np.zeros(chunk.shape[0], np.int64)
             ia = K.disk_sizes(chunk, k, cap, ca)

@@ -4,7 +4,7 @@ Pairs of one level reached by random walks (1..120 steps), random pairs at level
 antimeridian, icosahedron vertices, face corners and edges, both projections), and every pair of some level-0
 and level-1 cells; offsets from numba's distances as index/paths.py makes them. Exit code 0 only if equal.
 
-    nice python libdggs/tools/compare_paths.py [--scale 1.0]
+    nice python libdggs/tools/compare_paths.py [--scale 1.0] [--threads 2]
 """
 
 from __future__ import annotations
@@ -28,8 +28,10 @@ def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0)
     ap.add_argument("--seed", type=int, default=11)
+    ap.add_argument("--threads", type=int, default=2, help="the binding's threads (its batch loops' OpenMP path)")
     args = ap.parse_args()
     core = load_core()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(args.seed)
     t0 = time.time()
     edges = edge_ids()
