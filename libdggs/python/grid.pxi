@@ -79,7 +79,7 @@ def are_neighbours(const uint64_t[:] a, const uint64_t[:] b, out):
         o[i] = dggs_are_neighbours(a[i], b[i])
 
 
-def next_ring(uint64_t[::1] cur, uint64_t[::1] prev, uint64_t[::1] dest, uint64_t[::1] cand):
+def next_ring(const uint64_t[::1] cur, const uint64_t[::1] prev, uint64_t[::1] dest, uint64_t[::1] cand):
     """Ring j + 1 from rings j and j - 1 (sorted) into ``dest``, sorted; its size, or -1 if ``dest`` is too short.
 
     ``cand`` needs room for ``3 * len(cur)`` ids.
@@ -87,8 +87,8 @@ def next_ring(uint64_t[::1] cur, uint64_t[::1] prev, uint64_t[::1] dest, uint64_
     if cand.shape[0] < 3 * cur.shape[0]:
         raise ValueError("cand needs room for 3 * len(cur) ids")
     cdef uint64_t dummy = 0
-    cdef uint64_t *pc = &cur[0] if cur.shape[0] else &dummy
-    cdef uint64_t *pp = &prev[0] if prev.shape[0] else &dummy
+    cdef const uint64_t *pc = &cur[0] if cur.shape[0] else &dummy
+    cdef const uint64_t *pp = &prev[0] if prev.shape[0] else &dummy
     cdef uint64_t *pd = &dest[0] if dest.shape[0] else &dummy
     cdef uint64_t *pk = &cand[0] if cand.shape[0] else &dummy
     return dggs_next_ring(pc, cur.shape[0], pp, prev.shape[0], pd, dest.shape[0], pk)
