@@ -174,6 +174,50 @@ dggs_error dggs_uncompact_cells(const dggs_cell *cells, int64_t num_cells, int l
 
 /* ---- neighbours, disks, rings, distances, paths (grid.c, distance.c, paths.c) ----------------- */
 
+/* The three cells sharing an edge with `cell` (any level, 0 too), into out[0..2]: out[i] is the cell across the
+ * edge from corner i to corner i + 1 of the cell's counter-clockwise corners (as edge_neighbors in Python).
+ * Errors: DGGS_E_CELL. */
+dggs_error dggs_edge_neighbors(dggs_cell cell, dggs_cell out[3]);
+
+/* *out = 1 if cells a and b share an edge, else 0 (0 for cells of different levels and for a cell and itself).
+ * Errors: DGGS_E_CELL (either is not a cell). */
+dggs_error dggs_are_neighbor_cells(dggs_cell a, dggs_cell b, int *out);
+
+/* The ids the buffer of dggs_grid_disk must hold for radius k (0 <= k <= 2^31) around a cell of `cell`'s level:
+ * room for the largest disk there (the planar bound, or the whole level) and for the hash set the breadth-first
+ * search works in (the least power of 2 >= 64 and >= twice that). Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k). */
+dggs_error dggs_grid_disk_size(dggs_cell cell, int64_t k, int64_t *size);
+/* The cells within k edge steps of `cell` (the cell included), sorted ascending, into out[0..*count); the rest
+ * of out[0..size) is set to 0 (it is the work space). `size` >= dggs_grid_disk_size(cell, k). Allocates nothing.
+ * Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k), DGGS_E_BUFFER (size too small). */
+dggs_error dggs_grid_disk(dggs_cell cell, int64_t k, dggs_cell *out, int64_t size, int64_t *count);
+
+/* The ids the buffer of dggs_grid_ring must hold for radius k (0 <= k <= 2^31) around a cell of `cell`'s level:
+ * the largest ring there (w, the planar bound or the whole level) and the work space of three rings and their
+ * candidates (6 max(w, 6)). Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k). */
+dggs_error dggs_grid_ring_size(dggs_cell cell, int64_t k, int64_t *size);
+/* The cells exactly k edge steps from `cell`, sorted ascending, into out[0..*count) (an empty ring past the far
+ * side of the level: *count = 0); the rest of out[0..size) is set to 0. `size` >= dggs_grid_ring_size(cell, k).
+ * Allocates nothing. Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k), DGGS_E_BUFFER (size too small). */
+dggs_error dggs_grid_ring(dggs_cell cell, int64_t k, dggs_cell *out, int64_t size, int64_t *count);
+
+/* The number of edge steps on a shortest path between cells a and b of one level: exact at any range, in
+ * O(level) time (mirror lines of the level's planar arrangement over the straight face strips between them;
+ * docs/grid.md, "Distances"). A pair no strip serves (none known) falls back on a breadth-first search within
+ * 4096 steps, which allocates its work space (708 KB) with malloc and frees it. Errors: DGGS_E_CELL,
+ * DGGS_E_LEVEL_MISMATCH, DGGS_E_FAILED (the fallback search found no path within 4096 steps, a ring of it
+ * outgrew its work space, or malloc failed: none of them ever seen). */
+dggs_error dggs_grid_distance(dggs_cell a, dggs_cell b, int64_t *out);
+
+/* The cells on the shortest path from a to b (both included): dggs_grid_distance(a, b) + 1. Errors: as
+ * dggs_grid_distance. */
+dggs_error dggs_grid_path_cells_size(dggs_cell a, dggs_cell b, int64_t *size);
+/* A shortest path of cells from a to b, both ends included, each an edge neighbour of the one before, into
+ * out[0..n) (n = dggs_grid_path_cells_size(a, b)): at each cell the first neighbour (in dggs_edge_neighbors
+ * order) one step nearer. Allocates only as dggs_grid_distance does. Errors: as dggs_grid_distance,
+ * DGGS_E_BUFFER (size < n). */
+dggs_error dggs_grid_path_cells(dggs_cell a, dggs_cell b, dggs_cell *out, int64_t size);
+
 /* ---- end grid ---- */
 
 
