@@ -259,10 +259,10 @@ def test_ivea_threaded_loops_equal_the_serial_ones():
     n = 20_000
     lat, lng = np.degrees(np.arcsin(rng.uniform(-1, 1, n))), rng.uniform(-180, 180, n)
     a, b = np.empty(n, np.uint64), np.empty(n, np.uint64)
-    ki.locate.serial(lat, lng, 14, a)
-    ki.locate.threaded(lat, lng, 14, b)
+    ki.locate(1, lat, lng, 14, a)  # the amount of work picks the threads: one, then all
+    ki.locate(1 << 30, lat, lng, 14, b)
     assert np.array_equal(a, b)
     one, two = np.empty((n, 6, 2)), np.empty((n, 6, 2))
-    ki.boundaries.serial(a, 1, one, False)
-    ki.boundaries.threaded(a, 1, two, False)
+    ki.boundaries(1, a, 1, one, False)
+    ki.boundaries(1 << 30, a, 1, two, False)
     assert np.array_equal(one, two)

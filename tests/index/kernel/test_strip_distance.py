@@ -17,7 +17,6 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from numba import njit
 
 import dggs
 from dggs.index._kernel import distance as KD
@@ -41,30 +40,23 @@ def adjacency(cells: np.ndarray) -> np.ndarray:
     return np.searchsorted(cells, out).astype(np.int64)
 
 
-@njit(cache=False)
 def _bfs(adj: np.ndarray, src: int) -> np.ndarray:
+    """Edge steps from cell ``src`` to every cell: breadth-first, one ring of the adjacency at a time."""
     dist = np.full(adj.shape[0], -1, np.int64)
-    queue = np.empty(adj.shape[0], np.int64)
-    dist[src], queue[0], head, tail = 0, src, 0, 1
-    while head < tail:
-        u = queue[head]
-        head += 1
-        for k in range(3):
-            v = adj[u, k]
-            if dist[v] < 0:
-                dist[v] = dist[u] + 1
-                queue[tail] = v
-                tail += 1
+    dist[src], frontier, steps = 0, np.array([src]), 0
+    while frontier.size:
+        steps += 1
+        ring = np.unique(adj[frontier].ravel())
+        ring = ring[dist[ring] < 0]
+        dist[ring] = steps
+        frontier = ring
     return dist
 
 
-@njit(cache=False)
 def _from(cells: np.ndarray, i: int, level: int) -> tuple[np.ndarray, np.ndarray]:
-    strip = np.empty(cells.shape[0], np.int64)
+    strip = np.array([strip_distance(cells[i], c, level) if i != j else 0 for j, c in enumerate(cells)], np.int64)
     full = np.empty(cells.shape[0], np.int64)
-    for j in range(cells.shape[0]):
-        strip[j] = strip_distance(cells[i], cells[j], level) if i != j else 0
-        full[j] = KD.distance(cells[i], cells[j], 1 << 40)
+    KD.distances(cells.shape[0], np.full(cells.shape[0], cells[i], np.uint64), cells, 1 << 40, full)
     return strip, full
 
 
