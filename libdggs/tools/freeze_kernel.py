@@ -52,7 +52,7 @@ def _special(rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
     dots = v @ v.T
     near = np.isclose(dots, dots[0][dots[0] < 0.999].max())
     t = np.linspace(0.0, 1.0, 2001)[:, None]
-    for i, j in zip(*np.nonzero(np.triu(near, 1))):
+    for i, j in zip(*np.nonzero(np.triu(near, 1)), strict=True):
         p = np.sin((1 - t) * np.arccos(dots[i, j])) * v[i] + np.sin(t * np.arccos(dots[i, j])) * v[j]
         p /= np.linalg.norm(p, axis=1)[:, None]
         lat.append(np.degrees(np.arctan2(p[:, 2], np.hypot(p[:, 0], p[:, 1]))))
