@@ -52,12 +52,14 @@ def fhex(v: float) -> str:
 
 
 def flat_doubles(arr: np.ndarray, per_line: int = 3) -> str:
+    """A 1-d array of doubles as initialiser lines of hex floats."""
     vals = [fhex(v).strip("()") for v in np.asarray(arr, dtype=np.float64).ravel()]
     lines = [", ".join(vals[i:i + per_line]) for i in range(0, len(vals), per_line)]
     return "    " + ",\n    ".join(lines)
 
 
 def flat_ints(arr: np.ndarray, per_line: int = 32, fmt: str = "%d") -> str:
+    """A 1-d array of integers as initialiser lines."""
     vals = [fmt % int(v) for v in np.asarray(arr).ravel()]
     lines = [",".join(vals[i:i + per_line]) for i in range(0, len(vals), per_line)]
     return "    " + ",\n    ".join(lines)
@@ -72,6 +74,7 @@ def nested(data: np.ndarray, ctype: str) -> str:
 
 
 def main() -> int:
+    """Write tables.h and tables.c; the exit code."""
     sys.path.insert(0, ROOT)
     _stub_core()
     from dggs.geometry import constants as C
