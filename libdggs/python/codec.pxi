@@ -250,11 +250,11 @@ def parent_str(str s not None, int64_t level):
 
 def point_str(double lat, double lng, int level):
     """The string id of the level-``level`` cell holding a point; "" for a point not on the globe."""
-    return _codec_format(dggs_one_point(DGGS_ISEA, lat, lng, level))
+    return _codec_format(dggs_one_point(POINTS_ISEA, lat, lng, level))
 
 
 def centre_str(str s not None):
     """The centre (lat, lng) of a string id; NaNs if it is not one."""
     cdef double lat, lng
-    dggs_centre_of(DGGS_ISEA, <int64_t>_codec_parse_str(s), &lat, &lng)
+    dggs_centre_of(POINTS_ISEA, <int64_t>_codec_parse_str(s), &lat, &lng)
     return lat, lng
