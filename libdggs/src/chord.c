@@ -74,7 +74,8 @@ bool dggs_crosses(const double ta[6], const double tb[6], double xa, double ya, 
     if (sqrt((cx - px) * (cx - px) + (cy - py) * (cy - py)) <= 2.0 * eps ||
         sqrt((cx - qx) * (cx - qx) + (cy - qy) * (cy - qy)) <= 2.0 * eps)
         return false;
-    if ((cx - px) * ex + (cy - py) * ey <= 0.0 || (cx - qx) * ex + (cy - qy) * ey >= 0.0) return false; /* X beyond P or Q */
+    if ((cx - px) * ex + (cy - py) * ey <= 0.0 || (cx - qx) * ex + (cy - qy) * ey >= 0.0)
+        return false; /* X beyond P or Q */
     return dggs_dist_to_segment(px, py, xa, ya, xb, yb) > eps && dggs_dist_to_segment(qx, qy, xa, ya, xb, yb) > eps;
 }
 

@@ -12,7 +12,10 @@
 #include "line_layout.h"
 #include "line_tables.h"
 #include "points.h"
-#include "tables.h"
+
+/* tables.h's ISEA face centres (kernel.ISEA_CENTRES), declared here: tables.h defines DGGS_GRID_H (a grid
+ * size), which is grid.h's include guard, so the two headers cannot be included together yet. */
+extern const double dggs_isea_centres[20][3];
 
 #define LT_A DGGS_LT_A
 #define LT_B DGGS_LT_B
@@ -110,7 +113,8 @@ uint64_t dggs_sample(dggs_projection proj, double x, double y, double z, int lev
     dggs_authalic_sincos(sp, cp, &sb, &cb);
     double px = cb * cl, py = cb * sl, pz = sb;
     int f = hint;
-    if (f < 0 || px * dggs_isea_centres[f][0] + py * dggs_isea_centres[f][1] + pz * dggs_isea_centres[f][2] <= DGGS_LT_COS_20)
+    if (f < 0 ||
+        px * dggs_isea_centres[f][0] + py * dggs_isea_centres[f][1] + pz * dggs_isea_centres[f][2] <= DGGS_LT_COS_20)
         f = dggs_nearest_face(&dggs_isea_centres[0][0], px, py, pz);
     dggs_proj_face_forward(proj, f, px, py, pz, fx, fy);
     *face = f;
