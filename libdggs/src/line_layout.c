@@ -64,7 +64,7 @@ void dggs_layout(const double *xy, const double *az12, const double *az21, const
         double step = dist[i] / (double)m;
         for (int64_t j = 0; j < m; j++) {
             span[k + (size_t)j] = step;
-            if (j > 0) {
+            if (j > 0 && at != NULL) { /* at, seg and s are optional (NULL: the caller fills the anchors itself) */
                 at[r] = (int64_t)(k + (size_t)j);
                 seg[r] = (int64_t)i;
                 s[r] = (double)j * step;

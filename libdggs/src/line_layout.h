@@ -22,7 +22,9 @@ void dggs_layout_size(const double *dist, size_t nseg, double max_span, size_t *
  * cut into spans of at most max_span metres. The polyline's points and their azimuths go in place (az21,
  * pyproj's back azimuth at each segment's end, turned round: az21 + 180); for each anchor between them its
  * index at, segment seg and distance s from the segment's start, for the caller to fill from a geodesic's
- * direct problem. az_out and az_in are zero where not set (as numba's np.zeros). Sizes: dggs_layout_size. */
+ * direct problem (at, seg and s may all be NULL: then they are not written). az_out and az_in are zero where
+ * not set (as numba's np.zeros); lat and lng between the points are left for the caller. Sizes:
+ * dggs_layout_size. */
 void dggs_layout(const double *xy, const double *az12, const double *az21, const double *dist, size_t nseg,
                  double max_span, double *lat, double *lng, double *az_out, double *az_in, double *span, int64_t *at,
                  int64_t *seg, double *s);
