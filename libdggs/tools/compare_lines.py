@@ -75,13 +75,24 @@ def same(name: str, a, b, n: int | None = None) -> None:
 
 # ---- inputs ----
 
+
 def special_points() -> np.ndarray:
     """Poles, the antimeridian, the icosahedron's vertices and face-edge midpoints (geodetic), and 1e-12 off them."""
     from dggs.geometry.authalic import WGS84
 
     geo = ISEA.geometry
-    pts = [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (0.0, -180.0), (45.0, 180.0), (-45.0, -180.0), (89.999999, 37.0),
-           (-89.9999999999, -123.0), (12.5, 179.9999999999), (-33.0, -179.99999999)]
+    pts = [
+        (90.0, 0.0),
+        (-90.0, 0.0),
+        (0.0, 180.0),
+        (0.0, -180.0),
+        (45.0, 180.0),
+        (-45.0, -180.0),
+        (89.999999, 37.0),
+        (-89.9999999999, -123.0),
+        (12.5, 179.9999999999),
+        (-33.0, -179.99999999),
+    ]
     verts = geo.vertices
     vs = list(verts)
     for f in range(20):
@@ -165,6 +176,7 @@ def shaped_lines(rng) -> list[tuple[str, np.ndarray, list[int]]]:
 
 # ---- numba batch loops over the kernel's per-item functions ----
 
+
 @njit(cache=False)
 def nb_scalars(lat, lng, az, x, y, z, out):
     """The ecef, tangent and geodetic of each point (numba)."""
@@ -196,6 +208,7 @@ def nb_pairs(cells, level, col1, col2, pa, pb):
 
 
 # ---- the comparisons ----
+
 
 def compare_cells_at(core, rng, scale: float) -> None:
     """Compare cells_at, lone and chained, both projections, levels 0..28."""
@@ -243,11 +256,14 @@ def compare_scalars(core, rng, scale: float) -> None:
     """Compare ecef, tangent, geodetic."""
     n = int(200_000 * scale)
     lat, lng = random_points(rng, n)
-    lat[:SPECIAL.shape[0]], lng[:SPECIAL.shape[0]] = SPECIAL[:, 0], SPECIAL[:, 1]
+    lat[: SPECIAL.shape[0]], lng[: SPECIAL.shape[0]] = SPECIAL[:, 0], SPECIAL[:, 1]
     az = rng.uniform(-360, 360, n)
     r = 6378137.0 * (1 + rng.uniform(-0.01, 0.01, n))
-    x, y, z = r * np.cos(np.radians(lat)) * np.cos(np.radians(lng)), r * np.cos(np.radians(lat)) * np.sin(
-        np.radians(lng)), r * np.sin(np.radians(lat))
+    x, y, z = (
+        r * np.cos(np.radians(lat)) * np.cos(np.radians(lng)),
+        r * np.cos(np.radians(lat)) * np.sin(np.radians(lng)),
+        r * np.sin(np.radians(lat)),
+    )
     x[:50], y[:50] = 0.0, 0.0  # on the axis (a pole)
     ref = np.empty((n, 8))
     nb_scalars(lat, lng, az, x, y, z, ref)
@@ -266,8 +282,13 @@ def compare_chord(core, rng, scale: float) -> None:
     n = int(100_000 * scale)
     lat, lng = random_points(rng, n)
     level = rng.integers(1, 21, n)
-    cells = np.array([dggs.latlng_to_cell(float(a), float(b), int(lv), as_int=True) for a, b, lv in
-                      zip(lat[: n // 50], lng[: n // 50], level[: n // 50], strict=True)], dtype=np.uint64)
+    cells = np.array(
+        [
+            dggs.latlng_to_cell(float(a), float(b), int(lv), as_int=True)
+            for a, b, lv in zip(lat[: n // 50], lng[: n // 50], level[: n // 50], strict=True)
+        ],
+        dtype=np.uint64,
+    )
     cells = np.resize(cells, n)
     level = np.resize(level[: n // 50], n).astype(np.int64)
     col1, col2 = rng.integers(0, 3, n), rng.integers(0, 3, n)
@@ -281,7 +302,7 @@ def compare_chord(core, rng, scale: float) -> None:
     # samples: random barycentric points of each cell, some exactly on corners or edge midpoints
     wa, wb = rng.dirichlet([1, 1, 1], n), rng.dirichlet([1, 1, 1], n)
     wa[: n // 10] = np.eye(3)[rng.integers(0, 3, n // 10)]
-    wb[n // 10: n // 5] = [0.5, 0.5, 0.0]
+    wb[n // 10 : n // 5] = [0.5, 0.5, 0.0]
     xa = wa[:, 0] * ta[:, 0] + wa[:, 1] * ta[:, 2] + wa[:, 2] * ta[:, 4]
     ya = wa[:, 0] * ta[:, 1] + wa[:, 1] * ta[:, 3] + wa[:, 2] * ta[:, 5]
     xb = wb[:, 0] * tb[:, 0] + wb[:, 1] * tb[:, 2] + wb[:, 2] * tb[:, 4]
@@ -400,6 +421,7 @@ def compare_trace(core, rng, scale: float) -> list[tuple[np.ndarray, int, bool]]
 
 # ---- the public C function through ctypes ----
 
+
 class Geodesic(ctypes.Structure):
     """dggs.h's dggs_geodesic."""
 
@@ -416,15 +438,38 @@ def compare_public(lib_path: str, lines: list[tuple[np.ndarray, int, bool]], rng
     g = ctypes.create_string_buffer(8192)  # struct geod_geodesic (about 400 bytes)
     proj.geod_init.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double]
     proj.geod_init(g, GEOD.a, GEOD.f)
-    geo = Geodesic(ctypes.cast(proj.geod_inverse, ctypes.c_void_p).value,
-                   ctypes.cast(proj.geod_direct, ctypes.c_void_p).value, ctypes.cast(g, ctypes.c_void_p).value)
+    geo = Geodesic(
+        ctypes.cast(proj.geod_inverse, ctypes.c_void_p).value,
+        ctypes.cast(proj.geod_direct, ctypes.c_void_p).value,
+        ctypes.cast(g, ctypes.c_void_p).value,
+    )
     size_t = ctypes.c_size_t
-    lib.dggs_line_to_cells_size.argtypes = [ctypes.c_void_p, size_t, ctypes.c_int, ctypes.POINTER(Geodesic),
-                                            ctypes.POINTER(size_t), ctypes.POINTER(size_t)]
-    lib.dggs_line_to_cells.argtypes = [ctypes.c_void_p, size_t, ctypes.c_int, ctypes.c_int, ctypes.POINTER(Geodesic),
-                                       ctypes.c_void_p, size_t, ctypes.c_void_p, size_t, ctypes.POINTER(size_t)]
-    extra = [np.zeros((0, 2)), np.array([(10.0, 20.0)]), np.array([(10.0, 20.0), (10.0, 20.0)]),
-             np.array([(1.0, 1.0), (1.0, 1.0), (1.0, 3.0), (1.0, 1.0)])]
+    lib.dggs_line_to_cells_size.argtypes = [
+        ctypes.c_void_p,
+        size_t,
+        ctypes.c_int,
+        ctypes.POINTER(Geodesic),
+        ctypes.POINTER(size_t),
+        ctypes.POINTER(size_t),
+    ]
+    lib.dggs_line_to_cells.argtypes = [
+        ctypes.c_void_p,
+        size_t,
+        ctypes.c_int,
+        ctypes.c_int,
+        ctypes.POINTER(Geodesic),
+        ctypes.c_void_p,
+        size_t,
+        ctypes.c_void_p,
+        size_t,
+        ctypes.POINTER(size_t),
+    ]
+    extra = [
+        np.zeros((0, 2)),
+        np.array([(10.0, 20.0)]),
+        np.array([(10.0, 20.0), (10.0, 20.0)]),
+        np.array([(1.0, 1.0), (1.0, 1.0), (1.0, 3.0), (1.0, 1.0)]),
+    ]
     shaped = [ln for ln in lines if ln[2]]
     rand = [ln for ln in lines if not ln[2]]
     todo = [(x, lv) for x in extra for lv in (0, 6, 28)]
@@ -433,8 +478,9 @@ def compare_public(lib_path: str, lines: list[tuple[np.ndarray, int, bool]], rng
     for i, (xy, level) in enumerate(todo):
         pts = np.ascontiguousarray(xy, dtype=np.float64)
         mx, ws = size_t(), size_t()
-        err = lib.dggs_line_to_cells_size(pts.ctypes.data, pts.shape[0], level, ctypes.byref(geo), ctypes.byref(mx),
-                                          ctypes.byref(ws))
+        err = lib.dggs_line_to_cells_size(
+            pts.ctypes.data, pts.shape[0], level, ctypes.byref(geo), ctypes.byref(mx), ctypes.byref(ws)
+        )
         if err != 0:
             FAILS.append(f"dggs_line_to_cells_size error {err}")
             continue
@@ -445,8 +491,18 @@ def compare_public(lib_path: str, lines: list[tuple[np.ndarray, int, bool]], rng
             while True:
                 out = np.zeros(max(cap, 1), np.uint64)
                 cnt = size_t()
-                err = lib.dggs_line_to_cells(pts.ctypes.data, pts.shape[0], level, p, ctypes.byref(geo),
-                                             work.ctypes.data, ws.value, out.ctypes.data, cap, ctypes.byref(cnt))
+                err = lib.dggs_line_to_cells(
+                    pts.ctypes.data,
+                    pts.shape[0],
+                    level,
+                    p,
+                    ctypes.byref(geo),
+                    work.ctypes.data,
+                    ws.value,
+                    out.ctypes.data,
+                    cap,
+                    ctypes.byref(cnt),
+                )
                 if err != 5:  # DGGS_E_BUFFER
                     break
                 if cnt.value <= cap:
