@@ -27,7 +27,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 
 
 def load_core():
-    """This checkout's dggs._core, loaded by path under its real name."""
+    """Load dggs._core of this checkout's build, by path under its real name."""
     so = glob.glob(os.path.join(ROOT, "dggs", "_core.cpython-*.so"))[0]
     spec = importlib.util.spec_from_file_location("dggs._core", so)
     core = importlib.util.module_from_spec(spec)
@@ -44,8 +44,9 @@ FAILED: list[str] = []
 
 
 def same(a, b) -> bool:
+    """Whether two results are equal bit for bit (floats by their bits; tuples element-wise)."""
     if isinstance(a, tuple):
-        return isinstance(b, tuple) and len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+        return isinstance(b, tuple) and len(a) == len(b) and all(same(x, y) for x, y in zip(a, b, strict=True))
     a, b = np.asarray(a), np.asarray(b)
     if a.shape != b.shape or a.dtype != b.dtype:
         return False
@@ -55,6 +56,7 @@ def same(a, b) -> bool:
 
 
 def report(name: str, count: int, equal: bool) -> None:
+    """Print one comparison's line and remember a failure."""
     print(f"{name:44s} {count:>10,d} items  {'equal' if equal else 'DIFFERENT'}", flush=True)
     if not equal:
         FAILED.append(name)
@@ -77,15 +79,53 @@ def junk_ints(rng: np.random.Generator, ids: np.ndarray) -> np.ndarray:
     """Ids with one bit flipped, random uint64s, the null id and hand-made malformed ids."""
     flip = ids ^ (np.uint64(1) << rng.integers(0, 64, ids.size).astype(np.uint64))
     raw = rng.integers(0, 2**64 - 1, ids.size // 4, dtype=np.uint64, endpoint=True)
-    hand = np.array([0, 1, 1 << 62, (1 << 62) | (20 << 57), (1 << 62) | (31 << 57), (1 << 62) | (7 << 54),
-                     (1 << 62) | (1 << 54) | 1, (1 << 62) | 1, 2**63 - 1, 2**63, 2**64 - 1, 1 << 63 | 1 << 62],
-                    dtype=np.uint64)
+    hand = np.array(
+        [
+            0,
+            1,
+            1 << 62,
+            (1 << 62) | (20 << 57),
+            (1 << 62) | (31 << 57),
+            (1 << 62) | (7 << 54),
+            (1 << 62) | (1 << 54) | 1,
+            (1 << 62) | 1,
+            2**63 - 1,
+            2**63,
+            2**64 - 1,
+            1 << 63 | 1 << 62,
+        ],
+        dtype=np.uint64,
+    )
     return np.concatenate([flip, raw, hand])
 
 
 def junk_strings(rng: np.random.Generator, good: list[str], n: int) -> list[str]:
-    out = ["", "Z", "U1", "A6", "A03", "A0 1", "a01", "A01\x00", "A0\u0661", "A" + "0" * 29, "T5" + "2" * 28,
-           "T5" + "2" * 27, "+A0", "A_0", "A\x000", "\x00", "A0\U0001F600", "\u00c1", "@", "[", "A/", "A:", "A03"]
+    """Hand-made junk and mutations of good ids (a character replaced, inserted, deleted; too long)."""
+    out = [
+        "",
+        "Z",
+        "U1",
+        "A6",
+        "A03",
+        "A0 1",
+        "a01",
+        "A01\x00",
+        "A0\u0661",
+        "A" + "0" * 29,
+        "T5" + "2" * 28,
+        "T5" + "2" * 27,
+        "+A0",
+        "A_0",
+        "A\x000",
+        "\x00",
+        "A0\U0001f600",
+        "\u00c1",
+        "@",
+        "[",
+        "A/",
+        "A:",
+        "A03",
+    ]
     alphabet = list("ABCSTU@[0123456789/:_ \x00\u00c9\u0661")
     for s in rng.choice(good, n):
         s = list(s)
@@ -104,6 +144,7 @@ def junk_strings(rng: np.random.Generator, good: list[str], n: int) -> list[str]
 
 
 def compare_ints(rng, n: int) -> np.ndarray:
+    """valid_ints, check_ints, max_level and fill_codes on uint64 arrays; returns good ids."""
     ids = random_ids(rng, n)
     bad = junk_ints(rng, ids)
     mixed = np.concatenate([ids, bad])
@@ -149,6 +190,7 @@ def compare_ints(rng, n: int) -> np.ndarray:
 
 
 def compare_strings(rng, ids: np.ndarray, n_scalar: int) -> None:
+    """The parsers on every container the callers pass, and the single-id entries."""
     good = [strings.format_int(int(c)) for c in ids]
     junk = junk_strings(rng, good, len(good) // 5)
     allstr = good + junk
@@ -178,11 +220,20 @@ def compare_strings(rng, ids: np.ndarray, n_scalar: int) -> None:
     for large in (False, True):
         items = [None if rng.random() < 0.05 else x for x in allstr]
         arr = pa.array(items, type=pa.large_string() if large else pa.string())
-        for sl in (arr, arr.slice(3), arr.slice(1001, 50000), pa.array(good, type=pa.large_string() if large else pa.string())):
+        for sl in (
+            arr,
+            arr.slice(3),
+            arr.slice(1001, 50000),
+            pa.array(good, type=pa.large_string() if large else pa.string()),
+        ):
             validity, off_buf, data_buf = sl.buffers()[:3]
             offsets = np.frombuffer(off_buf, dtype=np.int64 if large else np.int32)
             data = np.frombuffer(data_buf, dtype=np.uint8) if data_buf is not None else np.zeros(0, dtype=np.uint8)
-            bits = np.frombuffer(validity, dtype=np.uint8) if validity is not None and sl.null_count else np.zeros(0, dtype=np.uint8)
+            bits = (
+                np.frombuffer(validity, dtype=np.uint8)
+                if validity is not None and sl.null_count
+                else np.zeros(0, dtype=np.uint8)
+            )
             a = kc.parse_arrow(data, offsets, bits, sl.offset, len(sl))
             b = core.parse_arrow(data, offsets, bits, sl.offset, len(sl))
             ok &= same(a[0], b[0]) and int(a[1]) == b[1]
@@ -194,7 +245,9 @@ def compare_strings(rng, ids: np.ndarray, n_scalar: int) -> None:
     for items in (ascii_items, allstr, good, allstr[:1000] + ["A\x000"], [], [""], ["A"]):
         text = "\x00".join(items)
         wide = not text.isascii()
-        data = np.frombuffer(text.encode("utf-32-le" if wide else "ascii", "surrogatepass"), dtype=np.uint32 if wide else np.uint8)
+        data = np.frombuffer(
+            text.encode("utf-32-le" if wide else "ascii", "surrogatepass"), dtype=np.uint32 if wide else np.uint8
+        )
         for n in (len(items), len(items) + 2, max(len(items) - 1, 0)):
             a = kc.parse_joined(data, n)
             b = core.parse_joined(data, n)
@@ -224,12 +277,15 @@ def compare_strings(rng, ids: np.ndarray, n_scalar: int) -> None:
     lat[:8] = [90.0, -90.0, 0.0, 0.0, math.nan, 91.0, 45.0, -90.0]
     lng[:8] = [0.0, 180.0, -180.0, 180.0, 0.0, 0.0, math.inf, -180.0]
     lv = rng.integers(0, 29, n_scalar)
-    ok = all(ks.point_str(float(a), float(b), int(v)) == core.point_str(float(a), float(b), int(v))
-             for a, b, v in zip(lat, lng, lv))
+    ok = all(
+        ks.point_str(float(a), float(b), int(v)) == core.point_str(float(a), float(b), int(v))
+        for a, b, v in zip(lat, lng, lv, strict=True)
+    )
     report("point_str", n_scalar, ok)
 
 
 def main() -> int:
+    """Run every comparison; 0 only if all are equal."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scale", type=float, default=1.0, help="multiply every count by this")
     parser.add_argument("--seed", type=int, default=20261207)

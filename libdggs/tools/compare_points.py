@@ -26,7 +26,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 
 
 def load_core():
-    """This checkout's dggs._core, loaded by path under its real name."""
+    """Load dggs._core of this checkout's build, by path under its real name."""
     so = glob.glob(os.path.join(ROOT, "dggs", "_core.cpython-*.so"))[0]
     spec = importlib.util.spec_from_file_location("dggs._core", so)
     core = importlib.util.module_from_spec(spec)
@@ -43,6 +43,7 @@ FAILED: list[str] = []
 
 
 def same(a, b) -> bool:
+    """Whether two results are equal bit for bit (floats by their bits)."""
     a, b = np.asarray(a), np.asarray(b)
     if a.shape != b.shape or a.dtype != b.dtype:
         return False
@@ -52,12 +53,14 @@ def same(a, b) -> bool:
 
 
 def report(name: str, count: int, equal: bool) -> None:
+    """Print one comparison's line and remember a failure."""
     print(f"{name:44s} {count:>10,d} items  {'equal' if equal else 'DIFFERENT'}", flush=True)
     if not equal:
         FAILED.append(name)
 
 
 def unit_to_latlng(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Spherical (lat, lng) degrees of unit vectors (for picking test points only)."""
     lat = np.degrees(np.arcsin(np.clip(p[:, 2], -1, 1)))
     lng = np.degrees(np.arctan2(p[:, 1], p[:, 0]))
     return lat, lng
@@ -65,10 +68,44 @@ def unit_to_latlng(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def edge_points(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray]:
     """Points on and near the special places: poles, +-180, vertices, face edges and centres, off the globe."""
-    lat: list[float] = [90.0, -90.0, 0.0, 0.0, 0.0, 89.999999999, -89.999999999, 90.0 - 1e-15, -0.0,
-                        math.nan, 91.0, -90.5, 45.0, 45.0, 45.0, 1e-300, 5e-324]
-    lng: list[float] = [0.0, 180.0, 180.0, -180.0, -0.0, 33.0, -147.0, 180.0, 540.0,
-                        0.0, 0.0, 0.0, math.inf, -math.inf, math.nan, 1e308, -5e-324]
+    lat: list[float] = [
+        90.0,
+        -90.0,
+        0.0,
+        0.0,
+        0.0,
+        89.999999999,
+        -89.999999999,
+        90.0 - 1e-15,
+        -0.0,
+        math.nan,
+        91.0,
+        -90.5,
+        45.0,
+        45.0,
+        45.0,
+        1e-300,
+        5e-324,
+    ]
+    lng: list[float] = [
+        0.0,
+        180.0,
+        180.0,
+        -180.0,
+        -0.0,
+        33.0,
+        -147.0,
+        180.0,
+        540.0,
+        0.0,
+        0.0,
+        0.0,
+        math.inf,
+        -math.inf,
+        math.nan,
+        1e308,
+        -5e-324,
+    ]
     verts = np.asarray(gk.ISEA_CENTRES)  # face centres
     vlat, vlng = unit_to_latlng(verts)
     lat += vlat.tolist()
@@ -95,13 +132,16 @@ def edge_points(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarra
     # near +-180 and the poles
     m = n // 4
     al = rng.uniform(-90, 90, m)
-    ag = np.where(rng.random(m) < 0.5, 180.0, -180.0) - np.copysign(10.0 ** rng.uniform(-14, -2, m), rng.standard_normal(m))
+    ag = np.where(rng.random(m) < 0.5, 180.0, -180.0) - np.copysign(
+        10.0 ** rng.uniform(-14, -2, m), rng.standard_normal(m)
+    )
     pl = np.copysign(90.0 - 10.0 ** rng.uniform(-14, -1, m), rng.standard_normal(m))
     pg = rng.uniform(-180, 180, m)
     return (np.concatenate([base_lat, jl, al, pl]), np.concatenate([base_lng, jg, ag, pg]))
 
 
 def random_points(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Uniform points on the sphere, some longitudes far outside -180..180."""
     z = rng.uniform(-1, 1, n)
     lat = np.degrees(np.arcsin(z))
     lng = rng.uniform(-180, 180, n)
@@ -139,15 +179,20 @@ def compare_locate(rng, n_per_level: int) -> np.ndarray:
         lat, lng = edge_points(rng, 2000)
         lv = rng.integers(0, 29, lat.size)
         one = core.one_point if proj == "ISEA" else core.ivea_one_point
-        a = np.array([ref.one_point(float(x), float(y), int(v)) for x, y, v in zip(lat, lng, lv)], dtype=np.uint64)
-        b = np.array([one(float(x), float(y), int(v)) for x, y, v in zip(lat, lng, lv)], dtype=np.uint64)
+        a = np.array(
+            [ref.one_point(float(x), float(y), int(v)) for x, y, v in zip(lat, lng, lv, strict=True)], dtype=np.uint64
+        )
+        b = np.array([one(float(x), float(y), int(v)) for x, y, v in zip(lat, lng, lv, strict=True)], dtype=np.uint64)
         report(f"one_point {proj} (single entry)", lat.size, same(a, b))
     return np.concatenate(ids_all)
 
 
 def compare_cells(rng, ids: np.ndarray, n_boundary: int, n_scalar: int) -> None:
-    for proj, ref, cen, bnd, cof in (("ISEA", kp, core.centres, core.boundaries, core.centre_of),
-                                     ("IVEA", ki, core.ivea_centres, core.ivea_boundaries, core.ivea_centre_of)):
+    """Centres, boundaries and the single-id centre on both projections."""
+    for proj, ref, cen, bnd, cof in (
+        ("ISEA", kp, core.centres, core.boundaries, core.centre_of),
+        ("IVEA", ki, core.ivea_centres, core.ivea_boundaries, core.ivea_centre_of),
+    ):
         lat_a, lng_a = np.empty(ids.size), np.empty(ids.size)
         lat_b, lng_b = np.empty(ids.size), np.empty(ids.size)
         ref.centres(ids.size, ids, lat_a, lng_a)
@@ -163,19 +208,31 @@ def compare_cells(rng, ids: np.ndarray, n_boundary: int, n_scalar: int) -> None:
                 bnd(sub.size * (densify + 1), sub, densify, b, lnglat)
                 report(f"boundaries {proj} densify={densify} lnglat={lnglat}", sub.size, same(a, b))
         # the single-id entry, with ints that are no ids
-        vals = np.concatenate([ids[:n_scalar].view(np.int64), rng.integers(-(2**63), 2**63 - 1, n_scalar // 10, dtype=np.int64),
-                               np.array([0, 1, 1 << 62, (1 << 62) | (20 << 57), (1 << 62) | (7 << 54), 2**63 - 1, -1])])
+        vals = np.concatenate(
+            [
+                ids[:n_scalar].view(np.int64),
+                rng.integers(-(2**63), 2**63 - 1, n_scalar // 10, dtype=np.int64),
+                np.array([0, 1, 1 << 62, (1 << 62) | (20 << 57), (1 << 62) | (7 << 54), 2**63 - 1, -1]),
+            ]
+        )
         a = np.array([ref.centre_of(int(v)) for v in vals])
         b = np.array([cof(int(v)) for v in vals])
         report(f"centre_of {proj} (single entry)", vals.size, same(a, b))
 
 
 def compare_planar(rng, ids: np.ndarray, n_scalar: int) -> None:
+    """Triangles, corners, centre children and encode_point (no projection)."""
     sub = ids[rng.permutation(ids.size)[:n_scalar]]
     ok_t = ok_c = True
     for c in sub:
-        ok_t &= same(np.array(kp.triangle(c)[1:]), np.array(core.triangle(int(c))[1:])) and kp.triangle(c)[0] == core.triangle(int(c))[0]
-        ok_c &= same(np.array(kp.corners(c)[1:]), np.array(core.corners(int(c))[1:])) and kp.corners(c)[0] == core.corners(int(c))[0]
+        ok_t &= (
+            same(np.array(kp.triangle(c)[1:]), np.array(core.triangle(int(c))[1:]))
+            and kp.triangle(c)[0] == core.triangle(int(c))[0]
+        )
+        ok_c &= (
+            same(np.array(kp.corners(c)[1:]), np.array(core.corners(int(c))[1:]))
+            and kp.corners(c)[0] == core.corners(int(c))[0]
+        )
     report("triangle", sub.size, ok_t)
     report("corners", sub.size, ok_c)
     # centre children at every deeper level
@@ -198,12 +255,19 @@ def compare_planar(rng, ids: np.ndarray, n_scalar: int) -> None:
     xs, ys = w @ fc[:, 0], w @ fc[:, 1]
     faces = rng.integers(0, 20, n_scalar)
     lvls = rng.integers(0, 29, n_scalar)
-    a = np.array([kp.encode_point(int(f), float(x), float(y), int(v)) for f, x, y, v in zip(faces, xs, ys, lvls)], dtype=np.uint64)
-    b = np.array([core.encode_point(int(f), float(x), float(y), int(v)) for f, x, y, v in zip(faces, xs, ys, lvls)], dtype=np.uint64)
+    a = np.array(
+        [kp.encode_point(int(f), float(x), float(y), int(v)) for f, x, y, v in zip(faces, xs, ys, lvls, strict=True)],
+        dtype=np.uint64,
+    )
+    b = np.array(
+        [core.encode_point(int(f), float(x), float(y), int(v)) for f, x, y, v in zip(faces, xs, ys, lvls, strict=True)],
+        dtype=np.uint64,
+    )
     report("encode_point", n_scalar, same(a, b))
 
 
 def kp_level(c) -> int:
+    """Level of a well-formed id (Python ints)."""
     low = int(c) & ((1 << 54) - 1)
     if low:
         return 28 - ((low & -low).bit_length() - 1) // 2
@@ -215,10 +279,19 @@ def special_ids(rng, n: int) -> np.ndarray:
     out = []
     for level in range(29):
         m = n // 29
-        lat = np.concatenate([np.copysign(90.0 - 10.0 ** rng.uniform(-12, 1, m // 2), rng.standard_normal(m // 2)),
-                              rng.uniform(-90, 90, m - m // 2)])
-        lng = np.concatenate([rng.uniform(-180, 180, m // 2),
-                              np.where(rng.random(m - m // 2) < 0.5, 180.0, -180.0) - rng.uniform(-1, 1, m - m // 2) * 10.0 ** -rng.uniform(0, 8, m - m // 2)])
+        lat = np.concatenate(
+            [
+                np.copysign(90.0 - 10.0 ** rng.uniform(-12, 1, m // 2), rng.standard_normal(m // 2)),
+                rng.uniform(-90, 90, m - m // 2),
+            ]
+        )
+        lng = np.concatenate(
+            [
+                rng.uniform(-180, 180, m // 2),
+                np.where(rng.random(m - m // 2) < 0.5, 180.0, -180.0)
+                - rng.uniform(-1, 1, m - m // 2) * 10.0 ** -rng.uniform(0, 8, m - m // 2),
+            ]
+        )
         lat = np.concatenate([lat, [90.0, -90.0, 0.0, 0.0]])
         lng = np.concatenate([lng, [0.0, 0.0, 180.0, -180.0]])
         a = np.empty(lat.size, dtype=np.uint64)
@@ -231,6 +304,7 @@ def special_ids(rng, n: int) -> np.ndarray:
 
 
 def compare_special(rng, n: int) -> None:
+    """The exact pole and antimeridian rings, both projections."""
     ids = special_ids(rng, n)
     for proj, ref, ring in (("ISEA", kp, core.special_ring), ("IVEA", ki, core.ivea_special_ring)):
         total, ok, extra = 0, True, 0
@@ -249,6 +323,7 @@ def compare_special(rng, n: int) -> None:
 
 
 def compare_helpers(rng, n: int) -> None:
+    """The pole table and special_ring's helpers, both projections."""
     poles = core.pole_table()
     report("POLES", 60, same(poles, kp.POLES))
     fc = np.asarray(gk.FACE_CORNERS_CCW)
@@ -276,7 +351,10 @@ def compare_helpers(rng, n: int) -> None:
         b = np.full(step + 2, 9.0)
         ok &= kp._edge_params(a, step, tp) == core.edge_params(b, step, tp) and same(a, b)
     report("_edge_params", n // 10, ok)
-    for proj, ref, lla, cro in (("ISEA", kp, core.lat_lng_at, core.crossing), ("IVEA", ki, core.ivea_lat_lng_at, core.ivea_crossing)):
+    for proj, ref, lla, cro in (
+        ("ISEA", kp, core.lat_lng_at, core.crossing),
+        ("IVEA", ki, core.ivea_lat_lng_at, core.ivea_crossing),
+    ):
         ok_l = ok_c = True
         for _ in range(n // 5):
             face = int(rng.integers(0, 20))
@@ -293,6 +371,7 @@ def compare_helpers(rng, n: int) -> None:
 
 
 def main() -> int:
+    """Run every comparison; 0 only if all are equal."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scale", type=float, default=1.0, help="multiply every count by this")
     parser.add_argument("--seed", type=int, default=20261207)
