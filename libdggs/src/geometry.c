@@ -276,8 +276,8 @@ int dggs_descend(double *px, double *py) {
  * checked and such a point takes the exact steps (digit codes 2, 2, 2, 2 and a NaN point). */
 uint64_t dggs_descend4(double *px, double *py) {
     double x = *px, y = *py;
-    double fx = py_min(py_max(x * DGGS_JUMP_SX + 1.0, 0.0), (double)DGGS_GRID_W + 1.0);
-    double fy = py_min(py_max(y * (double)DGGS_GRID_H + 1.0, 0.0), (double)DGGS_GRID_H + 1.0);
+    double fx = py_min(py_max(x * DGGS_JUMP_SX + 1.0, 0.0), (double)DGGS_JUMP_GRID_W + 1.0);
+    double fy = py_min(py_max(y * (double)DGGS_JUMP_GRID_H + 1.0, 0.0), (double)DGGS_JUMP_GRID_H + 1.0);
     unsigned code = DGGS_JUMP_AMBIGUOUS;
     if (fx >= 0.0 && fy >= 0.0) /* false for NaN only */
         code = dggs_jump_table[(long)fy * DGGS_JUMP_W2 + (long)fx];

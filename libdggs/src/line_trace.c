@@ -12,10 +12,7 @@
 #include "line_layout.h"
 #include "line_tables.h"
 #include "points.h"
-
-/* tables.h's ISEA face centres (kernel.ISEA_CENTRES), declared here: tables.h defines DGGS_GRID_H (a grid
- * size), which is grid.h's include guard, so the two headers cannot be included together yet. */
-extern const double dggs_isea_centres[20][3];
+#include "tables.h"
 
 #define LT_A DGGS_LT_A
 #define LT_B DGGS_LT_B

@@ -106,9 +106,9 @@
 /* terms of the inverse (geodetic) series */
 #define DGGS_GEODETIC_TERMS 6
 /* split26.GRID_W: jump grid columns */
-#define DGGS_GRID_W 1024
+#define DGGS_JUMP_GRID_W 1024
 /* split26.GRID_H: jump grid rows */
-#define DGGS_GRID_H 592
+#define DGGS_JUMP_GRID_H 592
 /* kernel._JUMP_W2 = GRID_W + 2: a jump table row, with its border */
 #define DGGS_JUMP_W2 1026
 /* (GRID_H + 2) * (GRID_W + 2) jump table cells */

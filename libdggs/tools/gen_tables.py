@@ -141,8 +141,8 @@ def main() -> int:
     ints = [
         ("DGGS_AUTHALIC_TERMS", ts.shape[0], "terms of the authalic series"),
         ("DGGS_GEODETIC_TERMS", tg.shape[0], "terms of the inverse (geodetic) series"),
-        ("DGGS_GRID_W", split26.GRID_W, "split26.GRID_W: jump grid columns"),
-        ("DGGS_GRID_H", split26.GRID_H, "split26.GRID_H: jump grid rows"),
+        ("DGGS_JUMP_GRID_W", split26.GRID_W, "split26.GRID_W: jump grid columns"),
+        ("DGGS_JUMP_GRID_H", split26.GRID_H, "split26.GRID_H: jump grid rows"),
         ("DGGS_JUMP_W2", K._JUMP_W2, "kernel._JUMP_W2 = GRID_W + 2: a jump table row, with its border"),
         ("DGGS_JUMP_SIZE", table.shape[0], "(GRID_H + 2) * (GRID_W + 2) jump table cells"),
         ("DGGS_JUMP_AMBIGUOUS", split26.AMBIGUOUS, "split26.AMBIGUOUS: a jump cell that takes 4 exact steps"),
