@@ -59,6 +59,20 @@ const char *dggs_error_string(dggs_error err);
 
 /* ---- projection (geometry.c, ivea.c) ---------------------------------------------------------- */
 
+/* Geodetic WGS84 (lat, lng) degrees -> the face (0..19) holding the point and its (x, y) in that face's
+ * frame (origin at the face centre, +y towards the face's vertex 0, on the unit authalic sphere: multiply by
+ * the authalic radius, 6371007.1809 m, for metres), by `proj` (Snyder's ISEA or IVEA) in PROJ's ISEA
+ * orientation; the grid's own point location (the authalic latitude by kernel.authalic_sincos). Longitudes
+ * wrap. Errors: DGGS_E_LATLNG (a latitude outside -90..90 or a coordinate that is not finite),
+ * DGGS_E_PROJECTION (not a dggs_projection); outputs are untouched on error. */
+dggs_error dggs_geo_to_face(double lat, double lng, dggs_projection proj, int *face, double *x, double *y);
+
+/* Face (0..19) and face-frame (x, y) on the unit authalic sphere -> geodetic WGS84 (lat, lng) degrees, longitude
+ * in -180..180, by `proj`'s closed-form inverse. Errors: DGGS_E_DOMAIN (a face outside 0..19, or a point off
+ * its face triangle by more than 1e-9 of the inradius, as dggs.geometry.snyder.inverse),
+ * DGGS_E_LATLNG (x or y not finite), DGGS_E_PROJECTION; outputs are untouched on error. */
+dggs_error dggs_face_to_geo(int face, double x, double y, dggs_projection proj, double *lat, double *lng);
+
 /* ---- end projection ---- */
 
 
