@@ -53,6 +53,26 @@ const char *dggs_error_string(dggs_error err);
 
 /* ---- ids and strings (codec.c) ---------------------------------------------------------------- */
 
+/* The id of string id `s` (a NUL-terminated face letter 'A'..'T', a level-1 digit '0'..'5', then one digit
+ * '0'..'2' per further level) into *out. DGGS_E_CELL if `s` is not a string id (empty, too long, another
+ * character); *out is then unchanged. */
+dggs_error dggs_string_to_cell(const char *s, dggs_cell *out);
+
+/* The string id of `cell` into `buf` of `size` bytes, NUL-terminated. A buffer of DGGS_MAX_CHARS + 1 bytes
+ * always suffices (a level-l id takes l + 2). DGGS_E_CELL if `cell` is not a well-formed id, DGGS_E_BUFFER if
+ * `buf` is too small (nothing written then). */
+dggs_error dggs_cell_to_string(dggs_cell cell, char *buf, size_t size);
+
+/* 1 if `cell` is a well-formed id (marker set, face 0..19, digits in range, no empty level above a filled
+ * one), else 0. */
+int dggs_is_valid_cell(dggs_cell cell);
+
+/* The level 0..DGGS_MAX_LEVEL of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_level(dggs_cell cell);
+
+/* The face 0..19 (its level-0 ancestor) of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_face(dggs_cell cell);
+
 /* ---- end ids and strings ---- */
 
 
@@ -79,11 +99,70 @@ dggs_error dggs_face_to_geo(int face, double x, double y, dggs_projection proj, 
 
 /* ---- points, centres, boundaries (points.c) --------------------------------------------------- */
 
+/* Most points per edge dggs_cell_to_boundary adds (Python's DENSIFY_LIMIT). */
+#define DGGS_MAX_DENSIFY 100000
+
+/* The id of the level-`level` cell holding the point (lat, lng) (WGS84 geodetic degrees; any longitude) on
+ * projection `proj`, into *out. DGGS_E_LATLNG for a latitude outside -90..90 (or NaN) or a longitude that is
+ * not finite, DGGS_E_LEVEL for a level outside 0..DGGS_MAX_LEVEL, DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_latlng_to_cell(double lat, double lng, int level, dggs_projection proj, dggs_cell *out);
+
+/* The centre of `cell` (its planar centroid on the face, mapped back by `proj`) as WGS84 degrees, latitude
+ * into *lat and longitude (-180..180) into *lng. DGGS_E_CELL if `cell` is not a well-formed id,
+ * DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_cell_to_latlng(dggs_cell cell, dggs_projection proj, double *lat, double *lng);
+
+/* The number of points dggs_cell_to_boundary writes for `densify`: 3 (densify + 1), into *points.
+ * DGGS_E_DOMAIN for a densify outside 0..DGGS_MAX_DENSIFY. */
+dggs_error dggs_cell_to_boundary_size(int densify, size_t *points);
+
+/* The boundary of `cell`: its three corners counter-clockwise seen from outside, each followed by `densify`
+ * points along the edge (straight on the face plane), as (lat, lng) degree pairs into `lat_lng` (room for
+ * `size` points, 2 size doubles; not closed: the first point is not repeated); the count of points into
+ * *count. DGGS_E_CELL, DGGS_E_DOMAIN (densify), DGGS_E_PROJECTION, DGGS_E_BUFFER if `size` is under
+ * dggs_cell_to_boundary_size's (nothing written then). */
+dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection proj, double *lat_lng, size_t size,
+                                 size_t *count);
+
 /* ---- end points ---- */
 
 
 
 /* ---- hierarchy and compaction (hierarchy.c, compact.c) ---------------------------------------- */
+
+/* The ancestor of `cell` at `parent_level` (0 .. the cell's level; the cell's own level gives the cell).
+ * Errors: DGGS_E_CELL (not a cell), DGGS_E_LEVEL (parent_level outside 0..DGGS_MAX_LEVEL),
+ * DGGS_E_LEVEL_MISMATCH (parent_level finer than the cell). */
+dggs_error dggs_cell_to_parent(dggs_cell cell, int parent_level, dggs_cell *parent);
+
+/* The number of descendants of `cell` at `child_level` (the cell's level .. DGGS_MAX_LEVEL): 3^(child_level -
+ * level), 6 * 3^(child_level - 1) for a base cell, 1 at the cell's own level. Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_LEVEL_MISMATCH (child_level coarser than the cell). */
+dggs_error dggs_cell_to_children_size(dggs_cell cell, int child_level, int64_t *size);
+/* The descendants of `cell` at `child_level`, in id order, into `children` (`size` entries, at least
+ * dggs_cell_to_children_size's). Errors: those of dggs_cell_to_children_size, DGGS_E_BUFFER (size too small;
+ * nothing written). */
+dggs_error dggs_cell_to_children(dggs_cell cell, int child_level, dggs_cell *children, int64_t size);
+
+/* The size of the buffer dggs_compact_cells needs for `num_cells` cells (num_cells, plus the sort's scratch from
+ * 4096 cells on: 2 num_cells + 20480). Errors: DGGS_E_DOMAIN (num_cells < 0). */
+dggs_error dggs_compact_cells_size(int64_t num_cells, int64_t *size);
+/* Replace every complete set of siblings by their parent, recursively: the fewest cells covering the area of
+ * `cells` (any order, any levels, duplicates and cells inside another allowed), sorted, into the first *num_out
+ * entries of `out` (`out_size` entries, at least dggs_compact_cells_size's; the rest is scratch; `out` must not
+ * overlap `cells`). Errors: DGGS_E_CELL (a cell is not a cell id), DGGS_E_DOMAIN (num_cells < 0), DGGS_E_BUFFER. */
+dggs_error dggs_compact_cells(const dggs_cell *cells, int64_t num_cells, dggs_cell *out, int64_t out_size,
+                              int64_t *num_out);
+/* The size of the buffer dggs_uncompact_cells needs to expand `cells` to `level`: the larger of the number of
+ * descendants at `level` of all cells (counted with any overlap; saturated at 2^63 - 1) and the sort's
+ * scratch (num_cells, plus 2 num_cells + 20480 from 4096 cells on). Errors: DGGS_E_CELL, DGGS_E_LEVEL,
+ * DGGS_E_DOMAIN (num_cells < 0), DGGS_E_LEVEL_MISMATCH (a cell finer than `level`). */
+dggs_error dggs_uncompact_cells_size(const dggs_cell *cells, int64_t num_cells, int level, int64_t *size);
+/* All descendants at `level` of the area `cells` cover, sorted and unique (the inverse of compaction), into the
+ * first *num_out entries of `out` (`out_size` entries, at least dggs_uncompact_cells_size's; `out` must not
+ * overlap `cells`). Errors: those of dggs_uncompact_cells_size, DGGS_E_BUFFER. */
+dggs_error dggs_uncompact_cells(const dggs_cell *cells, int64_t num_cells, int level, dggs_cell *out,
+                                int64_t out_size, int64_t *num_out);
 
 /* ---- end hierarchy ---- */
 
@@ -114,6 +193,25 @@ dggs_error dggs_face_to_geo(int face, double x, double y, dggs_projection proj, 
 
 
 /* ---- local (i, j), child positions, directed edges, vertices (local.c, edges.c) ---------------- */
+
+/* The position of `cell` among the descendants, at its own level, of its ancestor at `parent_level`, in id order
+ * (docs/grid.md, "Child positions"): the digits below parent_level in base 3, the level-1 digit in base 6 when
+ * parent_level is 0. Errors: DGGS_E_CELL, DGGS_E_LEVEL (parent_level outside 0..DGGS_MAX_LEVEL),
+ * DGGS_E_LEVEL_MISMATCH (parent_level finer than the cell). */
+dggs_error dggs_cell_to_child_pos(dggs_cell cell, int parent_level, int64_t *pos);
+/* The descendant of `parent` at `child_level` at position `pos` (the inverse of dggs_cell_to_child_pos).
+ * Errors: DGGS_E_CELL, DGGS_E_LEVEL, DGGS_E_LEVEL_MISMATCH (child_level coarser than the parent), DGGS_E_DOMAIN
+ * (pos outside 0 .. the parent's number of descendants at child_level - 1). */
+dggs_error dggs_child_pos_to_cell(int64_t pos, dggs_cell parent, int child_level, dggs_cell *child);
+
+/* Integer lattice coordinates (i, j) of `cell` around `anchor`, a cell of the same level (docs/grid.md, "Local
+ * coordinates"): the anchor is (0, 0); the cells of the anchor's face and of the three faces across its edges,
+ * unfolded into its plane, have one pair each. Errors: DGGS_E_CELL, DGGS_E_LEVEL_MISMATCH (two levels),
+ * DGGS_E_FAILED (a cell outside that range). */
+dggs_error dggs_cell_to_local_ij(dggs_cell anchor, dggs_cell cell, int64_t *i, int64_t *j);
+/* The cell at (i, j) around `anchor` (the exact inverse of dggs_cell_to_local_ij). Errors: DGGS_E_CELL (a bad
+ * anchor), DGGS_E_DOMAIN (a pair naming no cell: not a centroid of the lattice, or out of range). */
+dggs_error dggs_local_ij_to_cell(dggs_cell anchor, int64_t i, int64_t j, dggs_cell *cell);
 
 /* ---- end local ---- */
 
