@@ -54,12 +54,16 @@ extern const double dggs_fill_sin_half[DGGS_MAX_LEVEL + 1];
 extern const double dggs_fill_cos[DGGS_MAX_LEVEL + 1];
 extern const double dggs_fill_sin[DGGS_MAX_LEVEL + 1];
 extern const double dggs_fill_a_lat[DGGS_MAX_LEVEL + 1];
+/* The public verb's points per edge of a boundary cell at each level (tools/gen_fill_tables.py). */
+extern const int dggs_fill_densify[DGGS_MAX_LEVEL + 1];
 
 /* The state of one descent (fill.py descend's locals), resumable after DGGS_FILL_FULL. About 7 KB. */
 typedef struct {
     int level;       /* the target level */
     int test_from;   /* cells at this level or finer have every descendant's centre tested */
     double miny, maxy; /* the polygon's latitude bounds */
+    double inflate;    /* the footprint ellipses' scale off the poles: 1 (fill.py's), or more (the public verb's
+                        * overlapping_bbox, whose cells' boxes lie in the ellipse sqrt(2) times as large) */
     int64_t limit;
     int top; /* the stack's height */
     uint64_t stack_id[DGGS_FILL_STACK];
@@ -81,7 +85,7 @@ void dggs_footprint(dggs_projection proj, int face, int lv, double ax, double ay
  * centred on (ux, uy, uz); *lam is -1 where the cap holds a pole or comes too near one. */
 void dggs_ellipse(int lv, double ux, double uy, double uz, double *a, double *lam);
 
-/* fill.py descend's set-up: the 20 base cells on the stack, the counts zero. lv in 0..DGGS_MAX_LEVEL (the
+/* fill.py descend's set-up: the 20 base cells on the stack, the counts zero, inflate 1. lv in 0..DGGS_MAX_LEVEL (the
  * caller checks), center: "center" mode, direct: levels above `level` from which every centre is tested. */
 void dggs_fill_start(dggs_fill_state *s, int level, bool center, int direct, double miny, double maxy,
                      int64_t limit);

@@ -60,3 +60,6 @@ const double dggs_fill_a_lat[DGGS_MAX_LEVEL + 1] = {
     0x1.403ffa8297ae8p-14, 0x1.71caf1b587199p-15, 0x1.aafff8ae1f936p-16, 0x1.ed0e979cb4224p-17,
     0x1.1caaa5c96a625p-17,
 };
+
+/* the most points per edge cell_to_polygon's default gives sampled cells of each level (public verb) */
+const int dggs_fill_densify[DGGS_MAX_LEVEL + 1] = {64, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256, 128, 128, 128, 64, 64, 32, 32, 32, 16, 16, 8, 8, 4, 4, 2, 2};

@@ -257,3 +257,157 @@ void dggs_polygon_classify(double px, double py, double r, const dggs_edge_grid 
         *inside = c;
     }
 }
+
+/* ---- exact predicates (the public polygon fill's own; no numba counterpart) ---- */
+
+/* Shewchuk 1997, "Adaptive precision floating-point arithmetic and fast robust geometric predicates": the
+ * error-free transformations, exact under round-to-nearest without contraction (-ffp-contract=off). */
+static inline void two_sum(double a, double b, double *x, double *y) {
+    *x = a + b;
+    double bvirt = *x - a, avirt = *x - bvirt;
+    *y = (a - avirt) + (b - bvirt);
+}
+
+static inline void two_diff(double a, double b, double *x, double *y) {
+    *x = a - b;
+    double bvirt = a - *x, avirt = *x + bvirt;
+    *y = (a - avirt) + (bvirt - b);
+}
+
+static inline void split(double a, double *hi, double *lo) {
+    double c = 134217729.0 * a; /* 2^27 + 1 */
+    double abig = c - a;
+    *hi = c - abig;
+    *lo = a - *hi;
+}
+
+static inline void two_product(double a, double b, double *x, double *y) {
+    *x = a * b;
+    double ahi, alo, bhi, blo;
+    split(a, &ahi, &alo);
+    split(b, &bhi, &blo);
+    double err1 = *x - ahi * bhi, err2 = err1 - alo * bhi, err3 = err2 - ahi * blo;
+    *y = alo * blo - err3;
+}
+
+/* Grow-Expansion with zero elimination: h = e + b (h has room for elen + 1 components); returns its length. */
+static int grow_expansion(int elen, const double *e, double b, double *h) {
+    double q = b;
+    int hlen = 0;
+    for (int i = 0; i < elen; i++) {
+        double qnew, hh;
+        two_sum(q, e[i], &qnew, &hh);
+        q = qnew;
+        if (hh != 0.0) h[hlen++] = hh;
+    }
+    if (q != 0.0 || hlen == 0) h[hlen++] = q;
+    return hlen;
+}
+
+int dggs_orient_exact(double ax, double ay, double bx, double by, double px, double py) {
+    double left = (ax - px) * (by - py), right = (ay - py) * (bx - px);
+    double det = left - right;
+    double bound = 3.3306690738754716e-16 * (fabs(left) + fabs(right)); /* ccwerrboundA */
+    if (det > bound || -det > bound) return det > 0.0 ? 1 : -1;
+    /* exact: (acx + acxt)(bcy + bcyt) - (acy + acyt)(bcx + bcxt) as 16 products' components */
+    double acx, acxt, bcy, bcyt, acy, acyt, bcx, bcxt;
+    two_diff(ax, px, &acx, &acxt);
+    two_diff(by, py, &bcy, &bcyt);
+    two_diff(ay, py, &acy, &acyt);
+    two_diff(bx, px, &bcx, &bcxt);
+    const double l[4][2] = {{acx, bcy}, {acx, bcyt}, {acxt, bcy}, {acxt, bcyt}};
+    const double r[4][2] = {{acy, bcx}, {acy, bcxt}, {acyt, bcx}, {acyt, bcxt}};
+    double e[17], h[17];
+    int elen = 0;
+    for (int k = 0; k < 4; k++) {
+        double x, y;
+        two_product(l[k][0], l[k][1], &x, &y);
+        elen = grow_expansion(elen, e, x, h), memcpy(e, h, (size_t)elen * sizeof(double));
+        elen = grow_expansion(elen, e, y, h), memcpy(e, h, (size_t)elen * sizeof(double));
+        two_product(r[k][0], r[k][1], &x, &y);
+        elen = grow_expansion(elen, e, -x, h), memcpy(e, h, (size_t)elen * sizeof(double));
+        elen = grow_expansion(elen, e, -y, h), memcpy(e, h, (size_t)elen * sizeof(double));
+    }
+    double top = e[elen - 1]; /* the largest component carries the sign */
+    return (top > 0.0) - (top < 0.0);
+}
+
+/* GEOS's RayCrossingCounter::countSegment with exact orientations. */
+typedef struct {
+    int64_t crossings;
+    bool on;
+} ray_counter;
+
+static inline void count_segment(ray_counter *rc, double px, double py, double x1, double y1, double x2, double y2) {
+    if (x1 < px && x2 < px) return; /* strictly left of the point */
+    if (px == x2 && py == y2) {
+        rc->on = true;
+        return;
+    }
+    if (y1 == py && y2 == py) { /* horizontal: on it, or not counted */
+        double lo = x1 < x2 ? x1 : x2, hi = x1 < x2 ? x2 : x1;
+        if (px >= lo && px <= hi) rc->on = true;
+        return;
+    }
+    if ((y1 > py && y2 <= py) || (y2 > py && y1 <= py)) {
+        int sign = dggs_orient_exact(x1, y1, x2, y2, px, py);
+        if (sign == 0) {
+            rc->on = true;
+            return;
+        }
+        if (y2 < y1) sign = -sign;
+        if (sign > 0) rc->crossings++;
+    }
+}
+
+int dggs_locate_exact(double px, double py, const double *x0, const double *y0, const double *x1, const double *y1,
+                      int64_t n) {
+    ray_counter rc = {0, false};
+    for (int64_t i = 0; i < n && !rc.on; i++) count_segment(&rc, px, py, x0[i], y0[i], x1[i], y1[i]);
+    return rc.on ? -1 : (int)(rc.crossings & 1);
+}
+
+int dggs_locate_ring(double px, double py, const double *xy, int64_t m) {
+    ray_counter rc = {0, false};
+    for (int64_t i = 0; i < m && !rc.on; i++) {
+        int64_t j = i + 1 == m ? 0 : i + 1;
+        count_segment(&rc, px, py, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);
+    }
+    return rc.on ? -1 : (int)(rc.crossings & 1);
+}
+
+int dggs_locate(double px, double py, const dggs_edge_grid *g, int64_t n) {
+    int p = dggs_parity(px, py, g);
+    if (p >= 0) return p;
+    return dggs_locate_exact(px, py, g->x0, g->y0, g->x1, g->y1, n);
+}
+
+/* Whether c, known collinear with ab, lies on the closed segment ab. */
+static inline bool on_segment(double ax, double ay, double bx, double by, double cx, double cy) {
+    return min2(ax, bx) <= cx && cx <= max2(ax, bx) && min2(ay, by) <= cy && cy <= max2(ay, by);
+}
+
+int dggs_segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    if (max2(ax, bx) < min2(cx, dx) || max2(cx, dx) < min2(ax, bx) || max2(ay, by) < min2(cy, dy) ||
+        max2(cy, dy) < min2(ay, by))
+        return 0; /* boxes apart */
+    int o1 = dggs_orient_exact(ax, ay, bx, by, cx, cy), o2 = dggs_orient_exact(ax, ay, bx, by, dx, dy);
+    int o3 = dggs_orient_exact(cx, cy, dx, dy, ax, ay), o4 = dggs_orient_exact(cx, cy, dx, dy, bx, by);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return 2;
+    if ((o1 == 0 && on_segment(ax, ay, bx, by, cx, cy)) || (o2 == 0 && on_segment(ax, ay, bx, by, dx, dy)) ||
+        (o3 == 0 && on_segment(cx, cy, dx, dy, ax, ay)) || (o4 == 0 && on_segment(cx, cy, dx, dy, bx, by)))
+        return 1;
+    return 0;
+}
+
+bool dggs_grid_span(const dggs_edge_grid *g, double xlo, double xhi, double ylo, double yhi, int64_t *c0, int64_t *c1,
+                    int64_t *r0, int64_t *r1) {
+    const double *frame = g->frame;
+    if (xhi < frame[0] || xlo > frame[5] || yhi < frame[1] || ylo > frame[6]) return false;
+    int64_t side = (int64_t)frame[4];
+    *c0 = bucket_index(xlo, frame[0], frame[2], side);
+    *c1 = bucket_index(xhi, frame[0], frame[2], side);
+    *r0 = bucket_index(ylo, frame[1], frame[3], side);
+    *r1 = bucket_index(yhi, frame[1], frame[3], side);
+    return true;
+}

@@ -60,4 +60,26 @@ int dggs_parity(double px, double py, const dggs_edge_grid *g);
  * it lies wholly in it. */
 void dggs_polygon_classify(double px, double py, double r, const dggs_edge_grid *g, bool *hit, bool *inside);
 
+/* ---- exact predicates, for the public polygon fill's own tests (no numba counterpart) ---- */
+
+/* The exact sign of the orientation of (a, b, p): 1 if p lies left of a -> b, -1 right, 0 on its line. A
+ * filtered determinant, else exact expansion arithmetic (Shewchuk 1997: Two-Diff, Two-Product by Dekker's split,
+ * Grow-Expansion), exact unless a product underflows (coordinates under 1e-140 apart). */
+int dggs_orient_exact(double ax, double ay, double bx, double by, double px, double py);
+/* Where (px, py) lies in the polygon of n edges (x0, y0) - (x1, y1): 1 in its interior, 0 outside, -1 on its
+ * boundary. GEOS's RayCrossingCounter over every edge, with exact orientations: the answer GEOS's point location
+ * (shapely.contains_xy: interior) gives. */
+int dggs_locate_exact(double px, double py, const double *x0, const double *y0, const double *x1, const double *y1,
+                      int64_t n);
+/* The same over a ring of m points (xy interleaved (x, y), closed implicitly: the last joins the first). */
+int dggs_locate_ring(double px, double py, const double *xy, int64_t m);
+/* The same through the grid: dggs_parity where it decides, else dggs_locate_exact over the n edges. */
+int dggs_locate(double px, double py, const dggs_edge_grid *g, int64_t n);
+/* Whether closed segments ab and cd meet: 0 apart, 1 touching (an end on the other, or collinear overlap),
+ * 2 crossing at one point interior to both. Exact. */
+int dggs_segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy);
+/* The buckets (columns c0..c1, rows r0..r1) a box overlaps; false if it misses the edges' bounding box. */
+bool dggs_grid_span(const dggs_edge_grid *g, double xlo, double xhi, double ylo, double yhi, int64_t *c0, int64_t *c1,
+                    int64_t *r0, int64_t *r1);
+
 #endif

@@ -4,7 +4,14 @@
 tables fill.py derives from it with numpy (``np.sin(0.5 * RHO)``, ``np.cos(RHO)``, ``np.sin(RHO)``,
 ``K_LAT * np.degrees(RHO)``), computed here by the same numpy operations on the Python floor's planar corners
 (dggs.geometry.split26), written as C99 hex floats. Where the numba module is still importable its tables are
-compared too. Run from the repository root after any change to those modules::
+compared too.
+
+And, for the public C verb's boundary cells (fill.c, dggs_polygon_to_cells; no numba counterpart), the points per
+edge it draws a level's cells with: the most :func:`dggs.index._densify.needed_densify` (``cell_to_polygon``'s
+default, chosen cell by cell with pyproj's geodesics, which C does not have) gives over 4000 random cells and the
+cells at the icosahedron's vertices of that level.
+
+Run from the repository root after any change to those modules::
 
     .venv/bin/python libdggs/tools/gen_fill_tables.py
 """
@@ -34,6 +41,24 @@ def tables() -> dict[str, np.ndarray]:
     rho = K_INV * d * (1.0 + 1e-9)
     return {"rho": rho, "sin_half": np.sin(0.5 * rho), "cos": np.cos(rho), "sin": np.sin(rho),
             "a_lat": K_LAT * np.degrees(rho)}
+
+
+def densify_table() -> np.ndarray:
+    """Per level, the most points per edge ``cell_to_polygon``'s default gives the sampled cells."""
+    import dggs
+    from dggs.geometry import kernel as gk
+    from dggs.geometry.icosahedron import ISEA
+    from dggs.index._densify import needed_densify
+
+    rng = np.random.default_rng(28)
+    n = 4000
+    vertices = np.array([gk.unit_to_geodetic(*v) for v in ISEA.geometry.vertices])
+    lat = np.r_[np.degrees(np.arcsin(rng.uniform(-1, 1, n))), vertices[:, 0]]
+    lng = np.r_[rng.uniform(-180, 180, n), vertices[:, 1]]
+    out = np.empty(MAX_LEVEL + 1, dtype=np.int64)
+    for level in range(MAX_LEVEL + 1):
+        out[level] = needed_densify(np.unique(dggs.latlng_to_cell(lat, lng, level, as_int=True))).max()
+    return out
 
 
 def _check_against_numba(t: dict[str, np.ndarray]) -> None:
@@ -69,6 +94,10 @@ def main() -> None:
             lines.append("    " + ", ".join(vals[i:i + 4]) + ",")
         lines.append("};")
         lines.append("")
+    dens = densify_table()
+    lines.append("/* the most points per edge cell_to_polygon's default gives sampled cells of each level (public verb) */")
+    lines.append("const int dggs_fill_densify[DGGS_MAX_LEVEL + 1] = {" + ", ".join(str(int(v)) for v in dens) + "};")
+    lines.append("")
     with open(OUT, "w") as f:
         f.write("\n".join(lines))
     print(f"wrote {OUT}")
