@@ -184,7 +184,97 @@ static void check_footprint_bound(void) {
     CHECK(worst > 0.5 && worst <= 1.0);
 }
 
+/* The public verb: polygon_to_cells' docstring example (box(-10, -10, 10, 10) at level 6: 276 cells by centre,
+ * 232 contained, 338 overlapping), sorted output within the size bound, nesting of the modes, the errors. */
+static void check_public(void) {
+    static const double box[] = {-10, -10, -10, 10, 10, 10, 10, -10, -10, -10}; /* (lat, lng), closed */
+    static const int64_t sizes[] = {5};
+    static dggs_cell out[4][512];
+    static const int64_t want[4] = {276, 232, 338, 338};
+    int64_t count[4];
+    for (int mode = 0; mode < 4; mode++) {
+        int64_t size = -1;
+        CHECK(dggs_polygon_to_cells_size(box, sizes, 1, 6, (dggs_fill_mode)mode, DGGS_ISEA, &size) == DGGS_OK);
+        CHECK(size >= want[mode] && size <= 512);
+        CHECK(dggs_polygon_to_cells(box, sizes, 1, 6, (dggs_fill_mode)mode, DGGS_ISEA, out[mode], size,
+                                    &count[mode]) == DGGS_OK);
+        CHECK(count[mode] == want[mode]);
+        for (int64_t i = 0; i < count[mode]; i++) {
+            CHECK(dggs_level_of(out[mode][i]) == 6);
+            if (i) CHECK(out[mode][i] > out[mode][i - 1]);
+        }
+        int64_t need = 0;
+        CHECK(dggs_polygon_to_cells(box, sizes, 1, 6, (dggs_fill_mode)mode, DGGS_ISEA, out[mode], 10, &need) ==
+              DGGS_E_BUFFER);
+        CHECK(need == want[mode]);
+    }
+    /* contains within center within overlaps (sorted sets) */
+    for (int64_t i = 0, j = 0; i < count[1]; i++) {
+        while (j < count[0] && out[0][j] < out[1][i]) j++;
+        CHECK(j < count[0] && out[0][j] == out[1][i]);
+    }
+    for (int64_t i = 0, j = 0; i < count[0]; i++) {
+        while (j < count[2] && out[2][j] < out[0][i]) j++;
+        CHECK(j < count[2] && out[2][j] == out[0][i]);
+    }
+    /* the same ring unclosed, and with its orientation reversed: the same cells */
+    static const double open_box[] = {-10, 10, 10, 10, 10, -10, -10, -10};
+    static const int64_t open_sizes[] = {4};
+    int64_t n = 0;
+    static dggs_cell again[400];
+    CHECK(dggs_polygon_to_cells(open_box, open_sizes, 1, 6, DGGS_FILL_MODE_CENTER, DGGS_ISEA, again, 400, &n) ==
+          DGGS_OK);
+    CHECK(n == count[0] && memcmp(again, out[0], (size_t)n * sizeof(dggs_cell)) == 0);
+    /* no rings: no cells */
+    CHECK(dggs_polygon_to_cells(box, sizes, 0, 6, DGGS_FILL_MODE_CENTER, DGGS_IVEA, again, 0, &n) == DGGS_OK && n == 0);
+    /* errors */
+    static const double far[] = {0, 0, 0, 190, 10, 190};
+    static const double nan_ring[] = {0, 0, NAN, 1, 1, 1};
+    static const int64_t three[] = {3}, two[] = {2};
+    int64_t size;
+    CHECK(dggs_polygon_to_cells_size(box, sizes, 1, 29, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) == DGGS_E_LEVEL);
+    CHECK(dggs_polygon_to_cells_size(box, sizes, 1, -1, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) == DGGS_E_LEVEL);
+    CHECK(dggs_polygon_to_cells_size(box, sizes, 1, 6, (dggs_fill_mode)4, DGGS_ISEA, &size) == DGGS_E_DOMAIN);
+    CHECK(dggs_polygon_to_cells_size(box, sizes, 1, 6, DGGS_FILL_MODE_CENTER, (dggs_projection)2, &size) ==
+          DGGS_E_PROJECTION);
+    CHECK(dggs_polygon_to_cells_size(box, sizes, -1, 6, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) == DGGS_E_DOMAIN);
+    CHECK(dggs_polygon_to_cells_size(box, two, 1, 6, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) == DGGS_E_DOMAIN);
+    CHECK(dggs_polygon_to_cells_size(far, three, 1, 6, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) == DGGS_E_LATLNG);
+    CHECK(dggs_polygon_to_cells_size(nan_ring, three, 1, 6, DGGS_FILL_MODE_CENTER, DGGS_ISEA, &size) ==
+          DGGS_E_LATLNG);
+}
+
+/* The exact predicates: collinear points off the double grid's exact lines, a point 1 ulp off a line. */
+static void check_exact(void) {
+    CHECK(dggs_orient_exact(0.0, 0.0, 3.0, 1.0, 6.0, 2.0) == 0);
+    CHECK(dggs_orient_exact(0.0, 0.0, 1.0, 1.0, 0.5, 0.5) == 0);
+    CHECK(dggs_orient_exact(0.0, 0.0, 1.0, 1.0, 0.5, nextafter(0.5, 1.0)) == 1);
+    CHECK(dggs_orient_exact(0.0, 0.0, 1.0, 1.0, nextafter(0.5, 1.0), 0.5) == -1);
+    /* 0.1 + k 0.2 on y = x: rounding makes them miss the line; exactly so, against the sign of y - x */
+    for (int k = 0; k < 50; k++) {
+        double x = 0.1 + 0.2 * k, y = 0.3 * (k + 1) - 0.2 * (k + 1) + 0.1 * k;
+        int want = (y > x) - (y < x);
+        CHECK(dggs_orient_exact(-1.0, -1.0, 7.0, 7.0, x, y) == want);
+    }
+    /* Shewchuk's near-degenerate case: points near (0.5, 0.5) on the line through (12, 12) and (24, 24) */
+    for (int i = 0; i < 64; i++) {
+        double px = 0.5 + i * 0x1p-53, py = 0.5;
+        int want = px > py ? -1 : (px < py ? 1 : 0);
+        CHECK(dggs_orient_exact(12.0, 12.0, 24.0, 24.0, px, py) == want);
+    }
+    CHECK(dggs_segments_meet(0, 0, 2, 2, 0, 2, 2, 0) == 2);
+    CHECK(dggs_segments_meet(0, 0, 2, 2, 1, 1, 3, 0) == 1);
+    CHECK(dggs_segments_meet(0, 0, 2, 2, 2, 2, 3, 3) == 1);
+    CHECK(dggs_segments_meet(0, 0, 2, 2, 3, 3, 4, 4) == 0);
+    CHECK(dggs_segments_meet(0, 0, 2, 0, 0, 1, 2, 1) == 0);
+    static const double sq[] = {0, 0, 4, 0, 4, 4, 0, 4};
+    CHECK(dggs_locate_ring(2, 2, sq, 4) == 1 && dggs_locate_ring(5, 2, sq, 4) == 0);
+    CHECK(dggs_locate_ring(4, 2, sq, 4) == -1 && dggs_locate_ring(0, 0, sq, 4) == -1 && dggs_locate_ring(2, 4, sq, 4) == -1);
+}
+
 int main(void) {
+    check_exact();
+    check_public();
     check_frozen_cells();
     check_frozen_descents();
     check_footprint_bound();
