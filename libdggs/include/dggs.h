@@ -224,6 +224,43 @@ dggs_error dggs_grid_path_cells(dggs_cell a, dggs_cell b, dggs_cell *out, int64_
 
 /* ---- polygon fill (polygon.c, fill.c) ------------------------------------------------------------ */
 
+/* Which cells dggs_polygon_to_cells returns (the Python verb's `mode`; h3's containment modes). */
+typedef enum {
+    DGGS_FILL_MODE_CENTER = 0,          /* cells whose centre lies inside the polygon (its boundary excluded) */
+    DGGS_FILL_MODE_CONTAINS = 1,        /* cells lying wholly inside the polygon (their boundary may touch its) */
+    DGGS_FILL_MODE_OVERLAPS = 2,        /* cells that touch the polygon, its boundary included */
+    DGGS_FILL_MODE_OVERLAPPING_BBOX = 3 /* cells whose lng/lat bounding box (of each part, split at +-180) meets it */
+} dggs_fill_mode;
+
+/* A polygon: `num_rings` rings of (lat, lng) degrees laid end to end in `lat_lng` (2 doubles a point), ring k
+ * having ring_sizes[k] points (a last point equal to its first is allowed and ignored). Rings are the shells
+ * and holes of one or more polygons that do not overlap (a valid (Multi)Polygon): a point is inside when the
+ * ray from it crosses the rings an odd number of times. Edges are straight in the lng/lat plane; longitudes
+ * must lie in -180..180 (split a polygon that crosses the antimeridian there). The polygon is not checked for
+ * validity.
+ *
+ * dggs_polygon_to_cells_size: an upper bound on the number of cells dggs_polygon_to_cells returns (the cells
+ * the footprint descent keeps or cannot decide; it costs one descent).
+ * Errors (both functions): DGGS_E_LEVEL, DGGS_E_PROJECTION, DGGS_E_DOMAIN (an unknown mode, a negative count,
+ * a ring of fewer than 3 points), DGGS_E_LATLNG (a latitude outside -90..90, a longitude outside
+ * -180..180, a coordinate not finite), DGGS_E_FAILED (out of memory). */
+dggs_error dggs_polygon_to_cells_size(const double *lat_lng, const int64_t *ring_sizes, int64_t num_rings, int level,
+                                      dggs_fill_mode mode, dggs_projection proj, int64_t *size);
+/* The cells at `level` of a polygon (above) by `mode`, sorted, into `out` (`out_size` entries), their count
+ * into *count. DGGS_E_BUFFER when they do not fit: *count is then the number needed (nothing useful in out).
+ * Allocates its working memory (the polygon's edges, their bucket grid, the descent's cells) and frees it.
+ *
+ * The cells far from the polygon's boundary are decided by footprints that provably hold them, and the centres
+ * within rounding of an edge by exact arithmetic, exactly as the Python verb (dggs.polygon_to_cells): in
+ * DGGS_FILL_MODE_CENTER the result is the Python verb's, cell for cell. The boundary cells of the other modes
+ * are tested on their lng/lat polygon as dggs_cell_to_boundary draws it, with exact predicates, with the most
+ * points per edge the Python default gives a cell of that level (it chooses per cell, by geodesics): a cell
+ * whose boundary passes within that densification's error (under 1e-6 of the cell's size) of the polygon's may
+ * be judged otherwise than there. */
+dggs_error dggs_polygon_to_cells(const double *lat_lng, const int64_t *ring_sizes, int64_t num_rings, int level,
+                                 dggs_fill_mode mode, dggs_projection proj, dggs_cell *out, int64_t out_size,
+                                 int64_t *count);
+
 /* ---- end fill ---- */
 
 
