@@ -200,8 +200,7 @@ dggs_error dggs_edge_length_km(uint64_t edge, dggs_projection proj, double *out)
 
 /* Pieces of raster pixels in cells: pixel (r C + c), cell, and the planar area they share (in a face frame of the
  * unit sphere: DGGS_FACE_AREA a face; times (WGS84 area / 20) / DGGS_FACE_AREA for m^2). The caller allocates the
- * three arrays of `cap` rows; a function fills them and sets `n` to the count of pieces, which may exceed `cap`
- * (then only the first `cap` are written and it returns DGGS_E_BUFFER: call again with n rows). */
+ * three arrays of `cap` rows; `n` is the count of pieces in them. */
 typedef struct {
     int64_t *pixel;
     dggs_cell *cell;
@@ -226,12 +225,17 @@ int64_t dggs_raster_pieces_work_words(int64_t rows, int64_t cols, int64_t k, int
  * order; coarse (rows cols) gets, for an even k, each pixel's planar area drawn through every other of its points
  * (for a Richardson extrapolation of its area), NaN for pixels across a kink of the plane and for an odd k.
  * A pixel must lie within DGGS_PIXEL_MAX_RADIUS of its corners (split larger ones).
+ * Set *resume = 0 for the first call. If the pieces outgrow out->cap it returns DGGS_E_BUFFER with out->n the
+ * pieces kept (those of the pixels before *resume) and *need the room needed to go on: grow the three arrays to at
+ * least *need rows (cap), keeping their first out->n rows, and call again with the same other arguments (work,
+ * coarse, out->n and *resume as left). On DGGS_OK, out->n is the count of pieces.
  * DGGS_E_LEVEL, DGGS_E_DOMAIN (k < 1, negative rows or cols), DGGS_E_LATLNG (a point not finite or a latitude
  * outside -90..90), DGGS_E_BUFFER (work smaller than dggs_raster_pieces_work_words, or the pieces outgrew
- * out->cap: out->n is the count), DGGS_E_FAILED (a pixel too ragged for the clipping scratch). */
+ * out->cap), DGGS_E_FAILED (a pixel too ragged for the clipping scratch). */
 dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
                               int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
-                              dggs_pieces *out, double *coarse, void *work, int64_t work_words);
+                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                              int64_t *need);
 /* The fraction of a pixel's area the chords of its edges leave out, into *out: lat, lng its 16 points round it,
  * four an edge (its first corner, then at a quarter, half and three quarters), degrees. NaN where no half-edge is
  * smooth. DGGS_E_LATLNG (a point not finite or a latitude outside -90..90). */

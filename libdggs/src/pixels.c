@@ -229,7 +229,7 @@ int64_t dggs_grid_pieces_work_words(int64_t npts, int64_t k, int target) {
 dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols, const double *vlat,
                             const double *vlng, int64_t vrows, int64_t vcols, int64_t k, const uint8_t *valid,
                             int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
-                            int64_t work_words) {
+                            int64_t work_words, int64_t *resume, int64_t *need) {
     if (k < 1 || target < 0 || target > DGGS_MAX_LEVEL || rows < 0 || cols < 0 || hrows != rows + 1 ||
         hcols != cols * k + 1 || (k > 1 && (vrows != rows * k + 1 || vcols != cols + 1)))
         return DGGS_E_DOMAIN;
@@ -259,7 +259,9 @@ dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrow
     memset(near, 0, sizeof near);
     dggs_clip_work cw = {levels, width, kx, ky, kn, tx, ty, tri6, ids, nxt};
 
-    for (int64_t i = 0; i < npts; i++) { /* every point once: shared by the pixels on both sides */
+    int64_t first = *resume;
+    if (first < 0 || first > rows * cols) return DGGS_E_DOMAIN;
+    for (int64_t i = 0; i < (first ? 0 : npts); i++) { /* every point once: shared by the pixels on both sides */
         double la = i < hsize ? hlat[i] : vlat[i - hsize], lo = i < hsize ? hlng[i] : vlng[i - hsize];
         double p[3];
         dggs_geodetic_to_unit(la, lo, p);
@@ -272,11 +274,19 @@ dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrow
     }
     const double face_tri[6] = {dggs_face_corners_ccw[0][0], dggs_face_corners_ccw[0][1], dggs_face_corners_ccw[1][0],
                                 dggs_face_corners_ccw[1][1], dggs_face_corners_ccw[2][0], dggs_face_corners_ccw[2][1]};
-    for (int64_t i = 0; i < rows * cols; i++) coarse[i] = NAN;
+    for (int64_t i = 0; i < (first ? 0 : rows * cols); i++) coarse[i] = NAN;
     double root_tri[6];
     int64_t half = k >= 2 && k % 2 == 0 ? m / 2 : 0;
-    for (int64_t r = 0; r < rows; r++) {
-        for (int64_t col = 0; col < cols; col++) {
+    int64_t n0 = out->n; /* the pieces before this pixel */
+    for (int64_t r = first / (cols ? cols : 1); r < rows; r++) {
+        for (int64_t col = r == first / (cols ? cols : 1) ? first % (cols ? cols : 1) : 0; col < cols; col++) {
+            if (out->n > out->cap) { /* the last pixel's pieces did not fit: the caller grows and resumes there */
+                *need = out->n;
+                out->n = n0;
+                return DGGS_E_BUFFER;
+            }
+            n0 = out->n;
+            *resume = r * cols + col;
             if (!valid[r * cols + col]) continue;
             int64_t pixel = r * cols + col;
             dggs_pixels_ring(r, col, k, hcols, hsize, vcols, ring);
@@ -342,7 +352,14 @@ dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrow
             }
         }
     }
-    return out->n > out->cap ? DGGS_E_BUFFER : DGGS_OK;
+    if (out->n > out->cap) {
+        *need = out->n;
+        out->n = n0;
+        return DGGS_E_BUFFER;
+    }
+    *resume = rows * cols;
+    *need = out->n;
+    return DGGS_OK;
 }
 
 /* ---- the public verbs (dggs.h, "raster pixels"): checked, over the functions above ---- */
@@ -357,7 +374,8 @@ int64_t dggs_raster_pieces_work_words(int64_t rows, int64_t cols, int64_t k, int
 
 dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
                               int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
-                              dggs_pieces *out, double *coarse, void *work, int64_t work_words) {
+                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                              int64_t *need) {
     if (level < 0 || level > DGGS_MAX_LEVEL) return DGGS_E_LEVEL;
     if (k < 1 || rows < 0 || cols < 0) return DGGS_E_DOMAIN;
     int64_t hsize = (rows + 1) * (cols * k + 1), vsize = k > 1 ? (rows * k + 1) * (cols + 1) : 0;
@@ -368,9 +386,9 @@ dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const doub
         if (!good_latlng(vlat[i], vlng[i])) return DGGS_E_LATLNG;
     }
     if (work_words < dggs_raster_pieces_work_words(rows, cols, k, level)) return DGGS_E_BUFFER;
-    out->n = 0;
+    if (*resume == 0) out->n = 0;
     return dggs_grid_pieces(hlat, hlng, rows + 1, cols * k + 1, vlat, vlng, rows * k + 1, cols + 1, k, valid, rows,
-                            cols, level, out, coarse, work, work_words);
+                            cols, level, out, coarse, work, work_words, resume, need);
 }
 
 dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *out) {

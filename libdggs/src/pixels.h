@@ -51,15 +51,18 @@ int64_t dggs_grid_pieces_work_words(int64_t npts, int64_t k, int target);
  * The pixels' edges, densified with k points each: hlat, hlng (hrows = R + 1, hcols = C k + 1) along the grid
  * lines of constant row, vlat, vlng (vrows = R k + 1, vcols = C + 1) along those of constant column (degrees,
  * WGS84, row-major; each corner in both). Pixel (r, c) is number r C + c; pixels where valid (R, C) is 0 are left
- * out. The pieces (pixel, cell, area) go to `out`, each pixel's together in pixel order (counted always, written
- * while they fit); coarse (R C) is, for an even k, the planar area of each pixel drawn through every other of its
- * points, NaN for pixels across a kink of the plane (and all with an odd k).
- * Returns DGGS_OK; DGGS_E_BUFFER when the pieces outgrew out->cap (out->n is the count needed: call again with
- * that room; numba grows its arrays); DGGS_E_DOMAIN for shapes that do not match or k < 1; DGGS_E_FAILED if a
- * clipped polygon outgrew its scratch width (numba would write past it). */
+ * out. The pieces (pixel, cell, area) go to `out` from out->n on, each pixel's together in pixel order; coarse
+ * (R C) is, for an even k, the planar area of each pixel drawn through every other of its points, NaN for pixels
+ * across a kink of the plane (and all with an odd k).
+ * Where numba grows its arrays, this stops: *resume (0 on the first call) is the pixel to start from; when a
+ * pixel's pieces do not fit in out->cap it returns DGGS_E_BUFFER with out->n the pieces before that pixel,
+ * *resume that pixel and *need the room needed to hold its pieces too. The caller grows the arrays (keeping the
+ * first out->n rows) and calls again with the same work, coarse and *resume. On DGGS_OK *need = out->n.
+ * DGGS_E_DOMAIN for shapes that do not match, k < 1 or a bad *resume; DGGS_E_FAILED if a clipped polygon outgrew
+ * its scratch width (numba would write past it). */
 dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols, const double *vlat,
                             const double *vlng, int64_t vrows, int64_t vcols, int64_t k, const uint8_t *valid,
                             int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
-                            int64_t work_words);
+                            int64_t work_words, int64_t *resume, int64_t *need);
 
 #endif
