@@ -53,17 +53,76 @@ const char *dggs_error_string(dggs_error err);
 
 /* ---- ids and strings (codec.c) ---------------------------------------------------------------- */
 
+/* The id of string id `s` (a NUL-terminated face letter 'A'..'T', a level-1 digit '0'..'5', then one digit
+ * '0'..'2' per further level) into *out. DGGS_E_CELL if `s` is not a string id (empty, too long, another
+ * character); *out is then unchanged. */
+dggs_error dggs_string_to_cell(const char *s, dggs_cell *out);
+
+/* The string id of `cell` into `buf` of `size` bytes, NUL-terminated. A buffer of DGGS_MAX_CHARS + 1 bytes
+ * always suffices (a level-l id takes l + 2). DGGS_E_CELL if `cell` is not a well-formed id, DGGS_E_BUFFER if
+ * `buf` is too small (nothing written then). */
+dggs_error dggs_cell_to_string(dggs_cell cell, char *buf, size_t size);
+
+/* 1 if `cell` is a well-formed id (marker set, face 0..19, digits in range, no empty level above a filled
+ * one), else 0. */
+int dggs_is_valid_cell(dggs_cell cell);
+
+/* The level 0..DGGS_MAX_LEVEL of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_level(dggs_cell cell);
+
+/* The face 0..19 (its level-0 ancestor) of `cell`, or -1 if it is not a well-formed id. */
+int dggs_get_face(dggs_cell cell);
+
 /* ---- end ids and strings ---- */
 
 
 
 /* ---- projection (geometry.c, ivea.c) ---------------------------------------------------------- */
 
+/* Geodetic WGS84 (lat, lng) degrees -> the face (0..19) holding the point and its (x, y) in that face's
+ * frame (origin at the face centre, +y towards the face's vertex 0, on the unit authalic sphere: multiply by
+ * the authalic radius, 6371007.1809 m, for metres), by `proj` (Snyder's ISEA or IVEA) in PROJ's ISEA
+ * orientation; the grid's own point location (the authalic latitude by kernel.authalic_sincos). Longitudes
+ * wrap. Errors: DGGS_E_LATLNG (a latitude outside -90..90 or a coordinate that is not finite),
+ * DGGS_E_PROJECTION (not a dggs_projection); outputs are untouched on error. */
+dggs_error dggs_geo_to_face(double lat, double lng, dggs_projection proj, int *face, double *x, double *y);
+
+/* Face (0..19) and face-frame (x, y) on the unit authalic sphere -> geodetic WGS84 (lat, lng) degrees, longitude
+ * in -180..180, by `proj`'s closed-form inverse. Errors: DGGS_E_DOMAIN (a face outside 0..19, or a point off
+ * its face triangle by more than 1e-9 of the inradius, as dggs.geometry.snyder.inverse),
+ * DGGS_E_LATLNG (x or y not finite), DGGS_E_PROJECTION; outputs are untouched on error. */
+dggs_error dggs_face_to_geo(int face, double x, double y, dggs_projection proj, double *lat, double *lng);
+
 /* ---- end projection ---- */
 
 
 
 /* ---- points, centres, boundaries (points.c) --------------------------------------------------- */
+
+/* Most points per edge dggs_cell_to_boundary adds (Python's DENSIFY_LIMIT). */
+#define DGGS_MAX_DENSIFY 100000
+
+/* The id of the level-`level` cell holding the point (lat, lng) (WGS84 geodetic degrees; any longitude) on
+ * projection `proj`, into *out. DGGS_E_LATLNG for a latitude outside -90..90 (or NaN) or a longitude that is
+ * not finite, DGGS_E_LEVEL for a level outside 0..DGGS_MAX_LEVEL, DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_latlng_to_cell(double lat, double lng, int level, dggs_projection proj, dggs_cell *out);
+
+/* The centre of `cell` (its planar centroid on the face, mapped back by `proj`) as WGS84 degrees, latitude
+ * into *lat and longitude (-180..180) into *lng. DGGS_E_CELL if `cell` is not a well-formed id,
+ * DGGS_E_PROJECTION for another `proj`. */
+dggs_error dggs_cell_to_latlng(dggs_cell cell, dggs_projection proj, double *lat, double *lng);
+
+/* The number of points dggs_cell_to_boundary writes for `densify`: 3 (densify + 1), into *points.
+ * DGGS_E_DOMAIN for a densify outside 0..DGGS_MAX_DENSIFY. */
+dggs_error dggs_cell_to_boundary_size(int densify, size_t *points);
+
+/* The boundary of `cell`: its three corners counter-clockwise seen from outside, each followed by `densify`
+ * points along the edge (straight on the face plane), as (lat, lng) degree pairs into `lat_lng` (room for
+ * `size` points, 2 size doubles; not closed: the first point is not repeated); the count of points into
+ * *count. DGGS_E_CELL, DGGS_E_DOMAIN (densify), DGGS_E_PROJECTION, DGGS_E_BUFFER if `size` is under
+ * dggs_cell_to_boundary_size's (nothing written then). */
+dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection proj, double *lat_lng, size_t size,
+                                 size_t *count);
 
 /* ---- end points ---- */
 
@@ -76,6 +135,50 @@ const char *dggs_error_string(dggs_error err);
 
 
 /* ---- neighbours, disks, rings, distances, paths (grid.c, distance.c, paths.c) ----------------- */
+
+/* The three cells sharing an edge with `cell` (any level, 0 too), into out[0..2]: out[i] is the cell across the
+ * edge from corner i to corner i + 1 of the cell's counter-clockwise corners (as edge_neighbors in Python).
+ * Errors: DGGS_E_CELL. */
+dggs_error dggs_edge_neighbors(dggs_cell cell, dggs_cell out[3]);
+
+/* *out = 1 if cells a and b share an edge, else 0 (0 for cells of different levels and for a cell and itself).
+ * Errors: DGGS_E_CELL (either is not a cell). */
+dggs_error dggs_are_neighbor_cells(dggs_cell a, dggs_cell b, int *out);
+
+/* The ids the buffer of dggs_grid_disk must hold for radius k (0 <= k <= 2^31) around a cell of `cell`'s level:
+ * room for the largest disk there (the planar bound, or the whole level) and for the hash set the breadth-first
+ * search works in (the least power of 2 >= 64 and >= twice that). Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k). */
+dggs_error dggs_grid_disk_size(dggs_cell cell, int64_t k, int64_t *size);
+/* The cells within k edge steps of `cell` (the cell included), sorted ascending, into out[0..*count); the rest
+ * of out[0..size) is set to 0 (it is the work space). `size` >= dggs_grid_disk_size(cell, k). Allocates nothing.
+ * Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k), DGGS_E_BUFFER (size too small). */
+dggs_error dggs_grid_disk(dggs_cell cell, int64_t k, dggs_cell *out, int64_t size, int64_t *count);
+
+/* The ids the buffer of dggs_grid_ring must hold for radius k (0 <= k <= 2^31) around a cell of `cell`'s level:
+ * the largest ring there (w, the planar bound or the whole level) and the work space of three rings and their
+ * candidates (6 max(w, 6)). Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k). */
+dggs_error dggs_grid_ring_size(dggs_cell cell, int64_t k, int64_t *size);
+/* The cells exactly k edge steps from `cell`, sorted ascending, into out[0..*count) (an empty ring past the far
+ * side of the level: *count = 0); the rest of out[0..size) is set to 0. `size` >= dggs_grid_ring_size(cell, k).
+ * Allocates nothing. Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k), DGGS_E_BUFFER (size too small). */
+dggs_error dggs_grid_ring(dggs_cell cell, int64_t k, dggs_cell *out, int64_t size, int64_t *count);
+
+/* The number of edge steps on a shortest path between cells a and b of one level: exact at any range, in
+ * O(level) time (mirror lines of the level's planar arrangement over the straight face strips between them;
+ * docs/grid.md, "Distances"). A pair no strip serves (none known) falls back on a breadth-first search within
+ * 4096 steps, which allocates its work space (708 KB) with malloc and frees it. Errors: DGGS_E_CELL,
+ * DGGS_E_LEVEL_MISMATCH, DGGS_E_FAILED (the fallback search found no path within 4096 steps, or malloc
+ * failed). */
+dggs_error dggs_grid_distance(dggs_cell a, dggs_cell b, int64_t *out);
+
+/* The cells on the shortest path from a to b (both included): dggs_grid_distance(a, b) + 1. Errors: as
+ * dggs_grid_distance. */
+dggs_error dggs_grid_path_cells_size(dggs_cell a, dggs_cell b, int64_t *size);
+/* A shortest path of cells from a to b, both ends included, each an edge neighbour of the one before, into
+ * out[0..n) (n = dggs_grid_path_cells_size(a, b)): at each cell the first neighbour (in dggs_edge_neighbors
+ * order) one step nearer. Allocates only as dggs_grid_distance does. Errors: as dggs_grid_distance,
+ * DGGS_E_BUFFER (size < n). */
+dggs_error dggs_grid_path_cells(dggs_cell a, dggs_cell b, dggs_cell *out, int64_t size);
 
 /* ---- end grid ---- */
 

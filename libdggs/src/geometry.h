@@ -3,7 +3,14 @@
  * operation (the ids must equal the Python kernel's bit for bit).
  *
  * Tables (tables.h, written by tools/gen_tables.py from the Python geometry floor) hold PROJ's ISEA
- * orientation, the authalic series and the Split (2:6) matrices and jump table. */
+ * orientation, the authalic series and the Split (2:6) matrices and jump table.
+ *
+ * Python names: kernel.X is dggs_X, except kernel.face_forward / forward_unit / inverse_unit, which are
+ * dggs_snyder_face_forward / dggs_snyder_forward_unit / dggs_snyder_inverse_unit; ivea.face_forward /
+ * forward_unit / face_inverse / natural_forward / natural_inverse are dggs_ivea_face_forward /
+ * dggs_ivea_forward_unit / dggs_ivea_inverse_unit / dggs_ivea_natural_forward / dggs_ivea_natural_inverse.
+ * `face` must be 0..19 (not checked here; the public dggs_face_to_geo checks it). Pure functions of their
+ * arguments and static const tables: thread-safe. */
 #ifndef DGGS_GEOMETRY_H
 #define DGGS_GEOMETRY_H
 
@@ -22,6 +29,8 @@ void dggs_geodetic_to_unit(double lat, double lng, double p[3]);
 
 /* Snyder's forward and inverse in any orientation: `centres` is (20, 3), `frames` (20, 3, 3), row-major. */
 int dggs_nearest_face(const double *centres, double px, double py, double pz);
+/* Snyder's forward inside one 120-degree sector: (rho sin Az', rho cos Az') (kernel.sector_forward). */
+void dggs_sector_forward(double sin_az, double cos_az, double sin_half_z, double *x, double *y);
 void dggs_snyder_face_forward(const double *frames, int face, double px, double py, double pz, double *x, double *y);
 int dggs_snyder_forward_unit(const double *centres, const double *frames, double px, double py, double pz, double *x,
                              double *y);
@@ -31,6 +40,9 @@ void dggs_ivea_face_forward(const double *frames, int face, double px, double py
 int dggs_ivea_forward_unit(const double *centres, const double *frames, double px, double py, double pz, double *x,
                            double *y);
 void dggs_ivea_inverse_unit(const double *frames, int face, double x, double y, double p[3]);
+/* IVEA's map of the natural triangle (ivea.natural_forward / natural_inverse): unit (c, n, e) <-> planar (x, y). */
+void dggs_ivea_natural_forward(double c, double n, double e, double *x, double *y);
+void dggs_ivea_natural_inverse(double x, double y, double p[3]);
 
 /* The standard grid (PROJ's ISEA orientation) on either projection: unit vector -> face and face-frame (x, y)
  * (the face returned), the same for a given face, and face-frame (x, y) -> unit vector. */
