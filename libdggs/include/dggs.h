@@ -217,7 +217,7 @@ dggs_error dggs_cells_drop_covered(const dggs_cell *cells, size_t n, uint8_t *ke
 /* The number of descendants of `cell` at `level` (finer than the cell, at most DGGS_MAX_LEVEL) with an edge on
  * the cell's outline, into *size. DGGS_E_CELL, DGGS_E_LEVEL (a level outside the cell's level + 1 .. 28). */
 dggs_error dggs_boundary_descendants_size(dggs_cell cell, int level, int64_t *size);
-/* Those descendants, in increasing id order, into out (size ids, at least dggs_boundary_descendants_size's).
+/* Those descendants (depth first, not sorted), into out (size ids, at least dggs_boundary_descendants_size's).
  * DGGS_E_CELL, DGGS_E_LEVEL, DGGS_E_BUFFER. */
 dggs_error dggs_boundary_descendants(dggs_cell cell, int level, dggs_cell *out, int64_t size);
 

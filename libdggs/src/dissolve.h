@@ -33,7 +33,7 @@ void dggs_drop_covered(const uint64_t *ids, int64_t n, uint8_t *keep);
 bool dggs_covered(const uint64_t *cells, int64_t n, uint64_t y);
 /* The stack _descend needs: 6 (level - top + 1) ids, at most this many (levels 0..28). */
 #define DGGS_DESCEND_STACK (6 * (DGGS_MAX_LEVEL + 1))
-/* _descend: the boundary descendants of `cell` at `level` (> its level, <= 28), depth first in id order; the
+/* _descend: the boundary descendants of `cell` at `level` (> its level, <= 28), depth first (not sorted); the
  * first min(count, cap) written to out (out may be NULL with cap 0: count only, as numba's write=False);
  * returns their count, or -1 for a level not finer than the cell's or past 28. */
 int64_t dggs_dissolve_descend(uint64_t cell, int level, uint64_t *out, int64_t cap);
