@@ -180,19 +180,26 @@ def main() -> int:
     """Run every comparison; 0 if all equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0, help="multiply the number of random sets")
+    ap.add_argument("--threads", type=int, default=2, help="threads of the C batch loops (dggs._core.set_threads)")
     args = ap.parse_args()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(20240601)
     t0 = time.time()
-    sets = int(10000 * args.scale)
+    sets = int(20000 * args.scale)
     for _ in range(sets):
         compare_set(random_set(rng), rng)
+    # compacted larger blobs: many coarse cells standing for their boundary descendants
+    for _ in range(int(300 * args.scale)):
+        lv = int(rng.integers(4, 24))
+        fine = dggs.grid_disk(dggs.latlng_to_cell(*random_point(rng), lv), int(rng.integers(5, 25)))
+        compare_set(ids_of(dggs.compact_cells(fine)), rng)
     # a large blob and a large compacted blob: the bulk of the cells
     for level, k in ((9, 300), (12, 250), (16, 200)):
         c = dggs.latlng_to_cell(*random_point(rng), level)
         fine = ids_of(dggs.grid_disk(c, k))
         compare_set(fine, rng)
         compare_set(ids_of(dggs.compact_cells(fine)), rng)
-    print(f"{sets + 6:,d} cell sets")
+    print(f"{sets + 6 + int(300 * args.scale):,d} cell sets")
     for name, count in COUNTS.items():
         print(f"{name:36s} {count:>10,d} items  {'DIFFERENT' if name in FAILED else 'equal'}")
     print(f"{time.time() - t0:.1f} s; {'ALL EQUAL' if not FAILED else 'DIFFERENT: ' + ', '.join(FAILED)}")

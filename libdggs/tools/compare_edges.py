@@ -99,7 +99,9 @@ def main() -> int:
     """Run every comparison; 0 if all equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0, help="multiply the random input sizes")
+    ap.add_argument("--threads", type=int, default=2, help="threads of the C batch loops (dggs._core.set_threads)")
     args = ap.parse_args()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(20240531)
     t0 = time.time()
     n = int(400_000 * args.scale)

@@ -160,7 +160,9 @@ def main() -> int:
     """Run every comparison; 0 if all equal."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--scale", type=float, default=1.0, help="multiply the number of random rasters")
+    ap.add_argument("--threads", type=int, default=2, help="threads of the C batch loops (dggs._core.set_threads)")
     args = ap.parse_args()
+    core.set_threads(args.threads)
     rng = np.random.default_rng(20240602)
     t0 = time.time()
     rasters = int(6000 * args.scale)
