@@ -167,8 +167,8 @@ dggs_error dggs_grid_ring(dggs_cell cell, int64_t k, dggs_cell *out, int64_t siz
  * O(level) time (mirror lines of the level's planar arrangement over the straight face strips between them;
  * docs/grid.md, "Distances"). A pair no strip serves (none known) falls back on a breadth-first search within
  * 4096 steps, which allocates its work space (708 KB) with malloc and frees it. Errors: DGGS_E_CELL,
- * DGGS_E_LEVEL_MISMATCH, DGGS_E_FAILED (the fallback search found no path within 4096 steps, or malloc
- * failed). */
+ * DGGS_E_LEVEL_MISMATCH, DGGS_E_FAILED (the fallback search found no path within 4096 steps, a ring of it
+ * outgrew its work space, or malloc failed: none of them ever seen). */
 dggs_error dggs_grid_distance(dggs_cell a, dggs_cell b, int64_t *out);
 
 /* The cells on the shortest path from a to b (both included): dggs_grid_distance(a, b) + 1. Errors: as

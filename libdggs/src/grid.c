@@ -263,6 +263,13 @@ int64_t dggs_ring_width(int64_t k, int level) {
     return b < cells ? b : cells;
 }
 
+/* disk_of's checks, before it runs one row of disk. */
+int64_t dggs_disk_of_width(uint64_t cell, int64_t k, int64_t max_cells) {
+    if (k > 64 || !dggs_is_valid(cell)) return -1;
+    int64_t width = dggs_disk_width(k, dggs_level_of(cell));
+    return width > max_cells ? -1 : width;
+}
+
 /* One id of disk_sizes: rings j - 1 and j in two buffers of r ids, ring j + 1 and its candidates in two of 3 r
  * (the numba code allocates 3 * len(cur) for each, so next_ring never runs out of room there either). */
 int64_t dggs_disk_size_count(uint64_t cell, int64_t k, int64_t cap, uint64_t *work, int64_t work_len) {

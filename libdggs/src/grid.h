@@ -56,6 +56,10 @@ int64_t dggs_ring_row(uint64_t cell, int64_t k, uint64_t *out, int64_t out_width
 /* Scratch ids dggs_ring_row needs for rows of out_width: 6 * max(out_width, 6) (3 rings + candidates). */
 int64_t dggs_ring_work_size(int64_t out_width);
 
+/* The head of disk_of (the single-id entry): the row width its disk needs (disk_width), or -1 for a miss: no id,
+ * k over 64 (the general path takes any k), or a width over max_cells (the general path counts the real disk). */
+int64_t dggs_disk_of_width(uint64_t cell, int64_t k, int64_t max_cells);
+
 /* level_cells: cells at `level`: 20 at level 0, 120 * 3^(level - 1) after. */
 int64_t dggs_level_cells(int level);
 /* disk_width: most cells within k steps of a cell at `level` (the planar bound, or the whole level). */

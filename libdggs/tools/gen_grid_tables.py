@@ -116,6 +116,7 @@ def _doubles(name: str, a: np.ndarray) -> str:
 
 
 def render() -> str:
+    """The text of grid_tables.h."""
     assert t.CHILD_FLIP.tolist() == [True, False, True]  # the orientation parity counts digits 0 and 2
     parts = [
         HEAD,
@@ -141,6 +142,7 @@ def render() -> str:
 
 
 def main() -> int:
+    """Write (or --check) grid_tables.h."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--check", action="store_true", help="compare instead of writing")
     ap.add_argument("--out", default=OUT)
