@@ -323,6 +323,59 @@ dggs_error dggs_line_to_cells(const double *latlng, size_t n, int level, dggs_pr
 
 /* ---- dissolve (dissolve.c) --------------------------------------------------------------------- */
 
+/* The outline of a set of cells (dggs.cells_to_polygons' id work and its rings' points), in five steps, each
+ * into the caller's buffers:
+ *   1. dggs_cells_drop_covered: sort the set (ascending, no duplicates) and drop the cells inside others;
+ *   2. dggs_boundary_descendants_size / dggs_boundary_descendants: replace each cell coarser than the set's
+ *      finest level by its descendants at that level with an edge on its outline, and sort them with the rest
+ *      (the "fine" cells);
+ *   3. dggs_outline_edge_mask: the edges (fine cell, column) of the fine cells on the outline;
+ *   4. dggs_outline_chain: those edges, sorted by cell then column, chained into rings with the set on their left;
+ *   5. dggs_outline_points_size / dggs_outline_points: the rings' (lat, lng) points, each edge densified, a pole
+ *      on a ring as two points at latitude +-90, an antimeridian crossing as a point at longitude +-180.
+ * An empty outline (step 3 finds no edge) is the whole globe. */
+
+/* keep[i] = 1 where cells[i] is not inside an earlier cell of the array (a descendant of it), else 0.
+ * cells: n ids, strictly increasing. DGGS_E_CELL for a non-cell, DGGS_E_DOMAIN if not strictly increasing. */
+dggs_error dggs_cells_drop_covered(const dggs_cell *cells, size_t n, uint8_t *keep);
+
+/* The number of descendants of `cell` at `level` (finer than the cell, at most DGGS_MAX_LEVEL) with an edge on
+ * the cell's outline, into *size. DGGS_E_CELL, DGGS_E_LEVEL (a level outside the cell's level + 1 .. 28). */
+dggs_error dggs_boundary_descendants_size(dggs_cell cell, int level, int64_t *size);
+/* Those descendants (depth first, not sorted), into out (size ids, at least dggs_boundary_descendants_size's).
+ * DGGS_E_CELL, DGGS_E_LEVEL, DGGS_E_BUFFER. */
+dggs_error dggs_boundary_descendants(dggs_cell cell, int level, dggs_cell *out, int64_t size);
+
+/* mask[3 i + col] = 1 where edge `col` (corner col to col + 1, counter-clockwise) of fine[i] is on the outline of
+ * `cells` (the cell across it is not covered by them), else 0. cells: n_cells strictly increasing ids, none inside
+ * another (step 1); fine: n_fine cells, all at one level at least as fine as every cell of `cells`.
+ * DGGS_E_CELL, DGGS_E_DOMAIN (cells not increasing), DGGS_E_LEVEL_MISMATCH (a fine cell coarser than a cell or
+ * fine cells of two levels). */
+dggs_error dggs_outline_edge_mask(const dggs_cell *fine, size_t n_fine, const dggs_cell *cells, size_t n_cells,
+                                  uint8_t *mask);
+
+/* The m outline edges (edge_cell[i], edge_col[i]), sorted by cell then column, chained into rings: order[0..m)
+ * gets the edges' indices ring after ring, starts[0..*rings] the start of each ring in order and, last, m
+ * (starts holds m + 1 entries); visited is m bytes of scratch. cells as for dggs_outline_edge_mask.
+ * DGGS_E_CELL, DGGS_E_DOMAIN (edges not sorted, a column outside 0..2), DGGS_E_FAILED (an edge whose successor
+ * is not among them: not the outline of `cells`). */
+dggs_error dggs_outline_chain(const dggs_cell *edge_cell, const int64_t *edge_col, size_t m, const dggs_cell *cells,
+                              size_t n_cells, uint8_t *visited, int64_t *order, int64_t *starts, size_t *rings);
+
+/* Rows of (lat, lng) dggs_outline_points may write for m edges of steps[i] segments each (an edge's densify + 1,
+ * 1..100001), into *size. DGGS_E_DOMAIN. */
+dggs_error dggs_outline_points_size(const int64_t *steps, size_t m, int64_t *size);
+/* The rings' (lat, lng) points (degrees) into latlng (rows of 2 doubles, `size` rows, at least
+ * dggs_outline_points_size's): edge_cell, edge_col, steps the m edges in ring order (edge_cell[order[i]] of step
+ * 4) and their segments (densify + 1), starts the rings' starts (rings + 1 entries, the last m); ends[r] gets one
+ * past ring r's last row, and corner[row] (size bytes) whether the row is a corner of the outline (not a pole, a
+ * crossing or a densified point). Rings are not closed. scratch: scratch_len >= max(steps) + 2 doubles.
+ * DGGS_E_CELL, DGGS_E_DOMAIN (a step outside 1..100001, a column outside 0..2, starts not increasing from 0 to m),
+ * DGGS_E_PROJECTION, DGGS_E_BUFFER. */
+dggs_error dggs_outline_points(const dggs_cell *edge_cell, const int64_t *edge_col, const int64_t *steps, size_t m,
+                               const int64_t *starts, size_t rings, dggs_projection proj, double *latlng, int64_t size,
+                               uint8_t *corner, int64_t *ends, double *scratch, size_t scratch_len);
+
 /* ---- end dissolve ---- */
 
 
@@ -348,11 +401,92 @@ dggs_error dggs_cell_to_local_ij(dggs_cell anchor, dggs_cell cell, int64_t *i, i
  * anchor), DGGS_E_DOMAIN (a pair naming no cell: not a centroid of the lattice, or out of range). */
 dggs_error dggs_local_ij_to_cell(dggs_cell anchor, int64_t i, int64_t j, dggs_cell *cell);
 
+/* -- directed edges (edges.c) --
+ * A directed edge from a cell at level l < 28 across its side d (0-2: corner d to corner d + 1 of its
+ * counter-clockwise corners, neighbour column d) is the id (1 << 63) | cell | (d + 1) << shift(l + 1): with the
+ * sign bit cleared, a valid cell one level finer (its "shadow"), whose parent is the origin. Level-28 cells have
+ * no directed edges. */
+
+/* Chords per edge (and twice as many, extrapolated) of the edge lengths: within 1e-8 of the length. */
+#define DGGS_EDGE_LENGTH_PIECES 16
+
+/* Whether `edge` is a directed edge id: the sign bit set and the rest a valid cell of level >= 1 (a level-1
+ * shadow's digit 0-2). Never fails. */
+int dggs_is_valid_directed_edge(uint64_t edge);
+/* The directed edge from `origin` to its edge neighbour `destination`. DGGS_E_CELL, DGGS_E_LEVEL (origin at
+ * level 28), DGGS_E_DOMAIN (not edge neighbours: another level, the cell itself, not across an edge). */
+dggs_error dggs_cells_to_directed_edge(dggs_cell origin, dggs_cell destination, uint64_t *out);
+/* out[0] = the origin, out[1] = the destination of a directed edge. DGGS_E_EDGE. */
+dggs_error dggs_directed_edge_to_cells(uint64_t edge, dggs_cell out[2]);
+/* The origin of a directed edge. DGGS_E_EDGE. */
+dggs_error dggs_get_directed_edge_origin(uint64_t edge, dggs_cell *out);
+/* The destination of a directed edge (the origin's neighbour across it). DGGS_E_EDGE. */
+dggs_error dggs_get_directed_edge_destination(uint64_t edge, dggs_cell *out);
+/* The three directed edges from `cell`, out[d] across side d. DGGS_E_CELL, DGGS_E_LEVEL (level 28). */
+dggs_error dggs_origin_to_directed_edges(dggs_cell cell, uint64_t out[3]);
+/* The edge from the destination back to the origin. DGGS_E_EDGE. */
+dggs_error dggs_reverse_directed_edge(uint64_t edge, uint64_t *out);
+/* The (lat, lng) points (degrees) of a directed edge from its first corner to its second with `densify` points
+ * between (0..100000), into latlng (rows of 2 doubles, `size` rows >= densify + 2). DGGS_E_EDGE, DGGS_E_DOMAIN,
+ * DGGS_E_PROJECTION, DGGS_E_BUFFER. */
+dggs_error dggs_directed_edge_to_boundary(uint64_t edge, int densify, dggs_projection proj, double *latlng,
+                                          size_t size);
+/* The length of a directed edge's true curve (a straight segment on its face, mapped by the projection): on the
+ * unit authalic sphere (radians), on WGS84 (metres, kilometres): chord sums of DGGS_EDGE_LENGTH_PIECES and twice
+ * as many pieces, extrapolated. DGGS_E_EDGE, DGGS_E_PROJECTION. */
+dggs_error dggs_edge_length_rads(uint64_t edge, dggs_projection proj, double *out);
+dggs_error dggs_edge_length_m(uint64_t edge, dggs_projection proj, double *out);
+dggs_error dggs_edge_length_km(uint64_t edge, dggs_projection proj, double *out);
+/* -- end directed edges -- */
+
 /* ---- end local ---- */
 
 
 
 /* ---- raster pixels (clip.c, pixels.c) ---------------------------------------------------------- */
+
+/* Pieces of raster pixels in cells: pixel (r C + c), cell, and the planar area they share (in a face frame of the
+ * unit sphere: DGGS_FACE_AREA a face; times (WGS84 area / 20) / DGGS_FACE_AREA for m^2). The caller allocates the
+ * three arrays of `cap` rows; `n` is the count of pieces in them. */
+typedef struct {
+    int64_t *pixel;
+    dggs_cell *cell;
+    double *area;
+    int64_t cap;
+    int64_t n;
+} dggs_pieces;
+
+/* Planar area of a face triangle in the unit-sphere face frame (a twentieth of the sphere's 4 pi). */
+#define DGGS_FACE_AREA 0x1.41b2f769cf0e0p-1
+/* Most arc (radians) from a pixel's corners to any of its points dggs_raster_pieces takes (10 degrees). */
+#define DGGS_PIXEL_MAX_RADIUS 0x1.657184ae74487p-3
+
+/* 8-byte words of scratch (`work`) dggs_raster_pieces needs for rows x cols pixels of k points an edge at `level`
+ * (0 for arguments out of their domain). */
+int64_t dggs_raster_pieces_work_words(int64_t rows, int64_t cols, int64_t k, int level);
+/* The cells at `level` each valid pixel of a rows x cols grid meets, and the planar area they share (each pixel
+ * cut along the cells' edges in Snyder's face planes: exact for its chord polygon). The pixels' edges, densified
+ * with k >= 1 points each (degrees, WGS84, row-major): hlat, hlng ((rows + 1) x (cols k + 1)) along the grid lines
+ * of constant row; vlat, vlng ((rows k + 1) x (cols + 1)) along those of constant column (unused for k = 1; each
+ * corner in both). valid: rows x cols bytes (0: no pieces). The pieces go to `out`, each pixel's together in pixel
+ * order; coarse (rows cols) gets, for an even k, each pixel's planar area drawn through every other of its points
+ * (for a Richardson extrapolation of its area), NaN for pixels across a kink of the plane and for an odd k.
+ * A pixel must lie within DGGS_PIXEL_MAX_RADIUS of its corners (split larger ones).
+ * Set *resume = 0 for the first call. If the pieces outgrow out->cap it returns DGGS_E_BUFFER with out->n the
+ * pieces kept (those of the pixels before *resume) and *need the room needed to go on: grow the three arrays to at
+ * least *need rows (cap), keeping their first out->n rows, and call again with the same other arguments (work,
+ * coarse, out->n and *resume as left). On DGGS_OK, out->n is the count of pieces.
+ * DGGS_E_LEVEL, DGGS_E_DOMAIN (k < 1, negative rows or cols), DGGS_E_LATLNG (a point not finite or a latitude
+ * outside -90..90), DGGS_E_BUFFER (work smaller than dggs_raster_pieces_work_words, or the pieces outgrew
+ * out->cap), DGGS_E_FAILED (a pixel too ragged for the clipping scratch). */
+dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
+                              int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
+                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                              int64_t *need);
+/* The fraction of a pixel's area the chords of its edges leave out, into *out: lat, lng its 16 points round it,
+ * four an edge (its first corner, then at a quarter, half and three quarters), degrees. NaN where no half-edge is
+ * smooth. DGGS_E_LATLNG (a point not finite or a latitude outside -90..90). */
+dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *out);
 
 /* ---- end pixels ---- */
 
