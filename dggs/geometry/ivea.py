@@ -32,6 +32,10 @@ reads ``k sin rho = sin(rho - A) = sin rho cos A - cos rho sin A``, so
 so the denominator never vanishes).  Then ``VD`` from ``rho``, and ``VP`` from
 ``sin(VP / 2) = s sin(VD / 2)``.  No iteration.
 
+The per-point maps are compiled C (``libdggs/src/ivea.c``), re-exported here from :mod:`dggs._core`; the
+module constants below are what ``libdggs/tools/gen_tables.py`` copies into the C core (run it after changing
+them).
+
 Examples
 --------
 >>> face, x, y = forward(0.0, 0.0)
@@ -48,14 +52,29 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit
 
+from dggs._core import ivea_face_forward as face_forward
+from dggs._core import ivea_face_inverse as face_inverse
+from dggs._core import ivea_forward_rad, ivea_inverse_deg
+from dggs._core import ivea_forward_unit as forward_unit
+from dggs._core import ivea_natural_forward as natural_forward
+from dggs._core import ivea_natural_inverse as natural_inverse
 from dggs.geometry._checked import EllipsoidProjection, checked_forward, checked_inverse
-from dggs.geometry.constants import FACE_CIRCUMRADIUS, FACE_INRADIUS, G_ARC, ROT_COS, ROT_SIN, SQRT3, TINY
+from dggs.geometry.constants import FACE_CIRCUMRADIUS, FACE_INRADIUS, G_ARC, SQRT3
 from dggs.geometry.icosahedron import ISEA, Orientation
-from dggs.geometry.kernel import face_loops, nearest_face, sector_of
 
-__all__ = ["forward", "inverse", "Projection", "face_forward", "face_inverse", "NATURAL_AREA", "VM_ARC"]
+__all__ = [
+    "forward",
+    "inverse",
+    "Projection",
+    "face_forward",
+    "face_inverse",
+    "forward_unit",
+    "natural_forward",
+    "natural_inverse",
+    "NATURAL_AREA",
+    "VM_ARC",
+]
 
 _H = 0.5 * SQRT3
 #: Area of the natural triangle on the unit sphere: 36 + 60 + 90 - 180 degrees (Girard).
@@ -91,97 +110,10 @@ _T = (float(_TM[0]), float(_TM[1]), float(_TM[2]), float(_TN[0]), float(_TN[1]),
 _RV = FACE_CIRCUMRADIUS
 _RM = FACE_INRADIUS
 
-
-# ----------------------------------------------------------------------------
-# The compiled map of the natural triangle (c, n, e) <-> (x, y)
-# ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True)
-def natural_forward(c: float, n: float, e: float):
-    """Unit vector (c, n, e) in the natural triangle (azimuth 0..60) -> planar (x, y) (van Leeuwen & Strebe 2006)."""
-    det = _VX * (_MY * e - _MZ * n) - _VY * (_MX * e - _MZ * c) + _VZ * (_MX * n - _MY * c)
-    sin_part = _SGN * det  # |V x M| |V x P| sin rho
-    cos_part = _MX * c + _MY * n + _MZ * e - (_VX * c + _VY * n + _VZ * e) * _VM  # ... cos rho
-    h = math.hypot(sin_part, cos_part)
-    if h == 0.0:  # P = V (or its antipode)
-        return 0.0, _RV
-    rho = math.atan2(sin_part, cos_part)
-    cos_rho = cos_part / h
-    area = rho - math.asin(COS_VM * (sin_part / h))  # rho + delta - pi / 2, delta by Napier's rule
-    cos_vd = cos_rho / math.sqrt(cos_rho * cos_rho + _TAN_VM2)  # tan VD = tan VM / cos rho
-    half_vp = 0.5 * math.sqrt((c - _VX) ** 2 + (n - _VY) ** 2 + (e - _VZ) ** 2)  # sin(VP / 2)
-    s = half_vp / math.sqrt(0.5 * (1.0 - cos_vd))  # the dice: |V'P'| / |V'D'|
-    t = area / NATURAL_AREA  # the slice: |M'D'| / |M'C'|
-    dx, dy = (1.0 - t) * _RM * _H, (1.0 - t) * _RM * 0.5
-    return s * dx, _RV + s * (dy - _RV)
-
-
-@njit(cache=True, nogil=True)
-def natural_inverse(x: float, y: float):
-    """Planar (x, y) in the natural triangle -> unit vector (c, n, e): the closed-form inverse (docs/grid.md)."""
-    qx, qy = x, y - _RV
-    s = (0.5 * qx - _H * qy) / (_H * _RV)  # V' + q / s lies on the line M'C' (azimuth 60)
-    if s <= TINY:
-        return _VX, _VY, _VZ
-    lam = (qx / s) * _H + (_RV + qy / s) * 0.5  # |C'D'|
-    area = (1.0 - lam / _RM) * NATURAL_AREA
-    sin_a, cos_a = math.sin(area), math.cos(area)
-    rho = math.atan2(sin_a, cos_a - COS_VM)  # tan rho = sin A / (cos A - cos VM)
-    sin_rho, cos_rho = math.sin(rho), math.cos(rho)
-    cos_vd = cos_rho / math.sqrt(cos_rho * cos_rho + _TAN_VM2)
-    half = min(s * math.sqrt(0.5 * (1.0 - cos_vd)), 1.0)  # sin(VP / 2)
-    cos_x = 1.0 - 2.0 * half * half
-    sin_x = 2.0 * half * math.sqrt(1.0 - half * half)
-    a, b = sin_x * cos_rho, sin_x * sin_rho
-    return (cos_x * _VX + a * _T[0] + b * _T[3], cos_x * _VY + a * _T[1] + b * _T[4],
-            cos_x * _VZ + a * _T[2] + b * _T[5])
-
-
-@njit(cache=True, nogil=True)
-def face_forward(frames: np.ndarray, face: int, px: float, py: float, pz: float):
-    """Unit vector -> ``(x, y)`` in the frame of ``face`` (as :func:`.kernel.face_forward`, by IVEA)."""
-    c = frames[face, 0, 0] * px + frames[face, 0, 1] * py + frames[face, 0, 2] * pz
-    n = frames[face, 1, 0] * px + frames[face, 1, 1] * py + frames[face, 1, 2] * pz
-    e = frames[face, 2, 0] * px + frames[face, 2, 1] * py + frames[face, 2, 2] * pz
-    k = sector_of(e, n)  # the 120-degree sector by the azimuth of (east, north)
-    rc, rs = ROT_COS[k], ROT_SIN[k]
-    e, n = e * rc - n * rs, n * rc + e * rs  # turned by -120 k degrees
-    mirror = 0.5 * e - _H * n > 0.0  # azimuth past 60: the mirror image across azimuth 60
-    if mirror:
-        n, e = -0.5 * n + _H * e, _H * n + 0.5 * e
-    x, y = natural_forward(c, n, e)
-    if mirror:
-        y, x = -0.5 * y + _H * x, _H * y + 0.5 * x
-    return x * rc + y * rs, y * rc - x * rs
-
-
-@njit(cache=True, nogil=True)
-def forward_unit(centres: np.ndarray, frames: np.ndarray, px: float, py: float, pz: float):
-    """Unit vector -> ``(face, x, y)``: the nearest face (as :func:`.kernel.forward_unit`), then IVEA."""
-    face = nearest_face(centres, px, py, pz)
-    return (face, *face_forward(frames, face, px, py, pz))
-
-
-@njit(cache=True, nogil=True)
-def face_inverse(frames: np.ndarray, face: int, x: float, y: float):
-    """Face-frame ``(x, y)`` -> unit vector (as :func:`.kernel.inverse_unit`, by IVEA)."""
-    k = sector_of(x, y)
-    rc, rs = ROT_COS[k], ROT_SIN[k]
-    x, y = x * rc - y * rs, y * rc + x * rs
-    mirror = 0.5 * x - _H * y > 0.0
-    if mirror:
-        y, x = -0.5 * y + _H * x, _H * y + 0.5 * x
-    c, n, e = natural_inverse(x, y)
-    if mirror:
-        n, e = -0.5 * n + _H * e, _H * n + 0.5 * e
-    n, e = n * rc - e * rs, e * rc + n * rs
-    ox = c * frames[face, 0, 0] + n * frames[face, 1, 0] + e * frames[face, 2, 0]
-    oy = c * frames[face, 0, 1] + n * frames[face, 1, 1] + e * frames[face, 2, 1]
-    oz = c * frames[face, 0, 2] + n * frames[face, 1, 2] + e * frames[face, 2, 2]
-    return ox, oy, oz
-
-
-#: The batch loops (:func:`.kernel.face_loops`) over IVEA's per-point maps.
-forward_rad, inverse_deg = face_loops(forward_unit, face_inverse, "ivea")
+#: The batch loops over IVEA's per-point maps, called as :data:`.kernel.forward_rad` / ``inverse_deg`` are
+#: (static methods, so that :attr:`Projection.forward_rad` is not bound as a method).
+forward_rad = staticmethod(ivea_forward_rad)
+inverse_deg = staticmethod(ivea_inverse_deg)
 
 
 # ----------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-"""Tables for the compiled grid graph (:mod:`dggs.index._kernel.grid`), built once at import from the geometry.
+"""Tables of the grid graph (:mod:`dggs.index._kernel.grid`), built at import from the geometry; compiled C helpers.
 
 Also the largest disks and rings (:func:`disk_size_bound`,
 :func:`ring_size_bound`) and the planar charts that give exact distances
@@ -32,8 +32,10 @@ icosahedron (:data:`dggs.geometry.icosahedron.ISEA`), never typed in:
   families of the Split (2:6) arrangement (:data:`LINE_NORMALS`,
   :func:`line_spacings`).
 
-Numba freezes these arrays into the cached machine code: they depend on the
-geometry only, which this module's source pins.
+The C core holds the same arrays as static data (libdggs/src/grid_tables.h,
+written from this module by libdggs/tools/gen_grid_tables.py, floats as hex
+literals); :func:`chart_distance`, :func:`disk_size_bound` and
+:func:`ring_size_bound` are compiled C, libdggs/src/grid_tables.c.
 
 Edge labels of a 30-60-90 cell with corners A (30°), B (60°), C (90°):
 ``a = BC`` (0), ``b = CA`` (1), ``c = AB`` (2): each label names the corner
@@ -42,16 +44,12 @@ the edge does not touch.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
-from numba import njit
 
+from dggs._core import chart_distance, disk_size_bound, ring_size_bound  # compiled C, libdggs/src/grid_tables.c
 from dggs.geometry import split26
 from dggs.geometry.constants import FACE_EDGE, FACE_INRADIUS
 from dggs.geometry.icosahedron import ISEA
-
-from .bits import MAX_LEVEL
 
 EA, EB, EC = 0, 1, 2
 #: The two corners (indices into A, B, C) of each edge label.
@@ -253,127 +251,6 @@ for _arr in (STEP, BLOCK, CHILD_FLIP, L1_CCW, L1_TABLE, FACE_ADJ, CHART_ROT, CHA
     _arr.setflags(write=False)
 
 
-# ---------------------------------------------------------------------------
-# Disk and ring sizes
-# ---------------------------------------------------------------------------
-@njit(cache=True, nogil=True)
-def ring_size_bound(k: int) -> int:
-    """Most cells exactly ``k`` steps from a cell, at any level.
-
-    Away from the icosahedron vertices every level is the truncated
-    trihexagonal (4.6.12) graph, whose rings hold 1, 3, 5, 7, 9, 12, 15, ...
-    cells: ``12 m + (0, 3, 5, 7, 9)[r]`` for ``k = 5 m + r >= 1`` (period 5, so
-    ``2.4 k`` on average, not ``2 k + 1`` past k = 4).  Around the 12 vertices
-    (10 cells meet there, not 12) rings are no larger; only level 0 (the
-    dodecahedron graph: 1, 3, 6, 6, 3, 1) exceeds it, at k = 2.  Checked for
-    every cell and every k at levels 0-8.
-    """
-    if k == 0:
-        return 1
-    if k == 2:
-        return 6
-    m, r = divmod(k, 5)
-    return 12 * m + (0, 3, 5, 7, 9)[r]
-
-
-@njit(cache=True, nogil=True)
-def disk_size_bound(k: int) -> int:
-    """Most cells within ``k`` steps of a cell, at any level: 1, 4, 10, 16, 25, 37, 52, ...
-
-    The planar 4.6.12 disk is ``1 + 30 m**2 + 6 m + 12 m r + (0, 3, 8, 15, 24)[r]``
-    for ``k = 5 m + r``: ``(k + 1)**2`` up to k = 4, then larger (37 > 36 at k = 5,
-    about ``1.2 k**2``).  Level 0 has 10 cells within 2 steps (planar: 9).
-    Checked for every cell and every k at levels 0-8.
-    """
-    if k == 2:
-        return 10
-    m, r = divmod(k, 5)
-    return 1 + 30 * m * m + 6 * m + 12 * m * r + (0, 3, 8, 15, 24)[r]
-
-
-# ---------------------------------------------------------------------------
-# Planar charts (compiled): exact distances where the plane proves them
-# ---------------------------------------------------------------------------
-_FACE_ADJ = FACE_ADJ.astype(np.int64)
-_FACE_BACK = FACE_BACK.astype(np.int64)
-_CHART_ROT = CHART_ROT.copy()
-_CHART_OFF = CHART_OFF.copy()
-_LINE_NORMALS = LINE_NORMALS.copy()
-_SPACING = line_spacings(MAX_LEVEL)
-_L1_CORNERS = LEVEL1_CORNERS.copy()
-_R = float(FACE_INRADIUS)
-_U3 = np.uint64(3)
-
-
-@njit(cache=True, nogil=True)
-def _centroid(cell: np.uint64, level: int) -> tuple[float, float]:
-    """Planar centroid of a cell at level >= 1 in its face frame (D and E per level, thesis §6.1.7)."""
-    d1 = np.int64((cell >> np.uint64(54)) & np.uint64(7)) - 1
-    ax, ay = _L1_CORNERS[d1, 0, 0], _L1_CORNERS[d1, 0, 1]
-    bx, by = _L1_CORNERS[d1, 1, 0], _L1_CORNERS[d1, 1, 1]
-    cx, cy = _L1_CORNERS[d1, 2, 0], _L1_CORNERS[d1, 2, 1]
-    for lv in range(2, level + 1):
-        dig = np.int64((cell >> np.uint64(2 * (MAX_LEVEL - lv))) & _U3) - 1
-        dx, dy = cx + (ax - cx) / 3.0, cy + (ay - cy) / 3.0  # D: a third of the way from C to A
-        ex, ey = 0.5 * (ax + bx), 0.5 * (ay + by)  # E: the midpoint of AB
-        if dig == 0:  # BCD
-            ax, ay, bx, by = bx, by, dx, dy
-        elif dig == 1:  # BDE
-            ax, ay, bx, by, cx, cy = bx, by, dx, dy, ex, ey
-        else:  # ADE
-            bx, by, cx, cy = dx, dy, ex, ey
-    return (ax + bx + cx) / 3.0, (ay + by + cy) / 3.0
-
-
-@njit(cache=True, nogil=True)
-def _separating_lines(px: float, py: float, qx: float, qy: float, level: int) -> int:
-    """Lines of the level's planar arrangement between two cell centroids (face-frame chart)."""
-    total = 0
-    for f in range(6):
-        nx, ny = _LINE_NORMALS[f, 0], _LINE_NORMALS[f, 1]
-        if f < 3:  # edge families: the face edge r - <p, n> = 0 is a line
-            h = _SPACING[level, 0]
-            tp, tq = (_R - (px * nx + py * ny)) / h, (_R - (qx * nx + qy * ny)) / h
-        else:  # median families: through the face centre
-            h = _SPACING[level, 1]
-            tp, tq = (px * nx + py * ny) / h, (qx * nx + qy * ny) / h
-        total += int(abs(np.int64(math.floor(tp)) - np.int64(math.floor(tq))))
-    return total
-
-
-@njit(cache=True, nogil=True)
-def chart_distance(a: np.uint64, b: np.uint64, level: int) -> int:
-    """Exact distance from the planar arrangement if ``a``'s chart proves it, else -1.
-
-    The chart is ``a``'s face with its 3 neighbours unfolded: a triangle of
-    twice the size whose corners and edge midpoints are the only icosahedron
-    vertices it touches.  In the plane the cells are the alcoves of the affine
-    reflection group G2~ (the kisrhombille), and the distance between two
-    alcoves is the number of mirror lines separating them.  If every cell
-    within that many steps of ``a`` lies inside the chart (a disk of radius
-    ``rho`` around the centroid), every path from ``a`` shorter than it stays
-    in the chart, where the count is a lower bound, and a planar shortest path
-    realises it: the count is the distance on the sphere.
-    """
-    fa = np.int64((a >> np.uint64(57)) & np.uint64(31))
-    fb = np.int64((b >> np.uint64(57)) & np.uint64(31))
-    px, py = _centroid(a, level)
-    qx, qy = _centroid(b, level)
-    if fb != fa:
-        k = -1
-        for j in range(3):
-            if _FACE_ADJ[fa, j] == fb:
-                k = _FACE_BACK[fa, j]  # b's face edge that borders a's face
-        if k < 0:
-            return -1
-        rot = _CHART_ROT[fb, k]
-        off = _CHART_OFF[fb, k]
-        qx, qy = rot[0, 0] * qx + rot[0, 1] * qy + off[0], rot[1, 0] * qx + rot[1, 1] * qy + off[1]
-    d = _separating_lines(px, py, qx, qy, level)
-    short = _R / math.sqrt(3.0) ** (level - 1)  # edge BC of a cell at this level
-    # centroids move at most 2/sqrt3 BC per step; a corner is sqrt13/3 BC from the centroid
-    rho = (d * 2.0 / math.sqrt(3.0) + math.sqrt(13.0) / 3.0) * short * (1.0 + 1e-9) + 1e-12
-    for j in range(3):  # the chart: <p, n_j> >= -2 r
-        if px * _LINE_NORMALS[j, 0] + py * _LINE_NORMALS[j, 1] + 2.0 * _R <= rho:
-            return -1
-    return d
+__all__ = ["BASE_ADJ", "BLOCK", "CHART_OFF", "CHART_ROT", "CHILD_FLIP", "COLUMN_LABEL", "FACE_ADJ", "FACE_BACK",
+           "FACE_DISTANCE", "L1_CCW", "L1_TABLE", "LEVEL1_CORNERS", "LINE_NORMALS", "STEP", "chart_distance",
+           "disk_size_bound", "line_spacings", "ring_size_bound"]

@@ -1,31 +1,16 @@
-"""Directed edges' curves and dissolved outlines on the IVEA projection: the same code, compiled a second time.
+"""Directed edges' curves and dissolved outlines on the IVEA projection.
 
-As :mod:`.ivea_points` does for the point kernels: the functions of :mod:`.edges` (an edge's points and its
-length) and of :mod:`.dissolve` (the outline's ring points) that map planar points to the globe are rebuilt with
-``gk`` bound to the geometry kernel whose ``inverse_unit`` is IVEA's.  The outline rebuild also takes IVEA's
-``_lat_lng_at`` and ``_crossing`` (the antimeridian and pole cuts) from :mod:`.ivea_points`.  Which edges
-make an outline is topological and shared as compiled.
+Compiled C, libdggs/src/edges.c and dissolve.c (through ``dggs._core``): the same functions as :mod:`.edges`
+(an edge's points and its length) and :mod:`.dissolve` (the outline's ring points), called with ``DGGS_IVEA``,
+so that planar points map to the globe by IVEA's inverse.  Which edges make an outline is topological and
+shared: :mod:`.dissolve`'s other functions serve both projections.
 """
 
 from __future__ import annotations
 
-from dggs.geometry._parallel import loops
-
-from . import dissolve as _dissolve
-from . import edges as _edges
-from . import ivea_points as _ki
-from .ivea_points import rebuilder
-
-_EDGE_GLOBALS, _edge_rebuilt, _edge_compiled = rebuilder(_edges)
-one_length = _edge_compiled("_one_length")
-_one_boundary = _edge_compiled("_one_boundary")
-lengths = loops(_edge_rebuilt("_lengths"))
-boundaries = loops(_edge_rebuilt("_boundaries"))
-
-_RING_GLOBALS, _ring_rebuilt, _ring_compiled = rebuilder(_dissolve)
-_RING_GLOBALS["_lat_lng_at"] = _ki._lat_lng_at
-_RING_GLOBALS["_crossing"] = _ki._crossing
-_grid_point = _ring_compiled("_grid_point", cache=True, nogil=True, inline="always")
-ring_points = _ring_compiled("ring_points")
+from dggs._core import ivea_dissolve_ring_points as ring_points
+from dggs._core import ivea_edges_boundaries as boundaries
+from dggs._core import ivea_edges_lengths as lengths
+from dggs._core import ivea_edges_one_length as one_length
 
 __all__ = ["one_length", "lengths", "boundaries", "ring_points"]
