@@ -55,6 +55,7 @@ def _faces(ids: np.ndarray) -> np.ndarray:
 
 
 def _parents(ids: np.ndarray, level: int) -> np.ndarray:
+    out: np.ndarray
     if level < 0:
         out, bad = kh.parents_up(ids)
         if bad >= 0:

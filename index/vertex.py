@@ -70,7 +70,7 @@ def _disk_bound(level: int, k: int) -> int:
     edge disk of radius 6k (:func:`dggs.index._kernel.grid_tables.disk_size_bound`), and in
     the level.
     """
-    return min(disk_size_bound(6 * k), 20 if level == 0 else 120 * 3 ** (level - 1))
+    return min(int(disk_size_bound(6 * k)), 20 if level == 0 else 120 * 3 ** (level - 1))
 
 
 def _not_in(values: np.ndarray, sorted_ring: np.ndarray) -> np.ndarray:
