@@ -26,6 +26,7 @@ import pandas as pd
 
 from dggs._pandas_frames import one_column
 from dggs.errors import DggsValueError
+from dggs.index._checks import is_choice
 from dggs.index.hierarchy import cell_to_parent
 from dggs.index.ids import check_level, int_to_str, str_to_int
 
@@ -135,7 +136,7 @@ def sjoin_cells(
     >>> binned.dggs.sjoin_cells(zones, 6, cells="cell")["zone"].to_dict()
     {'a': 'west', 'b': 'west', 'c': 'east'}
     """
-    if how not in _HOW:
+    if not is_choice(how, _HOW):
         raise DggsValueError(f"how {how!r} is not one of {', '.join(_HOW)}")
     if not isinstance(polygons, pd.DataFrame):
         raise DggsValueError(f"polygons must be a GeoDataFrame of (Multi)Polygons, not a {type(polygons).__name__}")

@@ -20,6 +20,7 @@ from dggs._raster_blocks import each_block
 from dggs._raster_grid import to_wgs84
 from dggs._raster_source import RasterError, RasterSource, open_raster
 from dggs.errors import DggsValueError, LevelMismatchError
+from dggs.index._checks import is_choice
 from dggs.index._convert import cells_in, id_name
 from dggs.index.hierarchy import get_level
 from dggs.index.points import latlng_to_cell
@@ -91,7 +92,7 @@ def cells_to_raster(
     >>> out.tolist()
     [[7.0, 7.0], [7.0, 7.0]]
     """
-    if mode not in BURN_MODES:
+    if not is_choice(mode, BURN_MODES):
         raise DggsValueError(f"mode {mode!r} is not one of {', '.join(BURN_MODES)}")
     if isinstance(block_size, bool) or not isinstance(block_size, int) or block_size < 1:
         raise DggsValueError(f"block_size must be a whole number of pixels >= 1, not {block_size!r}")

@@ -34,6 +34,7 @@ import pyarrow as pa
 import shapely
 
 from dggs.errors import DggsValueError, InvalidCellError
+from dggs.index._checks import is_choice
 from dggs.index.dissolve import cells_to_polygons
 from dggs.index.grid import grid_disk
 from dggs.index.hierarchy import cell_to_children, cell_to_parent, get_level, is_valid_cell
@@ -308,9 +309,9 @@ def batch_function(name: str, on_invalid: str = "raise") -> Callable[..., Any]:
     >>> batch_function("dggs_get_level")(pa.array([None, "C401"])).to_pylist()
     [None, 3]
     """
-    if name not in _COMPUTE:
+    if not is_choice(name, _COMPUTE):
         raise DggsValueError(f"{name!r} is not a dggs Spark function (one of {', '.join(FUNCTIONS)})")
-    if on_invalid not in ON_INVALID:
+    if not is_choice(on_invalid, ON_INVALID):
         raise DggsValueError(f"on_invalid={on_invalid!r} is not one of {ON_INVALID}")
     compute = _COMPUTE[name]
     typ = FUNCTIONS[name][1]

@@ -26,7 +26,7 @@ from dggs._raster_pieces import block_pieces
 from dggs._raster_source import RasterError, RasterSource, open_raster
 from dggs._raster_stats import Partials, block_partials, combine
 from dggs.errors import DggsValueError
-from dggs.index._checks import check_level
+from dggs.index._checks import check_level, is_choice
 
 __all__ = ["raster_to_cells", "cells_to_raster", "MODES", "OUTPUTS", "RasterError"]
 
@@ -142,7 +142,7 @@ def open_checked(source: Any, level: int, mode: str, band: Any, nodata: Any, win
 ]:
     """The arguments of :func:`raster_to_cells` checked, and the raster opened (the errors it documents)."""
     level = check_level(level)
-    if mode not in MODES:
+    if not is_choice(mode, MODES):
         raise DggsValueError(f"mode {mode!r} is not one of {', '.join(MODES)}")
     if isinstance(block_size, bool) or not isinstance(block_size, int) or block_size < 1:
         raise DggsValueError(f"block_size must be a whole number of pixels >= 1, not {block_size!r}")
