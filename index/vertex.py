@@ -31,7 +31,9 @@ from dggs.errors import DggsValueError, TooManyCellsError
 
 from ._checks import check_max_cells, check_radius, check_size
 from ._convert import ROWS, VALUES, Op, apply, format_int
-from ._corners import MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
+from ._convert.kind import Kind
+from ._convert.values import values_out
+from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
 from ._kernel import hierarchy as kh
 from ._kernel.grid_tables import disk_size_bound
 from ._shapes import boundaries
@@ -158,58 +160,198 @@ def cell_to_vertexes(cell: Any) -> Any:
     return apply(_VERTEXES, cell)
 
 
-def is_valid_vertex(vertex: Any) -> bool:
+def _vertex_container(obj: Any) -> tuple[list[Any], Kind] | None:
+    """The elements of a container of vertex ids (flat) and its :class:`Kind`; None for one vertex id.
+
+    A container is what :func:`cell_to_vertexes` gives and what the cell verbs take: a list or
+    tuple (nested lists of one shape), a numpy array (``U``, ``S`` or object), a pandas Series or
+    Index, a pyarrow (Chunked)Array.  Anything else is one vertex id (checked by the verb).
+    """
+    mod = type(obj).__module__
+    if mod.startswith("pandas"):
+        import pandas as pd
+
+        if isinstance(obj, pd.Series):
+            return list(obj.tolist()), Kind("pandas", "str", (len(obj),), index=obj.index, name=obj.name)
+        if isinstance(obj, pd.Index):
+            return list(obj.tolist()), Kind("pandas-index", "str", (len(obj),), name=obj.name)
+        return None
+    if mod.startswith("pyarrow"):
+        import pyarrow as pa
+
+        if isinstance(obj, (pa.Array, pa.ChunkedArray)):
+            return obj.to_pylist(), Kind("arrow", "str", (len(obj),), chunked=isinstance(obj, pa.ChunkedArray))
+        return None
+    if isinstance(obj, np.ndarray):
+        if obj.ndim == 0:
+            return None
+        return obj.reshape(-1).tolist(), Kind("numpy", "str", obj.shape)
+    if isinstance(obj, (list, tuple)):
+        try:
+            arr = np.empty(0, dtype=object) if len(obj) == 0 else np.array(obj, dtype=object)
+        except ValueError:  # ragged
+            raise DggsValueError(f"vertex ids must be one id or a regular (non-ragged) container of them, not {obj!r:.100}") from None
+        if arr.ndim and any(isinstance(v, (list, tuple)) for v in arr.reshape(-1)):
+            raise DggsValueError(f"vertex ids must be one id or a regular (non-ragged) container of them, not {obj!r:.100}")
+        return arr.reshape(-1).tolist(), Kind("list", "str", arr.shape)
+    return None
+
+
+def _as_text(vertex: Any) -> Any:
+    """A vertex id element as a plain ``str`` (``np.str_`` and ASCII bytes included); anything else as is."""
+    if isinstance(vertex, (bytes, bytearray, np.bytes_)):
+        try:
+            return bytes(vertex).decode("ascii")
+        except UnicodeDecodeError:
+            return vertex
+    return str(vertex) if isinstance(vertex, str) else vertex
+
+
+def _parse_vertexes(items: list[Any], many: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(owners, corner indexes) of vertex ids, each checked canonical; the error names the id (and its index)."""
+    owners = np.zeros(len(items), dtype=np.uint64)
+    index = np.zeros(len(items), dtype=np.int64)
+    for i, v in enumerate(items):
+        try:
+            owners[i], index[i] = parse_vertex(_as_text(v))
+        except DggsValueError as e:
+            raise DggsValueError(f"{e} (at index {i})" if many else str(e)) from None
+    if owners.size:
+        o, k = vertex_keys(owners)
+        rows = np.arange(owners.size)
+        bad = np.flatnonzero((o[rows, index] != owners) | (k[rows, index] != index))
+        if bad.size:
+            i = int(bad[0])
+            try:
+                check_canonical(_as_text(items[i]), int(owners[i]), int(index[i]))
+            except DggsValueError as e:
+                raise DggsValueError(f"{e} (at index {i})" if many else str(e)) from None
+    return owners, index
+
+
+def _vertex_args(vertex: Any) -> tuple[list[Any], Kind]:
+    found = _vertex_container(vertex)
+    return found if found is not None else ([vertex], Kind("scalar", "str", (), True))
+
+
+def is_valid_vertex(vertex: Any) -> Any:
     """Whether ``vertex`` is a vertex id as :func:`cell_to_vertexes` gives them (never raises).
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+
+    Returns
+    -------
+    bool, or the input's kind of container of bool
+        One flag per vertex id (a malformed container gives False).
 
     Examples
     --------
     >>> is_valid_vertex("C400:1"), is_valid_vertex("C401:0"), is_valid_vertex("C401")
     (True, False, False)
+    >>> is_valid_vertex(cell_to_vertexes("C401") + ["C401"])
+    [True, True, True, False]
     """
     try:
-        check_canonical(vertex, *parse_vertex(vertex))
+        items, kind = _vertex_args(vertex)
     except DggsValueError:
         return False
-    return True
+    owners = np.zeros(len(items), dtype=np.uint64)
+    index = np.zeros(len(items), dtype=np.int64)
+    for i, v in enumerate(items):
+        try:
+            owners[i], index[i] = parse_vertex(_as_text(v))
+        except DggsValueError:
+            continue  # owner 0: not a vertex id
+    flags = owners != 0
+    ok = np.flatnonzero(flags)
+    if ok.size:
+        o, k = vertex_keys(owners[ok])
+        rows = np.arange(ok.size)
+        flags[ok] = (o[rows, index[ok]] == owners[ok]) & (k[rows, index[ok]] == index[ok])
+    return values_out(flags, kind)
 
 
-def vertex_to_latlng(vertex: Any) -> tuple[float, float]:
+def vertex_to_latlng(vertex: Any) -> Any:
     """The (lat, lng) of a vertex, geodetic WGS84 degrees.
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+
+    Returns
+    -------
+    tuple of float, or a tuple of two containers
+        For one id, ``(lat, lng)``; for a container, ``(lats, lngs)`` in the input's kind of
+        container (as :func:`dggs.cell_to_latlng`).
 
     Raises
     ------
     DggsValueError
-        Not a vertex id, or not the canonical name of its corner.
+        Not a vertex id, or not the canonical name of its corner (in a container, the message
+        gives its index).
 
     Examples
     --------
     >>> lat, lng = vertex_to_latlng("C401:1")
     >>> round(lat, 6), round(lng, 6)
     (20.91287, -1.220765)
+    >>> lats, lngs = vertex_to_latlng(cell_to_vertexes("C401"))
+    >>> len(lats), round(lats[1], 6)
+    (3, 20.91287)
     """
-    owner, index = parse_vertex(vertex)
-    check_canonical(vertex, owner, index)
-    lat, lng = boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
-    return float(lat), float(lng)
+    items, kind = _vertex_args(vertex)
+    owners, index = _parse_vertexes(items, not kind.scalar)
+    ring = boundaries(owners, 0) if owners.size else np.zeros((0, 3, 2))
+    pts = ring[np.arange(owners.size), index] if owners.size else np.zeros((0, 2))
+    lat, lng = pts[:, 0].astype(np.float64), pts[:, 1].astype(np.float64)
+    if kind.scalar:
+        return float(lat[0]), float(lng[0])
+    return values_out(lat, kind), values_out(lng, kind)
 
 
-def vertex_to_cells(vertex: Any) -> list[str]:
+def vertex_to_cells(vertex: Any) -> Any:
     """The cells that meet at a vertex (4, 5, 6, 10 or 12 of them), sorted string ids.
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+
+    Returns
+    -------
+    list of str, or the input's kind of container of rows
+        For one id, the sorted list; for a container, shape ``input shape + (12,)``, each row
+        sorted and padded with ``""`` (as :func:`vertex_neighbors`).
 
     Raises
     ------
     DggsValueError
-        Not a vertex id, or not the canonical name of its corner.
+        Not a vertex id, or not the canonical name of its corner (in a container, the message
+        gives its index).
 
     Examples
     --------
     >>> vertex_to_cells("C401:1")
     ['C401', 'C402', 'C411', 'C412']
+    >>> vertex_to_cells(["C401:1"])[0][:4]
+    ['C401', 'C402', 'C411', 'C412']
     """
-    owner, index = parse_vertex(vertex)
-    check_canonical(vertex, owner, index)
-    fan, size = fans(np.array([owner], dtype=np.uint64), np.array([index]))
-    return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
+    items, kind = _vertex_args(vertex)
+    owners, index = _parse_vertexes(items, not kind.scalar)
+    if kind.scalar:
+        fan, size = fans(owners, index)
+        return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
+    rows = np.full((owners.size, MAX_FAN), "", dtype=object)
+    if owners.size:
+        fan, size = fans(owners, index)
+        for i in range(owners.size):
+            names = sorted(format_int(int(c)) or "" for c in fan[i, : size[i]])
+            rows[i, : len(names)] = names
+    return values_out(rows.astype(str) if kind.container in ("numpy", "arrow") else rows, kind, (MAX_FAN,), rows=True)
 
 
 def vertex_neighbors(cell: Any) -> Any:
