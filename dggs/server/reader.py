@@ -1,7 +1,14 @@
-"""Read access to the served cell store: one read-only connection per thread, cached roll-ups.
+"""Read access to the served cell store: a bounded pool of read-only connections, cached roll-ups.
 
-The server never writes.  SQLite connections cannot be shared across threads,
-so each worker thread opens its own read-only :class:`~dggs.storage.CellStore`.
+The server never writes.  A SQLite connection serves one thread at a time, so
+each read (:meth:`StoreReader.snapshot`) takes a read-only
+:class:`~dggs.storage.CellStore` from the reader's pool (opening one if none is
+idle) and gives it back when the read ends (a nested snapshot on the same thread
+uses the same store).  The pool keeps at most :data:`POOL_IDLE` idle stores and
+closes the rest, so the connections belong to the reader, not to the worker
+threads: threads come and go (anyio retires an idle worker after 10 s) without
+leaving a connection open behind them (issue 32: one store per retired thread
+used to stay open until the server ran out of descriptors).
 Every answer reads in one SQLite read transaction (:meth:`StoreReader.snapshot`):
 an ingest running at the same time commits whole batches in WAL mode, and a
 reader sees the store before or after a batch, never half of one.
@@ -108,8 +115,12 @@ class LevelData:
         return int(self.ids.shape[0])
 
 
+#: Most idle read-only stores the pool keeps open between reads (more are closed when given back).
+POOL_IDLE = 8
+
+
 class StoreReader:
-    """The served store, read-only, with per-thread connections and caches.
+    """The served store, read-only, with a bounded pool of connections and caches.
 
     Parameters
     ----------
@@ -126,9 +137,11 @@ class StoreReader:
         self.refresh = float(refresh)
         self._flights: dict[tuple[Any, ...], threading.Lock] = {}
         self.collection_id = self.path.stem
-        self._local = threading.local()
+        self._local = threading.local()  # .store, .depth: the store this thread holds and its snapshot nesting
         self._lock = threading.Lock()
-        self._opened: list[CellStore] = []
+        self._idle: list[CellStore] = []  # stores given back, newest last (at most POOL_IDLE)
+        self._busy: set[CellStore] = set()  # stores a thread holds now
+        self._closed = False
         self._cache: OrderedDict[tuple[Any, ...], Any] = OrderedDict()
         self._geometry: dict[str, tuple[Any, str]] = {}
         with self.snapshot() as (store, _marker):
@@ -140,25 +153,56 @@ class StoreReader:
     # -- connections --------------------------------------------------------
 
     def store(self) -> CellStore:
-        """Return this thread's read-only store (opened on first use)."""
-        # an immutable reader (the store was quiet) opens itself again before a read once a writer's -wal
-        # is there or the file changed (dggs.storage.connection.Connection.conn)
-        store = getattr(self._local, "store", None)
-        if store is None:
-            store = CellStore(self.path, create=False, readonly=True)  # immutable while nobody writes
-            self._local.store = store
-            with self._lock:
-                self._opened.append(store)
+        """Return the read-only store this thread holds in a :meth:`snapshot` (or one from the pool).
+
+        Outside a snapshot the store is taken from the pool and given back at
+        once: use it within :meth:`snapshot`, which holds it for the read.
+        """
+        held = getattr(self._local, "store", None)
+        if held is not None:
+            return held  # type: ignore[no-any-return]
+        store = self._take()
+        self._give(store)
         return store
 
-    def close(self) -> None:
-        """Close every connection opened by any thread."""
+    def _take(self) -> CellStore:
+        """An idle store of the pool, or a new one (the pool's, closed by :meth:`close`)."""
         with self._lock:
-            opened, self._opened = self._opened, []
-        for store in opened:
+            store = self._idle.pop() if self._idle else None
+            if store is not None:
+                self._busy.add(store)
+                return store
+        # an immutable reader opens itself again before a read once a writer's -wal is there or the file
+        # changed (dggs.storage.connection.Connection.conn); any thread may use it, one at a time
+        store = CellStore(self.path, create=False, readonly=True, check_same_thread=False)
+        with self._lock:
+            self._busy.add(store)
+        return store
+
+    def _give(self, store: CellStore) -> None:
+        """Give a store back: kept idle while the pool has room and is open, else closed."""
+        with self._lock:
+            self._busy.discard(store)
+            keep = not self._closed and len(self._idle) < POOL_IDLE
+            if keep:
+                self._idle.append(store)
+        if not keep:
             with contextlib.suppress(Exception):
                 store.close()
-        self._local = threading.local()
+
+    def open_connections(self) -> int:
+        """How many read-only stores the reader has open (idle and held), for tests and monitoring."""
+        with self._lock:
+            return len(self._idle) + len(self._busy)
+
+    def close(self) -> None:
+        """Close every idle store now, and every held one when its read ends."""
+        with self._lock:
+            self._closed = True
+            idle, self._idle = self._idle, []
+        for store in idle:
+            with contextlib.suppress(Exception):
+                store.close()
 
     @contextlib.contextmanager
     def snapshot(self) -> Iterator[tuple[CellStore, tuple[Any, ...]]]:
@@ -170,7 +214,10 @@ class StoreReader:
             If the store file is gone, damaged, or changed under an immutable reader while it was read
             (naming the file: the server answers 503).
         """
-        store = self.store()
+        outer = getattr(self._local, "store", None) is None
+        if outer:
+            self._local.store = self._take()
+        store: CellStore = self._local.store
         marker: tuple[Any, ...] | None = None
         try:
             with store._store.snapshot():
@@ -181,6 +228,10 @@ class StoreReader:
                 for key in [k for k, entry in self._cache.items() if marker is not None and entry[0] == marker]:
                     del self._cache[key]
             raise translate(exc, str(self.path)) from exc
+        finally:
+            if outer:  # the outermost snapshot of this thread gives the store back
+                self._local.store = None
+                self._give(store)
 
     @staticmethod
     def _marker(store: CellStore) -> tuple[Any, ...]:
