@@ -162,7 +162,7 @@ def cell_centers_distance(a: Any, b: Any, unit: str = "m", *, projection: str = 
 def geodesic_to_cells(
     lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None,
     *, projection: str = "ISEA",
-) -> np.ndarray:
+) -> Any:
     """The cells along the WGS84 geodesic from one point to another, in order (h3's ``grid_path_cells``).
 
     The one-segment case of :func:`dggs.line_to_cells`: the geodesic

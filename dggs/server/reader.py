@@ -160,7 +160,7 @@ class StoreReader:
         """
         held = getattr(self._local, "store", None)
         if held is not None:
-            return held  # type: ignore[no-any-return]
+            return held
         store = self._take()
         self._give(store)
         return store
