@@ -167,7 +167,7 @@ def column_ids(values: pd.Series) -> np.ndarray:
     would name a valid neighbour as ``4.99e+18`` instead of the missing value, at the wrong row).
     """
     dt = values.dtype
-    if dt == object or isinstance(dt, pd.StringDtype):
+    if dt == np.dtype("O") or isinstance(dt, pd.StringDtype):
         return values.to_numpy(dtype=object)
     if isinstance(dt, pd.api.extensions.ExtensionDtype) and dt.kind in "iu":
         if values.isna().any():
