@@ -104,9 +104,8 @@ def _nums(a: Any, dtype: Any) -> np.ndarray:
         return values.astype(dtype)
     if not (pa.types.is_string(a.type) or pa.types.is_large_string(a.type)):
         raise ColumnTypeError(f"expected a column of numbers, not {a.type}")
-    text = a.to_pylist()
-    out = np.zeros(len(text), dtype=dtype)
-    for i, v in enumerate(text):  # a string column: each value a number ('n/a' is a bad value of its row)
+    out = np.zeros(len(a), dtype=dtype)
+    for i, v in enumerate(a.to_pylist()):  # a string column: each value a number ('n/a' is a bad value of its row)
         try:
             out[i] = float(v) if np.dtype(dtype).kind == "f" else int(v)
         except (TypeError, ValueError, OverflowError):
@@ -261,9 +260,6 @@ def _is_valid(cell: Any) -> Any:
 
 
 def _is_valid_ids(cell: Any) -> Any:
-    if not (pa.types.is_integer(cell.type) or pa.types.is_string(cell.type) or pa.types.is_large_string(cell.type)
-            or pa.types.is_binary(cell.type) or pa.types.is_large_binary(cell.type) or pa.types.is_dictionary(cell.type)):
-        return pa.array(np.zeros(len(cell), dtype=bool), type=pa.bool_())
     if pa.types.is_integer(cell.type):
         values = cell.to_numpy()
         ids = values.view(np.uint64) if values.dtype == np.int64 else values.astype(np.uint64)
@@ -369,8 +365,7 @@ def batch_function(name: str, on_invalid: str = "raise") -> Callable[..., Any]:
         except DggsValueError as exc:
             result, rows = _bad_rows(name, compute, sub, rows, on_invalid, exc)
         except (pa.ArrowException, TypeError, ValueError, AttributeError, OverflowError) as exc:
-            kinds = ", ".join(str(a.type) for a in args)
-            raise ColumnTypeError(f"{name} cannot take columns of type ({kinds}): {exc}") from None
+            raise ColumnTypeError(f"{name} cannot take columns of type ({', '.join(str(a.type) for a in args)}): {exc}") from None
         return _spread(result, rows, n, typ)
 
     fn.__name__ = fn.__qualname__ = name

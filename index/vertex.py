@@ -31,12 +31,12 @@ from dggs.errors import DggsValueError, TooManyCellsError
 
 from ._checks import check_max_cells, check_radius, check_size
 from ._convert import ROWS, VALUES, Op, apply, format_int
-from ._convert.kind import Kind
 from ._convert.values import values_out
-from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
+from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, fans, format_vertex, vertex_keys
 from ._kernel import hierarchy as kh
 from ._kernel.grid_tables import disk_size_bound
 from ._shapes import boundaries
+from ._vertex_ids import parse_vertexes, vertex_args, vertex_flags
 
 __all__ = [
     "cell_to_vertexes",
@@ -160,80 +160,6 @@ def cell_to_vertexes(cell: Any) -> Any:
     return apply(_VERTEXES, cell)
 
 
-def _vertex_container(obj: Any) -> tuple[list[Any], Kind] | None:
-    """The elements of a container of vertex ids (flat) and its :class:`Kind`; None for one vertex id.
-
-    A container is what :func:`cell_to_vertexes` gives and what the cell verbs take: a list or
-    tuple (nested lists of one shape), a numpy array (``U``, ``S`` or object), a pandas Series or
-    Index, a pyarrow (Chunked)Array.  Anything else is one vertex id (checked by the verb).
-    """
-    mod = type(obj).__module__
-    if mod.startswith("pandas"):
-        import pandas as pd
-
-        if isinstance(obj, pd.Series):
-            return list(obj.tolist()), Kind("pandas", "str", (len(obj),), index=obj.index, name=obj.name)
-        if isinstance(obj, pd.Index):
-            return list(obj.tolist()), Kind("pandas-index", "str", (len(obj),), name=obj.name)
-        return None
-    if mod.startswith("pyarrow"):
-        import pyarrow as pa
-
-        if isinstance(obj, (pa.Array, pa.ChunkedArray)):
-            return obj.to_pylist(), Kind("arrow", "str", (len(obj),), chunked=isinstance(obj, pa.ChunkedArray))
-        return None
-    if isinstance(obj, np.ndarray):
-        if obj.ndim == 0:
-            return None
-        return obj.reshape(-1).tolist(), Kind("numpy", "str", obj.shape)
-    if isinstance(obj, (list, tuple)):
-        try:
-            arr = np.empty(0, dtype=object) if len(obj) == 0 else np.array(obj, dtype=object)
-        except ValueError:  # ragged
-            raise DggsValueError(f"vertex ids must be one id or a regular (non-ragged) container of them, not {obj!r:.100}") from None
-        if arr.ndim and any(isinstance(v, (list, tuple)) for v in arr.reshape(-1)):
-            raise DggsValueError(f"vertex ids must be one id or a regular (non-ragged) container of them, not {obj!r:.100}")
-        return arr.reshape(-1).tolist(), Kind("list", "str", arr.shape)
-    return None
-
-
-def _as_text(vertex: Any) -> Any:
-    """A vertex id element as a plain ``str`` (``np.str_`` and ASCII bytes included); anything else as is."""
-    if isinstance(vertex, (bytes, bytearray, np.bytes_)):
-        try:
-            return bytes(vertex).decode("ascii")
-        except UnicodeDecodeError:
-            return vertex
-    return str(vertex) if isinstance(vertex, str) else vertex
-
-
-def _parse_vertexes(items: list[Any], many: bool) -> tuple[np.ndarray, np.ndarray]:
-    """(owners, corner indexes) of vertex ids, each checked canonical; the error names the id (and its index)."""
-    owners = np.zeros(len(items), dtype=np.uint64)
-    index = np.zeros(len(items), dtype=np.int64)
-    for i, v in enumerate(items):
-        try:
-            owners[i], index[i] = parse_vertex(_as_text(v))
-        except DggsValueError as e:
-            raise DggsValueError(f"{e} (at index {i})" if many else str(e)) from None
-    if owners.size:
-        o, k = vertex_keys(owners)
-        rows = np.arange(owners.size)
-        bad = np.flatnonzero((o[rows, index] != owners) | (k[rows, index] != index))
-        if bad.size:
-            i = int(bad[0])
-            try:
-                check_canonical(_as_text(items[i]), int(owners[i]), int(index[i]))
-            except DggsValueError as e:
-                raise DggsValueError(f"{e} (at index {i})" if many else str(e)) from None
-    return owners, index
-
-
-def _vertex_args(vertex: Any) -> tuple[list[Any], Kind]:
-    found = _vertex_container(vertex)
-    return found if found is not None else ([vertex], Kind("scalar", "str", (), True))
-
-
 def is_valid_vertex(vertex: Any) -> Any:
     """Whether ``vertex`` is a vertex id as :func:`cell_to_vertexes` gives them (never raises).
 
@@ -255,22 +181,10 @@ def is_valid_vertex(vertex: Any) -> Any:
     [True, True, True, False]
     """
     try:
-        items, kind = _vertex_args(vertex)
+        items, kind = vertex_args(vertex)
     except DggsValueError:
         return False
-    owners = np.zeros(len(items), dtype=np.uint64)
-    index = np.zeros(len(items), dtype=np.int64)
-    for i, v in enumerate(items):
-        try:
-            owners[i], index[i] = parse_vertex(_as_text(v))
-        except DggsValueError:
-            continue  # owner 0: not a vertex id
-    flags = owners != 0
-    ok = np.flatnonzero(flags)
-    if ok.size:
-        o, k = vertex_keys(owners[ok])
-        rows = np.arange(ok.size)
-        flags[ok] = (o[rows, index[ok]] == owners[ok]) & (k[rows, index[ok]] == index[ok])
+    flags = vertex_flags(items)
     return values_out(flags, kind)
 
 
@@ -303,8 +217,8 @@ def vertex_to_latlng(vertex: Any) -> Any:
     >>> len(lats), round(lats[1], 6)
     (3, 20.91287)
     """
-    items, kind = _vertex_args(vertex)
-    owners, index = _parse_vertexes(items, not kind.scalar)
+    items, kind = vertex_args(vertex)
+    owners, index = parse_vertexes(items, not kind.scalar)
     ring = boundaries(owners, 0) if owners.size else np.zeros((0, 3, 2))
     pts = ring[np.arange(owners.size), index] if owners.size else np.zeros((0, 2))
     lat, lng = pts[:, 0].astype(np.float64), pts[:, 1].astype(np.float64)
@@ -340,8 +254,8 @@ def vertex_to_cells(vertex: Any) -> Any:
     >>> vertex_to_cells(["C401:1"])[0][:4]
     ['C401', 'C402', 'C411', 'C412']
     """
-    items, kind = _vertex_args(vertex)
-    owners, index = _parse_vertexes(items, not kind.scalar)
+    items, kind = vertex_args(vertex)
+    owners, index = parse_vertexes(items, not kind.scalar)
     if kind.scalar:
         fan, size = fans(owners, index)
         return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])

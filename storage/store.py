@@ -66,9 +66,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         recorded in the file when it is created.  None (the default): the
         file's own (ISEA for a new store and for files that record none).
     check_same_thread : bool, default True
-        sqlite3's flag: True (the default) refuses use from any thread but the
-        opening one; False lets a pool hand the store to one thread after
-        another (never to two at once), as the server's reader does.
+        sqlite3's; False: a pool lends it to one thread after another (dggs/server/pool.py).
 
     Raises
     ------
@@ -103,9 +101,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         self.merge_rows = merge_rows
         self.readonly = readonly
         self.timeout = float(timeout)
-        self._store = Connection(
-            self.path, create=create, readonly=readonly, timeout=self.timeout, check_same_thread=bool(check_same_thread)
-        )
+        self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout,
+                                 check_same_thread=bool(check_same_thread))
         try:
             self._store.projection = settle(self._store.conn, self.path, projection, readonly)
         except BaseException:

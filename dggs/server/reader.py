@@ -1,14 +1,10 @@
 """Read access to the served cell store: a bounded pool of read-only connections, cached roll-ups.
 
-The server never writes.  A SQLite connection serves one thread at a time, so
-each read (:meth:`StoreReader.snapshot`) takes a read-only
-:class:`~dggs.storage.CellStore` from the reader's pool (opening one if none is
-idle) and gives it back when the read ends (a nested snapshot on the same thread
-uses the same store).  The pool keeps at most :data:`POOL_IDLE` idle stores and
-closes the rest, so the connections belong to the reader, not to the worker
-threads: threads come and go (anyio retires an idle worker after 10 s) without
-leaving a connection open behind them (issue 32: one store per retired thread
-used to stay open until the server ran out of descriptors).
+The server never writes.  Each read (:meth:`StoreReader.snapshot`) takes a
+read-only :class:`~dggs.storage.CellStore` from the reader's bounded pool
+(:mod:`dggs.server.pool`) and gives it back when it ends (a nested snapshot on
+the same thread uses the same store): connections belong to the reader, not to
+worker threads, which come and go (issue 32).
 Every answer reads in one SQLite read transaction (:meth:`StoreReader.snapshot`):
 an ingest running at the same time commits whole batches in WAL mode, and a
 reader sees the store before or after a batch, never half of one.
@@ -63,7 +59,9 @@ from dggs.errors import StorageError
 from dggs.storage import CellStore
 from dggs.storage.connection import translate
 
-__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox"]
+from .pool import POOL_IDLE, StorePool
+
+__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox", "POOL_IDLE"]
 
 #: At most this many roll-ups are kept (each is one level, column and statistic).
 CACHE_ENTRIES = 32
@@ -115,10 +113,6 @@ class LevelData:
         return int(self.ids.shape[0])
 
 
-#: Most idle read-only stores the pool keeps open between reads (more are closed when given back).
-POOL_IDLE = 8
-
-
 class StoreReader:
     """The served store, read-only, with a bounded pool of connections and caches.
 
@@ -139,9 +133,7 @@ class StoreReader:
         self.collection_id = self.path.stem
         self._local = threading.local()  # .store, .depth: the store this thread holds and its snapshot nesting
         self._lock = threading.Lock()
-        self._idle: list[CellStore] = []  # stores given back, newest last (at most POOL_IDLE)
-        self._busy: set[CellStore] = set()  # stores a thread holds now
-        self._closed = False
+        self._pool = StorePool(self.path)
         self._cache: OrderedDict[tuple[Any, ...], Any] = OrderedDict()
         self._geometry: dict[str, tuple[Any, str]] = {}
         with self.snapshot() as (store, _marker):
@@ -161,48 +153,17 @@ class StoreReader:
         held = getattr(self._local, "store", None)
         if held is not None:
             return held
-        store = self._take()
-        self._give(store)
+        store = self._pool.take()
+        self._pool.give(store)
         return store
-
-    def _take(self) -> CellStore:
-        """An idle store of the pool, or a new one (the pool's, closed by :meth:`close`)."""
-        with self._lock:
-            store = self._idle.pop() if self._idle else None
-            if store is not None:
-                self._busy.add(store)
-                return store
-        # an immutable reader opens itself again before a read once a writer's -wal is there or the file
-        # changed (dggs.storage.connection.Connection.conn); any thread may use it, one at a time
-        store = CellStore(self.path, create=False, readonly=True, check_same_thread=False)
-        with self._lock:
-            self._busy.add(store)
-        return store
-
-    def _give(self, store: CellStore) -> None:
-        """Give a store back: kept idle while the pool has room and is open, else closed."""
-        with self._lock:
-            self._busy.discard(store)
-            keep = not self._closed and len(self._idle) < POOL_IDLE
-            if keep:
-                self._idle.append(store)
-        if not keep:
-            with contextlib.suppress(Exception):
-                store.close()
 
     def open_connections(self) -> int:
         """How many read-only stores the reader has open (idle and held), for tests and monitoring."""
-        with self._lock:
-            return len(self._idle) + len(self._busy)
+        return self._pool.open_count()
 
     def close(self) -> None:
         """Close every idle store now, and every held one when its read ends."""
-        with self._lock:
-            self._closed = True
-            idle, self._idle = self._idle, []
-        for store in idle:
-            with contextlib.suppress(Exception):
-                store.close()
+        self._pool.close()
 
     @contextlib.contextmanager
     def snapshot(self) -> Iterator[tuple[CellStore, tuple[Any, ...]]]:
@@ -216,7 +177,7 @@ class StoreReader:
         """
         outer = getattr(self._local, "store", None) is None
         if outer:
-            self._local.store = self._take()
+            self._local.store = self._pool.take()
         store: CellStore = self._local.store
         marker: tuple[Any, ...] | None = None
         try:
@@ -231,7 +192,7 @@ class StoreReader:
         finally:
             if outer:  # the outermost snapshot of this thread gives the store back
                 self._local.store = None
-                self._give(store)
+                self._pool.give(store)
 
     @staticmethod
     def _marker(store: CellStore) -> tuple[Any, ...]:

@@ -6,9 +6,9 @@ burst.  Each worker thread used to open its own read-only store and the old
 ones stayed open after their thread retired, so descriptors grew with every
 burst after a pause and, under a low descriptor limit, the server ended
 answering 503 "Too many open files".  Here the server process runs under a
-lowered ``RLIMIT_NOFILE``; after every burst the count of its open descriptors
-(``/proc/<pid>/fd``) must be what it was after the first, and no answer may be
-a 5xx.  Bounded: 4 bursts of 24 requests, 3 pauses of 11 s (under a minute).
+lowered ``RLIMIT_NOFILE``; the count of its open descriptors (``/proc/<pid>/fd``)
+may grow by the pool's bound (``POOL_IDLE``) at most and is flat from the second
+burst on, and no answer may be a 5xx.  Bounded: 4 bursts of 24 requests, 3 pauses of 11 s (under a minute).
 """
 
 from __future__ import annotations
@@ -88,7 +88,13 @@ def test_descriptors_stay_flat_over_idle_bursts(store_path):
                 statuses += list(pool.map(_get, [urls[i % len(urls)] for i in range(PER_BURST)]))
                 counts.append(_descriptors(proc.pid))
         assert not [s for s in statuses if s >= 500], f"5xx answers: {sorted(set(statuses))}"
-        assert max(counts) <= counts[0] + 2, f"open descriptors after each burst: {counts} (limit {FD_LIMIT})"
+        # the pool may fill up to POOL_IDLE stores in the first bursts; from then on the count is flat (a leak
+        # grew it by a store per retired thread, every burst: [16, 24, 32, 43] before issue 32's fix)
+        from dggs.server.reader import POOL_IDLE
+
+        where = f"open descriptors after each burst: {counts} (limit {FD_LIMIT})"
+        assert max(counts) <= counts[0] + POOL_IDLE + 2, where
+        assert counts[-1] <= counts[1] + 2, where
     finally:
         proc.terminate()
         proc.communicate(timeout=30)
