@@ -29,7 +29,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError, TooManyCellsError
 
-from ._checks import check_max_cells, check_radius, check_size
+from ._checks import check_max_cells, check_projection, check_radius, check_size
 from ._convert import ROWS, VALUES, Op, apply, format_int
 from ._convert.values import values_out
 from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, fans, format_vertex, vertex_keys
@@ -188,13 +188,16 @@ def is_valid_vertex(vertex: Any) -> Any:
     return values_out(flags, kind)
 
 
-def vertex_to_latlng(vertex: Any) -> Any:
+def vertex_to_latlng(vertex: Any, *, projection: str = "ISEA") -> Any:
     """The (lat, lng) of a vertex, geodetic WGS84 degrees.
 
     Parameters
     ----------
     vertex : str or array_like of str
         One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+    projection : {"ISEA", "IVEA"}
+        The grid whose corner is given (``dggs.Grid(projection).vertex_to_latlng`` passes it; the vertex
+        ids are the same on both).
 
     Returns
     -------
@@ -217,9 +220,12 @@ def vertex_to_latlng(vertex: Any) -> Any:
     >>> len(lats), round(lats[1], 6)
     (3, 20.91287)
     """
+    shapes = boundaries
+    if check_projection(projection) == "IVEA":
+        from ._ivea_shapes import boundaries as shapes  # IVEA's kernels load on first use
     items, kind = vertex_args(vertex)
     owners, index = parse_vertexes(items, not kind.scalar)
-    ring = boundaries(owners, 0) if owners.size else np.zeros((0, 3, 2))
+    ring = shapes(owners, 0) if owners.size else np.zeros((0, 3, 2))
     pts = ring[np.arange(owners.size), index] if owners.size else np.zeros((0, 2))
     lat, lng = pts[:, 0].astype(np.float64), pts[:, 1].astype(np.float64)
     if kind.scalar:

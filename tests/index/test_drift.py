@@ -279,6 +279,8 @@ SPECS = [
          examples=[(("C400:1",), {}), (("B100:0",), {})]),
     Spec("vertex_to_latlng", dggs.vertex_to_latlng, "pair", ids=False, args=st.tuples(_vertex_ids()), bad=BAD_VERTEXES,
          examples=[(("C400:1",), {}), (("B000:2",), {})]),
+    Spec("ivea_vertex_to_latlng", dggs.Grid("IVEA").vertex_to_latlng, "pair", ids=False, args=st.tuples(_vertex_ids()),
+         bad=BAD_VERTEXES, examples=[(("C400:1",), {})]),
     Spec("vertex_to_cells", dggs.vertex_to_cells, "row", ids=False, args=st.tuples(_vertex_ids()), bad=BAD_VERTEXES,
          examples=[(("C400:1",), {}), (("B000:1",), {})]),
     Spec(

@@ -282,6 +282,7 @@ TEXT_KINDS = {
 VERTEX_FUNCS = {
     "is_valid_vertex": (dggs.is_valid_vertex, bool, "aligned"),
     "vertex_to_latlng": (dggs.vertex_to_latlng, tuple, "pair"),
+    "ivea_vertex_to_latlng": (dggs.Grid("IVEA").vertex_to_latlng, tuple, "pair"),
     "vertex_to_cells": (dggs.vertex_to_cells, list, "rows"),
 }
 EDGE_FUNCS = {
