@@ -26,7 +26,7 @@ from dggs.errors import DggsValueError
 
 from . import _ivea_shapes as ivea_shapes
 from . import circles, dissolve, edges, grid, hierarchy, ids, lines, local, measure, paths, points, polyfill, vertex
-from ._checks import check_densify, check_level
+from ._checks import check_densify, check_level, is_choice
 from ._convert import CELL, VALUE, Op, apply, apply_points, check_points
 from ._kernel import ivea_points as ki
 from .vertex import vertex_to_latlng as _vertex_to_latlng
@@ -120,7 +120,7 @@ class Grid:
 
     def __init__(self, projection: str = "ISEA") -> None:
         name = projection.upper() if isinstance(projection, str) else projection
-        if name not in PROJECTIONS:
+        if not is_choice(name, PROJECTIONS):
             raise DggsValueError(f"projection {projection!r} is not one of {', '.join(PROJECTIONS)}")
         self.projection: str = name
         if name == "ISEA":  # the module-level functions themselves

@@ -21,6 +21,8 @@ CALLS = {
     "circle_to_cells-mode": (lambda v: dggs.circle_to_cells(0.0, 0.0, 1000.0, 5, mode=v), "mode"),
     "polygon_to_cells-mode": (lambda v: dggs.polygon_to_cells(BOX, 3, mode=v), "mode"),
     "geodesic_to_cells-projection": (lambda v: dggs.geodesic_to_cells(0.0, 0.0, 1.0, 1.0, 3, projection=v), "projection"),
+    "Grid-projection": (lambda v: dggs.Grid(v), "projection"),
+    "circle_to_cells-projection": (lambda v: dggs.circle_to_cells(0.0, 0.0, 1000.0, 5, projection=v), "projection"),
 }
 
 
