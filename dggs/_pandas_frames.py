@@ -159,6 +159,23 @@ def first_true(mask: np.ndarray) -> int | None:
     return int(hits[0]) if hits.size else None
 
 
+def column_ids(values: pd.Series) -> np.ndarray:
+    """A column (or index) of ids as numpy, exactly: strings as objects, integers as integers.
+
+    A nullable integer column (``UInt64``, ``Int64``, ``uint64[pyarrow]``) with a missing value goes as
+    objects (Python ints and None), never through float64, which rounds every 64-bit id (and then an error
+    would name a valid neighbour as ``4.99e+18`` instead of the missing value, at the wrong row).
+    """
+    dt = values.dtype
+    if dt == np.dtype("O") or isinstance(dt, pd.StringDtype):
+        return values.to_numpy(dtype=object)
+    if isinstance(dt, pd.api.extensions.ExtensionDtype) and dt.kind in "iu":
+        if values.isna().any():
+            return values.to_numpy(dtype=object, na_value=None)
+        return values.to_numpy(dtype=np.uint64 if dt.kind == "u" else np.int64)
+    return values.to_numpy()
+
+
 class Cells:
     """The cell ids a method reads: a column or the index, with its values and labels."""
 
@@ -171,10 +188,7 @@ class Cells:
         self.column = column
         self.labels = frame.index
         self.values = one_column(frame, column) if column is not None else frame.index.to_series()
-        if self.values.dtype == object or isinstance(self.values.dtype, pd.StringDtype):
-            self.ids: Any = self.values.to_numpy(dtype=object)
-        else:
-            self.ids = self.values.to_numpy()
+        self.ids: Any = column_ids(self.values)
         self.where = f"column {column!r}" if column is not None else "the index (no cell_<level> column; pass column=)"
 
     def reraise(self, exc: DggsValueError, level: int | None = None) -> NoReturn:

@@ -24,8 +24,9 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from dggs._pandas_frames import one_column
+from dggs._pandas_frames import Cells
 from dggs.errors import DggsValueError
+from dggs.index._checks import is_choice
 from dggs.index.hierarchy import cell_to_parent
 from dggs.index.ids import check_level, int_to_str, str_to_int
 
@@ -46,18 +47,21 @@ def _suffixed(right: pd.DataFrame, taken: pd.Index, key: str, rsuffix: str) -> p
     DggsValueError
         ``index_{rsuffix}`` or a suffixed polygon column is already a column (names it).
     """
-    right.index.name = None
+    if isinstance(right.index, pd.MultiIndex):  # one column a level, as geopandas.sjoin keeps them
+        index = [n if n is not None else f"index_{rsuffix}{i}" for i, n in enumerate(right.index.names)]
+    else:
+        right.index.name = None
+        index = [f"index_{rsuffix}"]
     clash = [c for c in right.columns if c != key and c in taken]
     names = {c: f"{c}_{rsuffix}" for c in clash}
-    index = f"index_{rsuffix}"
-    final = [index] + [names.get(c, c) for c in right.columns if c != key]  # the key is joined on
+    final = index + [names.get(c, c) for c in right.columns if c != key]  # the key is joined on
     for name in final:
         if name in taken or final.count(name) > 1:
             raise DggsValueError(
                 f"the join would give two columns {name!r} (this frame's {list(taken)}, the polygons' "
                 f"{list(right.columns)}): pass another rsuffix than {rsuffix!r}, or rename the column"
             )
-    return right.rename(columns=names).reset_index(names=index)
+    return right.rename(columns=names).reset_index(names=index if len(index) > 1 else index[0])
 
 
 def sjoin_cells(
@@ -94,7 +98,8 @@ def sjoin_cells(
     rsuffix : str
         Suffix for polygon columns whose names this frame has too, and for
         the polygons' index, kept as column ``index_{rsuffix}`` (as
-        :func:`geopandas.sjoin` names it).  This frame's columns keep their
+        :func:`geopandas.sjoin` names it; a MultiIndex as one column a level,
+        named after the level, or ``index_{rsuffix}<i>`` for an unnamed one).  This frame's columns keep their
         names; a suffixed name that is already taken is refused, never
         overwritten.
     cells : str, optional
@@ -135,7 +140,7 @@ def sjoin_cells(
     >>> binned.dggs.sjoin_cells(zones, 6, cells="cell")["zone"].to_dict()
     {'a': 'west', 'b': 'west', 'c': 'east'}
     """
-    if how not in _HOW:
+    if not is_choice(how, _HOW):
         raise DggsValueError(f"how {how!r} is not one of {', '.join(_HOW)}")
     if not isinstance(polygons, pd.DataFrame):
         raise DggsValueError(f"polygons must be a GeoDataFrame of (Multi)Polygons, not a {type(polygons).__name__}")
@@ -143,9 +148,13 @@ def sjoin_cells(
     if cells is None:
         left = self.latlng_to_cell(level, lat=lat, lng=lng, column=key, as_int=True)
     else:
-        given = one_column(self._df, cells)
-        ids = given.to_numpy() if given.dtype.kind in "iu" else str_to_int(given.to_numpy())
-        left = self._df.assign(**{key: cell_to_parent(ids, check_level(level))})
+        level = check_level(level)
+        given = Cells(self._df, cells)
+        try:
+            parents = cell_to_parent(str_to_int(given.ids), level)  # either form in, integer ids out
+        except DggsValueError as exc:
+            given.reraise(exc, level)  # naming the row label of the first bad id
+        left = self._df.assign(**{key: parents})
     filled = polygons.dggs.polyfill(level, mode=mode, column=key, as_int=True)
     right = _suffixed(pd.DataFrame(filled.drop(columns=filled.geometry.name)), left.columns, key, rsuffix)
     row = "_row"  # the points' positions, under a name no polygon column has

@@ -20,14 +20,17 @@ from dggs._raster_blocks import each_block
 from dggs._raster_grid import to_wgs84
 from dggs._raster_source import RasterError, RasterSource, open_raster
 from dggs.errors import DggsValueError, LevelMismatchError
+from dggs.index._checks import is_choice
 from dggs.index._convert import cells_in, id_name
 from dggs.index.hierarchy import get_level
 from dggs.index.points import latlng_to_cell
 
-__all__ = ["cells_to_raster", "BURN_MODES"]
+__all__ = ["cells_to_raster", "BURN_MODES", "MAX_PIXELS"]
 
 #: The modes of :func:`cells_to_raster`.
 BURN_MODES = ("center", "area")
+#: Most pixels :func:`cells_to_raster` makes (4 GB of float64): larger grids are refused before allocating.
+MAX_PIXELS = 500_000_000
 
 
 def cells_to_raster(
@@ -75,9 +78,11 @@ def cells_to_raster(
     InvalidCellError, LevelMismatchError
         A bad id; cells of several levels.
     DggsValueError
-        Values not one per cell, a cell given twice, an unknown ``mode``, a missing or doubly given grid.
+        Values not one per cell, a cell given twice, an unknown ``mode``, a missing or doubly given grid,
+        a ``nodata`` that is not a number.
     RasterError
-        ``like`` cannot be read, or has no CRS.
+        ``like`` cannot be read, or has no CRS; the grid's CRS has no transformation to WGS84; the grid
+        has more than :data:`MAX_PIXELS` pixels (refused before anything is allocated).
     StorageError
         ``path`` cannot be written (nothing is written then).
 
@@ -91,13 +96,22 @@ def cells_to_raster(
     >>> out.tolist()
     [[7.0, 7.0], [7.0, 7.0]]
     """
-    if mode not in BURN_MODES:
+    if not is_choice(mode, BURN_MODES):
         raise DggsValueError(f"mode {mode!r} is not one of {', '.join(BURN_MODES)}")
     if isinstance(block_size, bool) or not isinstance(block_size, int) or block_size < 1:
         raise DggsValueError(f"block_size must be a whole number of pixels >= 1, not {block_size!r}")
     ids, vals, level = _cells(cells, values)
     grid = _grid_of(like, transform, shape, crs)
-    out = np.full((grid.height, grid.width), float(nodata))
+    pixels = grid.height * grid.width
+    if pixels > MAX_PIXELS:
+        raise RasterError(
+            f"a grid of {grid.height:,} x {grid.width:,} is {pixels:,} pixels ({pixels * 8 / 2**30:,.1f} GiB of "
+            f"float64), over the limit of {MAX_PIXELS:,}: draw it in windows (smaller transform= and shape=)"
+        )
+    if isinstance(nodata, (bool, np.bool_)) or not isinstance(nodata, (int, float, np.integer, np.floating)):
+        raise DggsValueError(f"nodata {nodata!r} must be a number (the value of pixels no cell gives one)")
+    fill = float(nodata)
+    out = np.full((grid.height, grid.width), fill)
     if ids.size:
         work = _centres if mode == "center" else _areas
         transformer = to_wgs84(grid.crs)
@@ -105,11 +119,11 @@ def cells_to_raster(
         for part in blocks:
             if part is not None:
                 row, col, data = part
-                out[row : row + data.shape[0], col : col + data.shape[1]] = np.where(np.isnan(data), nodata, data)
+                out[row : row + data.shape[0], col : col + data.shape[1]] = np.where(np.isnan(data), fill, data)
     if path is not None:
-        _write(path, out, grid, float(nodata))
+        _write(path, out, grid, fill)
     if hasattr(like, "dims") and hasattr(like, "rio"):
-        return _like_array(like, out, float(nodata))
+        return _like_array(like, out, fill)
     return out
 
 

@@ -47,6 +47,8 @@ def outline_box(lat: np.ndarray, lng: np.ndarray, margin: float) -> Any:
         west, east = -180.0, 180.0
     elif west < -180.0 and east < 180.0:
         west, east = west + 360.0, east + 360.0  # one turn past 180 at most, as polygon_to_cells takes it
+    elif west >= 180.0:
+        west, east = west - 360.0, east - 360.0  # a block wholly past 180 (a raster laid out 0..360)
     return box(west, low, east, high)
 
 
@@ -90,6 +92,12 @@ def centre_values(src: Any, transformer: Any, block: Any, level: int) -> tuple[n
     else:
         x, y = _from_wgs84(src.crs.to_wkt()).transform(lng, lat, errcheck=False)
         x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+    if src.crs.is_geographic:
+        # longitudes of the raster's own turn: a raster laid out 0..360 (or 170..190) holds the centre at -10
+        # at 350; a longitude is put in the turn that starts at the block's westernmost corner
+        t = src.transform
+        west = float(np.nanmin(t.a * ring_c + t.b * ring_r + t.c))
+        x = west + np.mod(x - west, 360.0)
     inverse = ~src.transform
     col = np.floor(inverse.a * x + inverse.b * y + inverse.c) - block.col
     row = np.floor(inverse.d * x + inverse.e * y + inverse.f) - block.row

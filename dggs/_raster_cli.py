@@ -8,6 +8,8 @@ pandas) is imported when the command runs, not when ``dggs`` starts.
 
 from __future__ import annotations
 
+import contextlib
+import os
 import sys
 
 import click
@@ -56,11 +58,23 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
     show = sys.stderr.isatty() if progress is None else progress
     band = list(bands) or None
     if db is not None:
+        from dggs.raster import open_checked
         from dggs.storage import CellStore
 
-        with CellStore(db) as store:
-            result = store.ingest_raster(raster, level, mode=mode, band=band, nodata=nodata, density=density,
-                                         block_size=block_size, replace=replace, progress=show)
+        # checked before the store is created (as ``dggs bin`` does): arguments that can only fail leave no
+        # empty store behind; a new store whose ingest fails later (a pixel of +-inf) is removed again
+        open_checked(raster, level, mode, band, nodata, None, block_size)
+        new = not os.path.exists(db)
+        try:
+            with CellStore(db) as store:
+                result = store.ingest_raster(raster, level, mode=mode, band=band, nodata=nodata, density=density,
+                                             block_size=block_size, replace=replace, progress=show)
+        except BaseException:
+            if new:
+                for tail in ("", "-wal", "-shm", "-journal"):
+                    with contextlib.suppress(OSError):
+                        os.remove(db + tail)
+            raise
         click.echo(f"{result.summary()} -> {db} (level {level})")
         return
     from dggs._raster_parquet import write_partitioned

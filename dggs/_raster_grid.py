@@ -118,13 +118,49 @@ def split_factor(degrees: float) -> int:
 
 
 def to_wgs84(crs: Any) -> Any:
-    """A transformer from ``crs`` to WGS84 (lng, lat), or None for WGS84 geographic itself."""
+    """A transformer from ``crs`` to WGS84 (lng, lat), or None for WGS84 geographic itself.
+
+    Raises
+    ------
+    RasterError
+        PROJ knows no way from ``crs`` to WGS84 (a local engineering CRS, ``LOCAL_CS``), naming it.
+    """
     from pyproj import CRS, Transformer
+    from pyproj.exceptions import CRSError, ProjError
+
+    from dggs._raster_source import RasterError
 
     wgs84 = CRS.from_epsg(4326)
-    if CRS.from_user_input(crs).equals(wgs84, ignore_axis_order=True):
-        return None
-    return Transformer.from_crs(crs, wgs84, always_xy=True)
+    try:
+        if CRS.from_user_input(crs).equals(wgs84, ignore_axis_order=True):
+            return None
+        return Transformer.from_crs(crs, wgs84, always_xy=True)
+    except (ProjError, CRSError) as exc:
+        raise RasterError(f"the CRS {_crs_name(crs)!r} has no transformation to WGS84 ({exc}): the raster cannot be "
+                          "put on the globe; assign its true CRS first") from None
+
+
+def _crs_name(crs: Any) -> str:
+    return str(getattr(crs, "name", None) or crs)
+
+
+def _beyond_pole(transformer: Any, transform: Any) -> float:
+    """How far past a pole (degrees of latitude) a pixel's corner may lie and be moved onto it; 0 for none.
+
+    A geographic raster whose rows are centred on +-90 (ERA5's layout) has its outer edges half a pixel past
+    the poles: the part of those pixels on the globe is kept by putting the corners past a pole on it (at
+    most a pixel past it: anything farther is no raster of the globe).
+    """
+    if transformer is not None and not _geographic_source(transformer):
+        return 0.0
+    return abs(transform.d) + abs(transform.e)
+
+
+def _geographic_source(transformer: Any) -> bool:
+    try:
+        return bool(transformer.source_crs.is_geographic)
+    except AttributeError:  # pragma: no cover - pyproj < 3.1
+        return False
 
 
 def lnglat(transformer: Any, transform: Any, cols: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -132,6 +168,11 @@ def lnglat(transformer: Any, transform: Any, cols: np.ndarray, rows: np.ndarray)
     a, b, c, d, e, f = transform.a, transform.b, transform.c, transform.d, transform.e, transform.f
     x = a * cols + b * rows + c
     y = d * cols + e * rows + f
+    reach = _beyond_pole(transformer, transform)
+    if reach:
+        past = np.abs(y) > 90.0
+        if past.any():
+            y = np.where(past & (np.abs(y) <= 90.0 + reach), np.clip(y, -90.0, 90.0), y)
     if transformer is not None:
         x, y = transformer.transform(x, y, errcheck=False)
         x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)

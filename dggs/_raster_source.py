@@ -85,6 +85,40 @@ def _valid(data: np.ndarray, nodata: Sequence[Any], masks: np.ndarray | None) ->
     return ok
 
 
+def _refuse_infinity(data: np.ndarray, valid: np.ndarray, bands: list[int], name: str, row: int, col: int) -> None:
+    """Refuse a pixel holding +-inf as data (not nodata, not masked), as every other ingest refuses infinity.
+
+    Raises
+    ------
+    RasterError
+        Naming the raster, the band, the pixel (row, column of the raster) and the value.
+    """
+    if data.dtype.kind != "f":
+        return
+    bad = np.isinf(data) & valid[None]
+    if bad.any():
+        b, r, c = (int(i[0]) for i in np.nonzero(bad))
+        raise RasterError(
+            f"{name} has {float(data[b, r, c])!r} at row {row + r}, column {col + c} of band {bands[b]}: infinity is "
+            "not a value (give it as nodata=, or mask it)"
+        )
+
+
+def _check_nodata(nodata: Any) -> Any:
+    """``nodata`` as given when it is None or one real number.
+
+    Raises
+    ------
+    RasterError
+        Anything else (a string, a list, a bool), naming it.
+    """
+    if nodata is None:
+        return None
+    if isinstance(nodata, (bool, np.bool_)) or not isinstance(nodata, (int, float, np.integer, np.floating)):
+        raise RasterError(f"nodata {nodata!r} must be one number (the value of pixels without data) or None")
+    return nodata
+
+
 def _window(window: Any, height: int, width: int, name: str) -> tuple[int, int, int, int]:
     """``(row_off, col_off, rows, cols)`` of a window: None (the whole raster), a rasterio Window or 4 ints."""
     if window is None:
@@ -97,7 +131,11 @@ def _window(window: Any, height: int, width: int, name: str) -> tuple[int, int, 
             parts = tuple(window)
         except TypeError:
             parts = ()
-    if len(parts) != 4 or not all(float(p).is_integer() for p in parts):
+    try:
+        whole = len(parts) == 4 and all(not isinstance(p, (bool, str, bytes)) and float(p).is_integer() for p in parts)
+    except (TypeError, ValueError, OverflowError):
+        whole = False
+    if not whole:
         raise RasterError(f"window {window!r} of {name} is not (row_off, col_off, height, width) in whole pixels")
     r, c, h, w = (int(p) for p in parts)
     if r < 0 or c < 0 or h < 1 or w < 1 or r + h > height or c + w > width:
@@ -108,9 +146,14 @@ def _window(window: Any, height: int, width: int, name: str) -> tuple[int, int, 
 def _bands(band: Any, count: int, name: str) -> list[int]:
     if band is None:
         return list(range(1, count + 1))
-    chosen = [band] if isinstance(band, (int, np.integer)) and not isinstance(band, bool) else list(band)
+    if isinstance(band, (int, np.integer)) and not isinstance(band, (bool, np.bool_)):
+        chosen = [band]
+    elif isinstance(band, (list, tuple, np.ndarray)):
+        chosen = list(band)
+    else:
+        raise RasterError(f"band {band!r} must be a band number (1-based) or a list of them")
     for b in chosen:
-        if isinstance(b, bool) or not isinstance(b, (int, np.integer)) or not 1 <= b <= count:
+        if isinstance(b, (bool, np.bool_)) or not isinstance(b, (int, np.integer)) or not 1 <= b <= count:
             raise RasterError(f"band {b!r} is out of range: {name} has bands 1..{count}")
     if not chosen:
         raise RasterError(f"no band chosen of {name}")
@@ -141,6 +184,7 @@ def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any =
         A missing file, one GDAL cannot read as a raster, no CRS, a band or window out of range
         (each naming the file and the value).
     """
+    nodata = _check_nodata(nodata)
     if hasattr(source, "dims") and hasattr(source, "values"):
         return _from_xarray(source, band, nodata, window)
     import rasterio
@@ -159,9 +203,17 @@ def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any =
     if dataset.crs is None:
         dataset.close()
         raise RasterError(f"{name} has no CRS: set one (e.g. gdal_edit.py -a_srs EPSG:4326) to bin it")
-    bands = _bands(band, dataset.count, name)
+    try:
+        bands = _bands(band, dataset.count, name)
+        r0, c0, h, w = _window(window, dataset.height, dataset.width, name)
+    except RasterError:
+        dataset.close()
+        raise
     values = [dataset.nodata if nodata is None else nodata] * len(bands)
-    r0, c0, h, w = _window(window, dataset.height, dataset.width, name)
+    # GDAL's mask of a band is its own mask band (per dataset, alpha) or one made from the file's nodata value;
+    # nodata= replaces the file's nodata value, never a mask band (docs/raster.md: masks are honoured)
+    own_masks = [_real_mask(dataset.mask_flag_enums[b - 1]) for b in bands]
+    read_masks = nodata is None or any(own_masks)
 
     def read(row: int, col: int, rows: int, cols: int) -> tuple[np.ndarray, np.ndarray]:
         from rasterio.windows import Window
@@ -170,16 +222,29 @@ def open_raster(source: Any, band: Any = None, nodata: Any = None, window: Any =
         try:
             with _small_block_cache():
                 data = dataset.read(bands, window=win)
-                masks = dataset.read_masks(bands, window=win) if nodata is None else None
+                masks = dataset.read_masks(bands, window=win) if read_masks else None
         except Exception as exc:  # noqa: BLE001 - GDAL's errors on a damaged file: name it
             raise RasterError(f"{name} cannot be read at rows {row}..{row + rows} ({exc})") from None
-        return data, _valid(data, values, masks)
+        if masks is not None and nodata is not None:
+            for i, own in enumerate(own_masks):
+                if not own:  # made from the file's nodata value, which nodata= replaces
+                    masks[i] = 255
+        valid = _valid(data, values, masks)
+        _refuse_infinity(data, valid, bands, name, row, col)
+        return data, valid
 
     from pyproj import CRS
 
     crs = CRS.from_user_input(dataset.crs.to_wkt())
     return RasterSource(name, crs, _shifted(dataset.transform, r0, c0), h, w, bands, values, r0, c0, read,
                         dataset.dtypes[0])
+
+
+def _real_mask(flags: Any) -> bool:
+    """Whether GDAL's mask flags of a band name a mask of its own (a mask band or alpha), not one made from nodata."""
+    from rasterio.enums import MaskFlags
+
+    return bool({MaskFlags.per_dataset, MaskFlags.alpha} & set(flags)) and MaskFlags.nodata not in flags
 
 
 def _shifted(transform: Any, row: int, col: int) -> Any:
@@ -195,9 +260,12 @@ def _from_xarray(array: Any, band: Any, nodata: Any, window: Any) -> RasterSourc
     except ImportError as exc:  # pragma: no cover - the raster extra installs it
         raise RasterError("an xarray raster needs rioxarray: pip install 'dggs[raster]'") from exc
     name = f"DataArray {array.name!r}" if array.name is not None else "the DataArray"
+    array = _spatial_dims(array, name)
     crs = array.rio.crs
     if crs is None:
         raise RasterError(f"{name} has no CRS: set one with .rio.write_crs('EPSG:4326')")
+    for dim in (array.rio.y_dim, array.rio.x_dim):
+        _check_even(array, dim, name)
     data = array if "band" in array.dims else array.expand_dims(band=[1])
     extra = [d for d in data.dims if d not in ("band", array.rio.y_dim, array.rio.x_dim)]
     if extra:
@@ -213,10 +281,66 @@ def _from_xarray(array: Any, band: Any, nodata: Any, window: Any) -> RasterSourc
         part = data.isel(band=[b - 1 for b in bands], **{array.rio.y_dim: slice(row, row + rows),
                                                          array.rio.x_dim: slice(col, col + cols)})
         block = np.asarray(part.values)
-        return block, _valid(block, values, None)
+        valid = _valid(block, values, None)
+        _refuse_infinity(block, valid, bands, name, row, col)
+        return block, valid
 
     from pyproj import CRS
 
     transform = _shifted(array.rio.transform(), r0, c0)
     return RasterSource(name, CRS.from_user_input(crs.to_wkt()), transform, h, w, bands, values, r0, c0, read,
                         data.dtype)
+
+
+#: Dimension names read as (y, x) when rioxarray finds no x and y: the CF names of latitude and longitude.
+_LATLON_DIMS = (("lat", "lon"), ("latitude", "longitude"), ("Lat", "Lon"), ("Latitude", "Longitude"), ("LAT", "LON"))
+
+
+def _spatial_dims(array: Any, name: str) -> Any:
+    """``array`` with its spatial dimensions known to rioxarray: x/y, or lat/lon (and spellings) set as them.
+
+    Raises
+    ------
+    RasterError
+        No dimension pair rioxarray or this list knows (naming the dimensions).
+    """
+    from rioxarray.exceptions import MissingSpatialDimensionError
+
+    try:
+        array.rio.y_dim, array.rio.x_dim  # noqa: B018 - raises when rioxarray finds none
+        return array
+    except MissingSpatialDimensionError:
+        pass
+    for y, x in _LATLON_DIMS:
+        if y in array.dims and x in array.dims:
+            return array.rio.set_spatial_dims(x_dim=x, y_dim=y)
+    raise RasterError(
+        f"{name} has dimensions {list(array.dims)}: no x/y or lat/lon pair to bin; name them, or call "
+        ".rio.set_spatial_dims(x_dim=..., y_dim=...)"
+    )
+
+
+#: How far from even a coordinate's steps may be, as a fraction of the step (float32 coordinates' rounding).
+EVEN_TOLERANCE = 1e-3
+
+
+def _check_even(array: Any, dim: str, name: str) -> None:
+    """Refuse unevenly spaced coordinates: one affine transform (rioxarray's) cannot draw their pixels.
+
+    Raises
+    ------
+    RasterError
+        Naming the dimension and the first step that differs.
+    """
+    if dim not in array.coords or array.sizes[dim] < 3:
+        return
+    values = np.asarray(array[dim].values, dtype=np.float64)
+    steps = np.diff(values)
+    step = (values[-1] - values[0]) / (values.size - 1)
+    off = np.abs(steps - step) > EVEN_TOLERANCE * abs(step)
+    if step == 0 or off.any():
+        i = int(np.flatnonzero(off)[0]) if off.any() else 0
+        raise RasterError(
+            f"{name}'s {dim} coordinates are not evenly spaced ({values[i]!r} to {values[i + 1]!r} is a step of "
+            f"{steps[i]!r}, the mean step {step!r}): a raster's pixels are one size; regrid it (e.g. .interp) first"
+        )

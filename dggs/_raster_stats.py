@@ -13,7 +13,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Partials", "block_partials", "combine"]
+__all__ = ["Partials", "block_partials", "combine", "SLIVER", "shared"]
+
+#: A pixel meets a cell when the area they share is more than this fraction of the smaller of the two.
+#: Less is the rounding of the cut, not area: a pixel that touches a cell only at a point or along an
+#: edge (the top row of a global raster round a cell with a corner at the pole) gets a piece of about
+#: 1e-20 m² from the kernel, 1e-28 of the pixel; the weights themselves are good to about 1e-9 at best.
+SLIVER = 1e-9
 
 
 @dataclass
@@ -27,6 +33,22 @@ class Partials:
     high: np.ndarray  # (bands, cells)
     count: np.ndarray  # valid pixels touching the cell
     classes: dict[str, np.ndarray] = field(default_factory=dict)  # long form: cell, value, area
+
+
+def shared(pixel: np.ndarray, cell: np.ndarray, area: np.ndarray, total: np.ndarray, cell_m2: float) -> np.ndarray:
+    """Which pieces are shared area (more than :data:`SLIVER` of the smaller of their pixel and cell).
+
+    ``total`` is each pixel's whole area (all its pieces), ``cell_m2`` the area of a cell of the level.
+    Every statistic is over these pieces only (docs/raster.md, "The modes"): the minimum, maximum and
+    count of a cell take only the pixels with positive shared area, as exactextract does.
+
+    Examples
+    --------
+    >>> shared(np.array([0, 0]), np.array([5, 6]), np.array([1e6, 3e-20]), np.array([1e6]), 5e9).tolist()
+    [True, False]
+    """
+    keep: np.ndarray = area > SLIVER * np.minimum(total[pixel], cell_m2)
+    return keep
 
 
 def block_partials(

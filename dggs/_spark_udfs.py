@@ -33,7 +33,8 @@ import numpy as np
 import pyarrow as pa
 import shapely
 
-from dggs.errors import DggsValueError, InvalidCellError
+from dggs.errors import CoordinateError, DggsValueError, InvalidCellError
+from dggs.index._checks import is_choice
 from dggs.index.dissolve import cells_to_polygons
 from dggs.index.grid import grid_disk
 from dggs.index.hierarchy import cell_to_children, cell_to_parent, get_level, is_valid_cell
@@ -43,7 +44,7 @@ from dggs.index.paths import grid_path_cells
 from dggs.index.points import cell_to_latlng, cell_to_polygon, latlng_to_cell
 from dggs.index.polyfill import polygon_to_cells
 
-__all__ = ["FUNCTIONS", "ON_INVALID", "batch_function"]
+__all__ = ["FUNCTIONS", "ON_INVALID", "batch_function", "ColumnTypeError"]
 
 ON_INVALID = ("raise", "null")
 _LATLNG = "struct<lat:double,lng:double>"
@@ -86,8 +87,30 @@ def _ids(a: Any) -> np.ndarray:
     return ids
 
 
+class ColumnTypeError(DggsValueError):
+    """A column of a type the function cannot take (not a bad value: ``on_invalid="null"`` does not hide it)."""
+
+
 def _nums(a: Any, dtype: Any) -> np.ndarray:
-    return np.asarray(a.to_numpy(zero_copy_only=False), dtype=dtype)
+    """A NULL-free Arrow array of numbers (or of strings spelling them) as ``dtype``; raises naming a bad value."""
+    if pa.types.is_integer(a.type):
+        return np.asarray(a.to_numpy(zero_copy_only=False), dtype=dtype)
+    if pa.types.is_floating(a.type) or pa.types.is_decimal(a.type):
+        values = np.asarray(a.to_numpy(zero_copy_only=False), dtype=np.float64)
+        if np.dtype(dtype).kind in "iu":  # a level or k given as doubles: whole numbers only
+            whole = np.isfinite(values) & (np.floor(values) == values) & (np.abs(values) < 2.0**62)
+            if not whole.all():
+                raise DggsValueError(f"{float(values[~whole][0])!r} is not a whole number")
+        return values.astype(dtype)
+    if not (pa.types.is_string(a.type) or pa.types.is_large_string(a.type)):
+        raise ColumnTypeError(f"expected a column of numbers, not {a.type}")
+    out = np.zeros(len(a), dtype=dtype)
+    for i, v in enumerate(a.to_pylist()):  # a string column: each value a number ('n/a' is a bad value of its row)
+        try:
+            out[i] = float(v) if np.dtype(dtype).kind == "f" else int(v)
+        except (TypeError, ValueError, OverflowError):
+            raise CoordinateError(f"{v!r} is not a number") from None
+    return out
 
 
 def _by_value(groups: np.ndarray, compute: Callable[[Any, int], Any]) -> list[tuple[Any, Any]]:
@@ -181,6 +204,9 @@ def _path(a: Any, b: Any) -> Any:
 
 def _dissolve(cells: Any) -> Any:
     """One WKB outline per row of a list<id> array (NULL elements skipped): each row is its own set."""
+    if not (pa.types.is_list(cells.type) or pa.types.is_large_list(cells.type) or pa.types.is_fixed_size_list(cells.type)):
+        raise ColumnTypeError(f"expected an array of cell ids a row (array<string> or array<bigint>), not {cells.type}: "
+                              "collect them first (collect_list)")
     out = []
     for i in range(len(cells)):
         values = cells[i].values
@@ -226,6 +252,14 @@ def _level(cell: Any) -> Any:
 
 
 def _is_valid(cell: Any) -> Any:
+    """Never raises: a column of any other type than ids (numbers, strings, bytes) is all False."""
+    try:
+        return _is_valid_ids(cell)
+    except (pa.ArrowException, TypeError, ValueError, OverflowError):
+        return pa.array(np.zeros(len(cell), dtype=bool), type=pa.bool_())
+
+
+def _is_valid_ids(cell: Any) -> Any:
     if pa.types.is_integer(cell.type):
         values = cell.to_numpy()
         ids = values.view(np.uint64) if values.dtype == np.int64 else values.astype(np.uint64)
@@ -308,9 +342,9 @@ def batch_function(name: str, on_invalid: str = "raise") -> Callable[..., Any]:
     >>> batch_function("dggs_get_level")(pa.array([None, "C401"])).to_pylist()
     [None, 3]
     """
-    if name not in _COMPUTE:
+    if not is_choice(name, _COMPUTE):
         raise DggsValueError(f"{name!r} is not a dggs Spark function (one of {', '.join(FUNCTIONS)})")
-    if on_invalid not in ON_INVALID:
+    if not is_choice(on_invalid, ON_INVALID):
         raise DggsValueError(f"on_invalid={on_invalid!r} is not one of {ON_INVALID}")
     compute = _COMPUTE[name]
     typ = FUNCTIONS[name][1]
@@ -326,8 +360,12 @@ def batch_function(name: str, on_invalid: str = "raise") -> Callable[..., Any]:
         sub = args if rows.size == n else [a.take(pa.array(rows)) for a in args]
         try:
             result = compute(*sub)
+        except ColumnTypeError as exc:  # the column, not a value: whatever on_invalid says
+            raise ColumnTypeError(f"{name}: {exc}") from None
         except DggsValueError as exc:
             result, rows = _bad_rows(name, compute, sub, rows, on_invalid, exc)
+        except (pa.ArrowException, TypeError, ValueError, AttributeError, OverflowError) as exc:
+            raise ColumnTypeError(f"{name} cannot take columns of type ({', '.join(str(a.type) for a in args)}): {exc}") from None
         return _spread(result, rows, n, typ)
 
     fn.__name__ = fn.__qualname__ = name

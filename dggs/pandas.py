@@ -38,7 +38,7 @@ from typing import Any
 import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError, InvalidCellError, LevelMismatchError
-from dggs.index._checks import check_level
+from dggs.index._checks import check_level, is_choice
 from dggs.index._many import each
 from dggs.index.hierarchy import cell_to_parent
 from dggs.index.points import cell_to_polygon, latlng_to_cell
@@ -345,7 +345,7 @@ class DggsAccessor:
         'Polygon'
         """
         level = check_level(level)
-        if mode not in _MODES:
+        if not is_choice(mode, _MODES):
             raise DggsValueError(f"mode {mode!r} is not one of {', '.join(_MODES)}")
         df = self._df
         if not is_geo(df):

@@ -24,9 +24,9 @@ from dggs._raster_frames import center_frame, to_xarray, weighted_frame
 from dggs._raster_grid import to_wgs84
 from dggs._raster_pieces import block_pieces
 from dggs._raster_source import RasterError, RasterSource, open_raster
-from dggs._raster_stats import Partials, block_partials, combine
+from dggs._raster_stats import Partials, block_partials, combine, shared
 from dggs.errors import DggsValueError
-from dggs.index._checks import check_level
+from dggs.index._checks import check_level, is_choice
 
 __all__ = ["raster_to_cells", "cells_to_raster", "MODES", "OUTPUTS", "RasterError"]
 
@@ -142,7 +142,7 @@ def open_checked(source: Any, level: int, mode: str, band: Any, nodata: Any, win
 ]:
     """The arguments of :func:`raster_to_cells` checked, and the raster opened (the errors it documents)."""
     level = check_level(level)
-    if mode not in MODES:
+    if not is_choice(mode, MODES):
         raise DggsValueError(f"mode {mode!r} is not one of {', '.join(MODES)}")
     if isinstance(block_size, bool) or not isinstance(block_size, int) or block_size < 1:
         raise DggsValueError(f"block_size must be a whole number of pixels >= 1, not {block_size!r}")
@@ -185,8 +185,19 @@ def _weighted_block(src: RasterSource, transformer: Any, block: Any, level: int,
         return None
     rows, cols = block.shape
     total = np.bincount(pixel, weights=area, minlength=rows * cols)
+    keep = shared(pixel, cell, area, total, _cell_m2(level))  # points and edges in common are no shared area
+    if not keep.all():
+        pixel, cell, area = pixel[keep], cell[keep], area[keep]
+        if not pixel.size:
+            return None
     values = block.data.reshape(block.data.shape[0], rows * cols)
     return block_partials(pixel, cell, area, total, values, mode, density, split=split)
+
+
+def _cell_m2(level: int) -> float:
+    from dggs.index.measure import cell_area
+
+    return float(cell_area(level, unit="m^2"))
 
 
 def _center_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Any:

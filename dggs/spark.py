@@ -46,6 +46,7 @@ from typing import Any
 from dggs import errors
 from dggs._spark_udfs import FUNCTIONS, ON_INVALID, batch_function
 from dggs.errors import DggsValueError
+from dggs.index._checks import is_choice
 
 try:  # the optional extra
     import pyspark
@@ -76,7 +77,7 @@ def _udf(name: str, on_invalid: str) -> Any:
 
 
 def _check_on_invalid(on_invalid: str) -> str:
-    if on_invalid not in ON_INVALID:
+    if not is_choice(on_invalid, ON_INVALID):
         raise DggsValueError(f"on_invalid={on_invalid!r} is not one of {ON_INVALID}")
     return on_invalid
 

@@ -17,7 +17,7 @@ from dggs.errors import DggsValueError, LevelError, TooManyCellsError
 from ._kernel.bits import MAX_LEVEL
 
 __all__ = ["MAX_CELLS", "MAX_POINTS", "K_LIMIT", "check_point_count", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows",
-           "check_projection"]
+           "check_projection", "is_choice"]
 
 #: Default limit on the cells one call may return (400 MB of integer ids).
 MAX_CELLS = 50_000_000
@@ -197,6 +197,21 @@ def _plain(v: Any) -> Any:
     return v.item() if isinstance(v, np.generic) else v
 
 
+def is_choice(value: Any, choices: Any) -> bool:
+    """Whether ``value`` is one of the string ``choices`` (a unit, a mode); never raises.
+
+    An array, list or other unhashable or array-like value is no choice (``value in choices``
+    would compare it element-wise, and numpy then raises "truth value ... is ambiguous"), so
+    the verb raises its own typed error naming the argument.
+
+    Examples
+    --------
+    >>> is_choice("km", ("m", "km")), is_choice(np.array(["km"]), ("m", "km"))
+    (True, False)
+    """
+    return isinstance(value, str) and value in choices
+
+
 def check_projection(projection: Any) -> str:
     """``projection`` (a verb's keyword, which :class:`dggs.Grid` passes) as ``"ISEA"`` or ``"IVEA"``.
 
@@ -205,6 +220,6 @@ def check_projection(projection: Any) -> str:
     DggsValueError
         Any other value (the message names it).
     """
-    if projection not in ("ISEA", "IVEA"):
+    if not is_choice(projection, ("ISEA", "IVEA")):
         raise DggsValueError(f"projection {projection!r} is not one of ISEA, IVEA")
     return str(projection)

@@ -54,7 +54,17 @@ def _int_shadow(v: int) -> int:
 
 
 def _leaf(x: Any, back: bool) -> Any:
-    """One leaf to its shadow (``back``: a shadow to its edge); anything else unchanged."""
+    """One leaf to its shadow (``back``: a shadow to its edge); anything else unchanged.
+
+    ASCII bytes are read as the string they spell and given back as bytes (as the cell
+    converters read them), so ``b"C401"`` is no edge and ``b"C40.1"`` is the edge ``"C40.1"``.
+    """
+    if isinstance(x, (bytes, bytearray)):  # np.bytes_ too
+        try:
+            text = bytes(x).decode("ascii")
+        except UnicodeDecodeError:
+            return x if back else b""
+        return _leaf(text, back).encode("ascii")
     if isinstance(x, str):
         if back:
             return x[:-1] + SEP + x[-1] if x else x
@@ -140,7 +150,9 @@ def to_shadow(obj: Any) -> Any:
 
 def is_edge(x: Any) -> bool:
     """Whether one leaf is a well-formed edge id of either form (its shadow is a valid cell)."""
-    s = _leaf(x, False) if isinstance(x, (str, int, np.integer)) else None
+    s = _leaf(x, False) if isinstance(x, (str, bytes, bytearray, int, np.integer)) else None
+    if isinstance(s, bytes):
+        s = s.decode("ascii")
     if isinstance(s, str):
         return bool(s) and parse_str(s) != 0
     return isinstance(s, int) and s != 0 and valid_int(s)

@@ -20,7 +20,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_max_cells, check_projection, check_size
+from ._checks import check_level, check_max_cells, check_projection, check_size, is_choice
 from ._convert import as_float_scalar, ids_array
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
@@ -122,7 +122,7 @@ def _check_args(lat: Any, lng: Any, radius_m: Any, mode: Any) -> tuple[float, fl
     radius = float(radius_m)
     if not (0.0 <= radius <= MAX_RADIUS_M):
         raise DggsValueError(f"radius_m {radius_m!r} must be a distance in metres from 0 to {MAX_RADIUS_M:,.0f}")
-    if mode not in CIRCLE_MODES:
+    if not is_choice(mode, CIRCLE_MODES):
         raise DggsValueError(f"mode {mode!r} must be one of {', '.join(map(repr, CIRCLE_MODES))}")
     return lat, ((lng + 180.0) % 360.0) - 180.0, radius
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError, LevelError
 
-from ._checks import check_densify, check_projection
+from ._checks import check_densify, check_projection, is_choice
 from ._convert import Entry, cells_in, id_name, is_valid_any, pair, values_out
 from ._edge_ids import CELL, CELL_PAIR, EDGE_OUT, VALUE, apply_edge, edges_in, edges_out, to_shadow
 from ._kernel import edges as ke
@@ -291,7 +291,7 @@ def edge_length(edge: Any, unit: str = "m", *, projection: str = "ISEA") -> Any:
     >>> round(edge_length("C401.1", unit="km"), 1)
     726.3
     """
-    if unit not in ("m", "km", "rads"):
+    if not is_choice(unit, ("m", "km", "rads")):
         raise DggsValueError(f"unit {unit!r} must be 'm', 'km' or 'rads'")
     which, scale = (1, 1.0) if unit == "rads" else (0, _UNITS[unit])
     kernel = _edge_kernel(check_projection(projection))

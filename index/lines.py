@@ -16,8 +16,9 @@ import numpy as np
 
 from dggs.errors import CoordinateError, DggsValueError
 
-from ._checks import check_level, check_projection
+from ._checks import check_level, check_projection, is_choice
 from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, pair_kind, values_out
+from ._convert.coords import _container
 from ._kernel import points as kp
 
 __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells", "DISTANCE_UNITS"]
@@ -36,7 +37,7 @@ DISTANCE_UNITS = ("m", "km", "rad")
 
 
 def _check_unit(unit: Any) -> str:
-    if unit not in DISTANCE_UNITS:
+    if not is_choice(unit, DISTANCE_UNITS):
         raise DggsValueError(f"unit {unit!r} must be one of {', '.join(map(repr, DISTANCE_UNITS))}")
     checked: str = unit
     return checked
@@ -161,7 +162,7 @@ def cell_centers_distance(a: Any, b: Any, unit: str = "m", *, projection: str = 
 def geodesic_to_cells(
     lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool = False, max_cells: int | None = None,
     *, projection: str = "ISEA",
-) -> np.ndarray:
+) -> Any:
     """The cells along the WGS84 geodesic from one point to another, in order (h3's ``grid_path_cells``).
 
     The one-segment case of :func:`dggs.line_to_cells`: the geodesic
@@ -191,6 +192,9 @@ def geodesic_to_cells(
     Returns
     -------
     ndarray of str or uint64
+        For containers of end points (broadcast against each other, as :func:`dggs.latlng_to_cell`),
+        one such array per line, in the coordinates' kind of container (a list of arrays for lists,
+        an object array for numpy, a Series of arrays, a pyarrow list array).
 
     Raises
     ------
@@ -214,6 +218,8 @@ def geodesic_to_cells(
     """
     level = check_level(level)
     projection = check_projection(projection)
+    if any(_container(v) is not None for v in (lat1, lng1, lat2, lng2)):
+        return _geodesics(lat1, lng1, lat2, lng2, level, as_int, max_cells, projection)
     lat1, lng1, lat2, lng2 = (
         as_float_scalar(v, n) for v, n in ((lat1, "latitude"), (lng1, "longitude"), (lat2, "latitude"), (lng2, "longitude"))
     )
@@ -221,3 +227,35 @@ def geodesic_to_cells(
     from .paths import line_to_cells  # the compiled tracer of polylines (paths imports nothing of this module)
 
     return line_to_cells(np.array([[lat1, lng1], [lat2, lng2]]), level, as_int, max_cells, projection=projection)
+
+
+def _geodesics(
+    lat1: Any, lng1: Any, lat2: Any, lng2: Any, level: int, as_int: bool, max_cells: int | None, projection: str
+) -> Any:
+    """:func:`geodesic_to_cells` of each line of containers of end points, in the first container's kind."""
+    a_lat, a_lng, ka = coords_in(lat1, lng1)
+    b_lat, b_lng, kb = coords_in(lat2, lng2)
+    sa, sb = ka.shape, kb.shape
+    try:
+        shape = np.broadcast_shapes(sa, sb)
+    except ValueError:
+        raise CoordinateError(f"start points of shape {sa} do not match end points of shape {sb}") from None
+    a_lat, a_lng, b_lat, b_lng = (
+        np.broadcast_to(v.reshape(s), shape).reshape(-1) for v, s in ((a_lat, sa), (a_lng, sa), (b_lat, sb), (b_lng, sb))
+    )
+    lines = np.empty(a_lat.size, dtype=object)
+    for i in range(a_lat.size):
+        try:
+            lines[i] = geodesic_to_cells(
+                float(a_lat[i]), float(a_lng[i]), float(b_lat[i]), float(b_lng[i]), level, as_int, max_cells,
+                projection=projection,
+            )
+        except DggsValueError as e:
+            raise type(e)(f"{e} (line at index {i})" if a_lat.size > 1 else str(e)) from None
+    kind = pair_kind(ka, kb, shape)
+    if kind.container == "arrow":
+        import pyarrow as pa
+
+        arr = pa.array([line.tolist() for line in lines])
+        return pa.chunked_array([arr], type=arr.type) if kind.chunked else arr
+    return values_out(lines, kind)

@@ -10,7 +10,7 @@ import numpy as np
 from dggs.errors import DggsValueError
 from dggs.geometry.authalic import WGS84
 
-from ._checks import check_level
+from ._checks import check_level, is_choice
 from ._convert import VALUE, Op, apply, levels_in, values_out
 from ._kernel import hierarchy as kh
 from ._kernel.bits import MAX_LEVEL
@@ -67,7 +67,7 @@ def cell_area(cell_or_level: Any, unit: str = "m^2") -> Any:
     >>> cell_area("C401") == cell_area(3)
     True
     """
-    if unit not in (*_UNITS, "rads^2"):
+    if not is_choice(unit, (*_UNITS, "rads^2")):
         raise DggsValueError(f"unit {unit!r} is not one of m^2, km^2, rads^2")
     levels = levels_in(cell_or_level)
     if levels is not None:

@@ -12,7 +12,7 @@ from shapely.geometry import MultiPolygon, Polygon, box
 from dggs.errors import DggsValueError, TooManyCellsError
 
 from ._bbox_fill import bbox_fill
-from ._checks import check_level, check_max_cells, check_size
+from ._checks import check_level, check_max_cells, check_size, is_choice
 from ._convert import ids_array
 from ._kernel import fill as kfill
 from ._kernel import hierarchy as kh
@@ -208,11 +208,11 @@ def polygon_to_cells(
     [232, 276, 338]
     """
     level = check_level(level)
-    if mode not in FILL_MODES:
+    if not is_choice(mode, FILL_MODES):
         raise DggsValueError(f"mode {mode!r} must be one of {', '.join(map(repr, FILL_MODES))}")
     if not isinstance(polygon, (Polygon, MultiPolygon)):
         raise DggsValueError(f"polygon must be a shapely Polygon or MultiPolygon, not {type(polygon).__name__}")
-    if projection not in ("ISEA", "IVEA"):
+    if not is_choice(projection, ("ISEA", "IVEA")):
         raise DggsValueError(f"projection {projection!r} is not one of ISEA, IVEA")
     found = (_fill(polygon, level, max_cells, mode=mode, projection=projection) if not polygon.is_empty
              else np.zeros(0, dtype=np.uint64))

@@ -26,10 +26,10 @@ from dggs.errors import DggsValueError
 
 from . import _ivea_shapes as ivea_shapes
 from . import circles, dissolve, edges, grid, hierarchy, ids, lines, local, measure, paths, points, polyfill, vertex
-from ._checks import check_densify, check_level
+from ._checks import check_densify, check_level, is_choice
 from ._convert import CELL, VALUE, Op, apply, apply_points, check_points
-from ._corners import check_canonical, parse_vertex
 from ._kernel import ivea_points as ki
+from .vertex import vertex_to_latlng as _vertex_to_latlng
 
 __all__ = ["Grid", "PROJECTIONS", "GEOMETRIC", "TOPOLOGICAL", "MODULE_ONLY"]
 
@@ -120,7 +120,7 @@ class Grid:
 
     def __init__(self, projection: str = "ISEA") -> None:
         name = projection.upper() if isinstance(projection, str) else projection
-        if name not in PROJECTIONS:
+        if not is_choice(name, PROJECTIONS):
             raise DggsValueError(f"projection {projection!r} is not one of {', '.join(PROJECTIONS)}")
         self.projection: str = name
         if name == "ISEA":  # the module-level functions themselves
@@ -177,12 +177,9 @@ class Grid:
         """
         return polyfill.polygon_to_cells(polygon, level, mode, as_int, max_cells, projection=self.projection)
 
-    def vertex_to_latlng(self, vertex: Any) -> tuple[float, float]:
-        """The (lat, lng) of a vertex: the same vertex ids on both grids, this grid's corner; see :func:`dggs.vertex_to_latlng`."""
-        owner, index = parse_vertex(vertex)
-        check_canonical(vertex, owner, index)
-        lat, lng = ivea_shapes.boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
-        return float(lat), float(lng)
+    def vertex_to_latlng(self, vertex: Any) -> Any:
+        """The (lat, lng) of a vertex (or of a container of them): the same vertex ids on both grids, this grid's corner; see :func:`dggs.vertex_to_latlng`."""
+        return _vertex_to_latlng(vertex, projection=self.projection)
 
     def cell_centers_distance(self, a: Any, b: Any, unit: str = "m") -> Any:
         """Distance between this grid's centres of cells ``a`` and ``b``; see :func:`dggs.cell_centers_distance`."""

@@ -29,12 +29,14 @@ import numpy as np
 
 from dggs.errors import DggsValueError, TooManyCellsError
 
-from ._checks import check_max_cells, check_radius, check_size
+from ._checks import check_max_cells, check_projection, check_radius, check_size
 from ._convert import ROWS, VALUES, Op, apply, format_int
-from ._corners import MAX_NEIGHBOURS, all_fans, check_canonical, fans, format_vertex, parse_vertex, vertex_keys
+from ._convert.values import values_out
+from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, fans, format_vertex, vertex_keys
 from ._kernel import hierarchy as kh
 from ._kernel.grid_tables import disk_size_bound
 from ._shapes import boundaries
+from ._vertex_ids import parse_vertexes, vertex_args, vertex_flags
 
 __all__ = [
     "cell_to_vertexes",
@@ -158,58 +160,118 @@ def cell_to_vertexes(cell: Any) -> Any:
     return apply(_VERTEXES, cell)
 
 
-def is_valid_vertex(vertex: Any) -> bool:
+def is_valid_vertex(vertex: Any) -> Any:
     """Whether ``vertex`` is a vertex id as :func:`cell_to_vertexes` gives them (never raises).
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+
+    Returns
+    -------
+    bool, or the input's kind of container of bool
+        One flag per vertex id (a malformed container gives False).
 
     Examples
     --------
     >>> is_valid_vertex("C400:1"), is_valid_vertex("C401:0"), is_valid_vertex("C401")
     (True, False, False)
+    >>> is_valid_vertex(cell_to_vertexes("C401") + ["C401"])
+    [True, True, True, False]
     """
     try:
-        check_canonical(vertex, *parse_vertex(vertex))
+        items, kind = vertex_args(vertex)
     except DggsValueError:
         return False
-    return True
+    flags = vertex_flags(items)
+    return values_out(flags, kind)
 
 
-def vertex_to_latlng(vertex: Any) -> tuple[float, float]:
+def vertex_to_latlng(vertex: Any, *, projection: str = "ISEA") -> Any:
     """The (lat, lng) of a vertex, geodetic WGS84 degrees.
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+    projection : {"ISEA", "IVEA"}
+        The grid whose corner is given (``dggs.Grid(projection).vertex_to_latlng`` passes it; the vertex
+        ids are the same on both).
+
+    Returns
+    -------
+    tuple of float, or a tuple of two containers
+        For one id, ``(lat, lng)``; for a container, ``(lats, lngs)`` in the input's kind of
+        container (as :func:`dggs.cell_to_latlng`).
 
     Raises
     ------
     DggsValueError
-        Not a vertex id, or not the canonical name of its corner.
+        Not a vertex id, or not the canonical name of its corner (in a container, the message
+        gives its index).
 
     Examples
     --------
     >>> lat, lng = vertex_to_latlng("C401:1")
     >>> round(lat, 6), round(lng, 6)
     (20.91287, -1.220765)
+    >>> lats, lngs = vertex_to_latlng(cell_to_vertexes("C401"))
+    >>> len(lats), round(lats[1], 6)
+    (3, 20.91287)
     """
-    owner, index = parse_vertex(vertex)
-    check_canonical(vertex, owner, index)
-    lat, lng = boundaries(np.array([owner], dtype=np.uint64), 0)[0, index]
-    return float(lat), float(lng)
+    shapes = boundaries
+    if check_projection(projection) == "IVEA":
+        from ._ivea_shapes import boundaries as shapes  # IVEA's kernels load on first use
+    items, kind = vertex_args(vertex)
+    owners, index = parse_vertexes(items, not kind.scalar)
+    ring = shapes(owners, 0) if owners.size else np.zeros((0, 3, 2))
+    pts = ring[np.arange(owners.size), index] if owners.size else np.zeros((0, 2))
+    lat, lng = pts[:, 0].astype(np.float64), pts[:, 1].astype(np.float64)
+    if kind.scalar:
+        return float(lat[0]), float(lng[0])
+    return values_out(lat, kind), values_out(lng, kind)
 
 
-def vertex_to_cells(vertex: Any) -> list[str]:
+def vertex_to_cells(vertex: Any) -> Any:
     """The cells that meet at a vertex (4, 5, 6, 10 or 12 of them), sorted string ids.
+
+    Parameters
+    ----------
+    vertex : str or array_like of str
+        One vertex id, or a container of them (as :func:`cell_to_vertexes` gives).
+
+    Returns
+    -------
+    list of str, or the input's kind of container of rows
+        For one id, the sorted list; for a container, shape ``input shape + (12,)``, each row
+        sorted and padded with ``""`` (as :func:`vertex_neighbors`).
 
     Raises
     ------
     DggsValueError
-        Not a vertex id, or not the canonical name of its corner.
+        Not a vertex id, or not the canonical name of its corner (in a container, the message
+        gives its index).
 
     Examples
     --------
     >>> vertex_to_cells("C401:1")
     ['C401', 'C402', 'C411', 'C412']
+    >>> vertex_to_cells(["C401:1"])[0][:4]
+    ['C401', 'C402', 'C411', 'C412']
     """
-    owner, index = parse_vertex(vertex)
-    check_canonical(vertex, owner, index)
-    fan, size = fans(np.array([owner], dtype=np.uint64), np.array([index]))
-    return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
+    items, kind = vertex_args(vertex)
+    owners, index = parse_vertexes(items, not kind.scalar)
+    if kind.scalar:
+        fan, size = fans(owners, index)
+        return sorted(format_int(int(c)) or "" for c in fan[0, : size[0]])
+    rows = np.full((owners.size, MAX_FAN), "", dtype=object)
+    if owners.size:
+        fan, size = fans(owners, index)
+        for i in range(owners.size):
+            names = sorted(format_int(int(c)) or "" for c in fan[i, : size[i]])
+            rows[i, : len(names)] = names
+    return values_out(rows.astype(str) if kind.container in ("numpy", "arrow") else rows, kind, (MAX_FAN,), rows=True)
 
 
 def vertex_neighbors(cell: Any) -> Any:

@@ -46,8 +46,9 @@ def _dggs_version() -> str:
 class Connection:
     """An open cell store file: the connection, its transactions and metadata."""
 
-    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float) -> None:
+    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float, check_same_thread: bool = True) -> None:
         self.path, self.readonly, self.timeout = path, readonly, timeout
+        self.check_same_thread = check_same_thread
         self.projection = "ISEA"  # the grid of the cells: set by CellStore from meta (storage/projection.py)
         if path != ":memory:":
             file = Path(path)
@@ -71,7 +72,7 @@ class Connection:
         try:
             # the signature before the open: a change between the two is then seen as one
             before = signature(Path(path).resolve()) if readonly and path != ":memory:" else None
-            self._conn, self.immutable = _connect(path, readonly, timeout)
+            self._conn, self.immutable = _connect(path, readonly, timeout, self.check_same_thread)
             self.signature = before
         except (sqlite3.DatabaseError, UnicodeDecodeError, OSError) as exc:
             raise translate(exc, path, timeout) from exc

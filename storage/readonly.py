@@ -48,10 +48,11 @@ def quiet(file: Path) -> bool:
     return not any(Path(f"{file}{tail}").exists() for tail in ("-wal", "-shm"))
 
 
-def connect(path: str, readonly: bool, timeout: float) -> tuple[sqlite3.Connection, bool]:
+def connect(path: str, readonly: bool, timeout: float, check_same_thread: bool = True) -> tuple[sqlite3.Connection, bool]:
     """Open the SQLite connection and say whether it is immutable (read-only and quiet, or read-only media).
 
-    See the module doc.
+    See the module doc.  ``check_same_thread`` is sqlite3's: False lets a pool hand the
+    connection to one thread after another (never to two at once).
 
     Raises
     ------
@@ -61,12 +62,12 @@ def connect(path: str, readonly: bool, timeout: float) -> tuple[sqlite3.Connecti
         If SQLite cannot open the file (the caller translates it, naming the file).
     """
     if path == ":memory:" or not readonly:
-        return sqlite3.connect(path, isolation_level=None, timeout=timeout), False
+        return sqlite3.connect(path, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread), False
     file = Path(path).resolve()
     if quiet(file):
-        return connect_immutable(file, timeout), True
+        return connect_immutable(file, timeout, check_same_thread), True
     uri = file.as_uri() + "?mode=ro"
-    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
+    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread)
     try:
         conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
         return conn, False
@@ -77,10 +78,10 @@ def connect(path: str, readonly: bool, timeout: float) -> tuple[sqlite3.Connecti
     except BaseException:
         conn.close()
         raise
-    return connect_immutable(file, timeout), True
+    return connect_immutable(file, timeout, check_same_thread), True
 
 
-def connect_immutable(file: Path, timeout: float = 30.0) -> sqlite3.Connection:
+def connect_immutable(file: Path, timeout: float = 30.0, check_same_thread: bool = True) -> sqlite3.Connection:
     """Open a store on read-only media with ``?mode=ro&immutable=1``.
 
     Raises
@@ -96,4 +97,4 @@ def connect_immutable(file: Path, timeout: float = 30.0) -> sqlite3.Connection:
             "its latest rows cannot be read there: copy the store and its -wal file to a writable folder"
         )
     uri = file.as_uri() + "?mode=ro&immutable=1"
-    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout)
+    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread)

@@ -65,6 +65,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         The grid whose cells the points are binned into (:class:`dggs.Grid`),
         recorded in the file when it is created.  None (the default): the
         file's own (ISEA for a new store and for files that record none).
+    check_same_thread : bool, default True
+        sqlite3's; False: a pool lends it to one thread after another (dggs/server/pool.py).
 
     Raises
     ------
@@ -89,6 +91,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         timeout: float = 30.0,
         merge_rows: int = MERGE_ROWS,
         projection: str | None = None,
+        check_same_thread: bool = True,
     ) -> None:
         if isinstance(merge_rows, bool) or not isinstance(merge_rows, int) or merge_rows < 1:
             raise DggsValueError(f"merge_rows must be a whole number >= 1, not {merge_rows!r}")
@@ -98,7 +101,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         self.merge_rows = merge_rows
         self.readonly = readonly
         self.timeout = float(timeout)
-        self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout)
+        self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout,
+                                 check_same_thread=bool(check_same_thread))
         try:
             self._store.projection = settle(self._store.conn, self.path, projection, readonly)
         except BaseException:

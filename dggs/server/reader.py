@@ -1,7 +1,10 @@
-"""Read access to the served cell store: one read-only connection per thread, cached roll-ups.
+"""Read access to the served cell store: a bounded pool of read-only connections, cached roll-ups.
 
-The server never writes.  SQLite connections cannot be shared across threads,
-so each worker thread opens its own read-only :class:`~dggs.storage.CellStore`.
+The server never writes.  Each read (:meth:`StoreReader.snapshot`) takes a
+read-only :class:`~dggs.storage.CellStore` from the reader's bounded pool
+(:mod:`dggs.server.pool`) and gives it back when it ends (a nested snapshot on
+the same thread uses the same store): connections belong to the reader, not to
+worker threads, which come and go (issue 32).
 Every answer reads in one SQLite read transaction (:meth:`StoreReader.snapshot`):
 an ingest running at the same time commits whole batches in WAL mode, and a
 reader sees the store before or after a batch, never half of one.
@@ -56,7 +59,9 @@ from dggs.errors import StorageError
 from dggs.storage import CellStore
 from dggs.storage.connection import translate
 
-__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox"]
+from .pool import POOL_IDLE, StorePool
+
+__all__ = ["StoreReader", "LevelData", "Summary", "map_densify", "cells_meeting_bbox", "POOL_IDLE"]
 
 #: At most this many roll-ups are kept (each is one level, column and statistic).
 CACHE_ENTRIES = 32
@@ -109,7 +114,7 @@ class LevelData:
 
 
 class StoreReader:
-    """The served store, read-only, with per-thread connections and caches.
+    """The served store, read-only, with a bounded pool of connections and caches.
 
     Parameters
     ----------
@@ -126,9 +131,9 @@ class StoreReader:
         self.refresh = float(refresh)
         self._flights: dict[tuple[Any, ...], threading.Lock] = {}
         self.collection_id = self.path.stem
-        self._local = threading.local()
+        self._local = threading.local()  # .store, .depth: the store this thread holds and its snapshot nesting
         self._lock = threading.Lock()
-        self._opened: list[CellStore] = []
+        self._pool = StorePool(self.path)
         self._cache: OrderedDict[tuple[Any, ...], Any] = OrderedDict()
         self._geometry: dict[str, tuple[Any, str]] = {}
         with self.snapshot() as (store, _marker):
@@ -140,25 +145,25 @@ class StoreReader:
     # -- connections --------------------------------------------------------
 
     def store(self) -> CellStore:
-        """Return this thread's read-only store (opened on first use)."""
-        # an immutable reader (the store was quiet) opens itself again before a read once a writer's -wal
-        # is there or the file changed (dggs.storage.connection.Connection.conn)
-        store = getattr(self._local, "store", None)
-        if store is None:
-            store = CellStore(self.path, create=False, readonly=True)  # immutable while nobody writes
-            self._local.store = store
-            with self._lock:
-                self._opened.append(store)
+        """Return the read-only store this thread holds in a :meth:`snapshot` (or one from the pool).
+
+        Outside a snapshot the store is taken from the pool and given back at
+        once: use it within :meth:`snapshot`, which holds it for the read.
+        """
+        held = getattr(self._local, "store", None)
+        if held is not None:
+            return held
+        store = self._pool.take()
+        self._pool.give(store)
         return store
 
+    def open_connections(self) -> int:
+        """How many read-only stores the reader has open (idle and held), for tests and monitoring."""
+        return self._pool.open_count()
+
     def close(self) -> None:
-        """Close every connection opened by any thread."""
-        with self._lock:
-            opened, self._opened = self._opened, []
-        for store in opened:
-            with contextlib.suppress(Exception):
-                store.close()
-        self._local = threading.local()
+        """Close every idle store now, and every held one when its read ends."""
+        self._pool.close()
 
     @contextlib.contextmanager
     def snapshot(self) -> Iterator[tuple[CellStore, tuple[Any, ...]]]:
@@ -170,7 +175,10 @@ class StoreReader:
             If the store file is gone, damaged, or changed under an immutable reader while it was read
             (naming the file: the server answers 503).
         """
-        store = self.store()
+        outer = getattr(self._local, "store", None) is None
+        if outer:
+            self._local.store = self._pool.take()
+        store: CellStore = self._local.store
         marker: tuple[Any, ...] | None = None
         try:
             with store._store.snapshot():
@@ -181,6 +189,10 @@ class StoreReader:
                 for key in [k for k, entry in self._cache.items() if marker is not None and entry[0] == marker]:
                     del self._cache[key]
             raise translate(exc, str(self.path)) from exc
+        finally:
+            if outer:  # the outermost snapshot of this thread gives the store back
+                self._local.store = None
+                self._pool.give(store)
 
     @staticmethod
     def _marker(store: CellStore) -> tuple[Any, ...]:

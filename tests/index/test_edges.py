@@ -162,8 +162,9 @@ def test_invalid_inputs():
         assert dggs.is_valid_directed_edge(bad) is False
         with pytest.raises(InvalidCellError, match="directed edge"):
             dggs.get_directed_edge_origin(bad)
-    for junk in (None, 1.5, b"C4.1", object()):
+    for junk in (None, 1.5, b"C41", b"\xff.1", object()):
         assert not dggs.is_valid_directed_edge(junk)
+    assert dggs.is_valid_directed_edge(b"C4.1")  # ASCII bytes are the edge they spell, as in a numpy S array (issue 32)
     with pytest.raises(InvalidCellError, match="'Z.1' at index 1"):
         dggs.reverse_directed_edge(["C401.1", "Z.1"])
     with pytest.raises(DggsValueError, match="not edge neighbours"):
@@ -178,3 +179,21 @@ def test_invalid_inputs():
         dggs.edge_length("C401.1", unit="miles")
     with pytest.raises(DggsValueError):
         dggs.directed_edge_to_boundary("C401.1", densify=-1)
+
+
+# Issue 32 item 10: bytes are read as the ASCII string they spell, as the cell verbs and numpy ``S`` arrays do:
+# b"C401" is a level-3 cell, not the edge "C40.1", and b"C40.1" is that edge.
+@pytest.mark.parametrize("make", [bytes, np.bytes_, bytearray, lambda b: [b], lambda b: np.array([b], dtype=object), lambda b: pd.Series([b])])
+def test_bytes_edge_ids_read_as_their_text(make):
+    assert not np.asarray(dggs.is_valid_directed_edge(make(b"C401"))).any()  # a bool or a container of them
+    with pytest.raises(dggs.InvalidCellError, match="C401"):
+        dggs.get_directed_edge_origin(make(b"C401"))
+    assert np.asarray(dggs.is_valid_directed_edge(make(b"C40.1"))).all()
+    origin = dggs.get_directed_edge_origin(make(b"C40.1"))
+    assert str(np.asarray(origin, dtype=object).reshape(-1)[0]) == "C40"
+    assert np.allclose(dggs.edge_length(make(b"C40.1")), dggs.edge_length("C40.1"))
+
+
+def test_numpy_bytes_edges_agree_with_lone_bytes():
+    arr = np.array([b"C40.1", b"C401"], dtype="S")
+    assert dggs.is_valid_directed_edge(arr).tolist() == [dggs.is_valid_directed_edge(b) for b in arr.tolist()] == [True, False]

@@ -259,3 +259,83 @@ def test_dictionary_ids_come_back_dictionary_encoded():
     ids = pa.array(CELLS * 3).dictionary_encode()
     out = dggs.cell_to_parent(ids)
     assert pa.types.is_dictionary(out.type) and out.dictionary_decode().to_pylist() == [c[:-1] for c in CELLS * 3]
+
+
+# Vertex ids, directed edge ids and end points of lines are fed in every container too (issue 32: the
+# vertex verbs refused the list cell_to_vertexes gives, and geodesic_to_cells refused containers).
+VERTEXES = dggs.cell_to_vertexes("C401")[:2]
+EDGES = dggs.origin_to_directed_edges("C401")[:2]
+EDGE_INTS = [dggs.str_to_int(e.replace(".", "")) | 1 << 63 for e in EDGES]
+TEXT_KINDS = {
+    "str": (lambda v: v[0], "scalar"),
+    "list": (lambda v: list(v), "list"),
+    "tuple": (lambda v: tuple(v), "list"),
+    "numpy-U": (lambda v: np.array(v), "numpy"),
+    "numpy-S": (lambda v: np.array(v, dtype="S"), "numpy"),
+    "numpy-object": (lambda v: np.array(v, dtype=object), "numpy"),
+    "pandas-object": (lambda v: _series(v, object), "pandas"),
+    "pandas-string": (lambda v: _series(v, "string"), "pandas"),
+    "pandas-index": (lambda v: pd.Index(v, name="v"), "index"),
+    "arrow-string": (lambda v: pa.array(v, pa.string()), "arrow"),
+    "chunked-string": (lambda v: pa.chunked_array([v[:1], v[1:]]), "chunked"),
+}
+VERTEX_FUNCS = {
+    "is_valid_vertex": (dggs.is_valid_vertex, bool, "aligned"),
+    "vertex_to_latlng": (dggs.vertex_to_latlng, tuple, "pair"),
+    "ivea_vertex_to_latlng": (dggs.Grid("IVEA").vertex_to_latlng, tuple, "pair"),
+    "vertex_to_cells": (dggs.vertex_to_cells, list, "rows"),
+}
+EDGE_FUNCS = {
+    "is_valid_directed_edge": (dggs.is_valid_directed_edge, bool, "aligned"),
+    "get_directed_edge_origin": (dggs.get_directed_edge_origin, "id", "aligned"),
+    "get_directed_edge_destination": (dggs.get_directed_edge_destination, "id", "aligned"),
+    "reverse_directed_edge": (dggs.reverse_directed_edge, "id", "aligned"),
+    "directed_edge_to_cells": (dggs.directed_edge_to_cells, list, "rows"),
+    "edge_length": (dggs.edge_length, float, "aligned"),
+}
+
+
+def _text_cases(funcs):
+    return [pytest.param(f, k, id=f"{f}-{k}") for f in funcs for k in TEXT_KINDS]
+
+
+@pytest.mark.parametrize("fname,kname", _text_cases(VERTEX_FUNCS))
+def test_vertex_ids_come_back_in_the_kind_given(fname, kname):
+    fn, scalar_type, shape = VERTEX_FUNCS[fname]
+    make, kind = TEXT_KINDS[kname]
+    given = make(VERTEXES)
+    out = fn(given)
+    if kind == "scalar":
+        assert _scalar_ok(out, scalar_type, given), f"{fname}({given!r}) gave {type(out).__name__}"
+        return
+    problem = _same_kind(out, kind, given, shape)
+    assert problem is None, f"{fname}({kname}): {problem}"
+
+
+@pytest.mark.parametrize("fname,kname", _text_cases(EDGE_FUNCS) + [pytest.param(f, "int", id=f"{f}-int") for f in EDGE_FUNCS])
+def test_edge_ids_come_back_in_the_kind_given(fname, kname):
+    fn, scalar_type, shape = EDGE_FUNCS[fname]
+    if kname == "int":
+        given, kind = EDGE_INTS[0], "scalar"
+    else:
+        make, kind = TEXT_KINDS[kname]
+        given = make(EDGES)
+    out = fn(given)
+    if kind == "scalar":
+        assert _scalar_ok(out, scalar_type, given), f"{fname}({given!r}) gave {type(out).__name__}"
+        return
+    problem = _same_kind(out, kind, given, shape)
+    assert problem is None, f"{fname}({kname}): {problem}"
+
+
+@pytest.mark.parametrize("kname", list(COORD_KINDS))
+def test_line_end_points_come_back_in_the_kind_given(kname):
+    """geodesic_to_cells: one array of cells per line, in the container the end points came in."""
+    make, kind = COORD_KINDS[kname]
+    lat, lng = make(LATS), make(LNGS)
+    out = dggs.geodesic_to_cells(lat, lng, make([51.0, -88.9]), make([-114.0, 179.6]), 5)
+    if kind == "scalar":
+        assert type(out) is np.ndarray, f"geodesic_to_cells({lat!r}, ...) gave {type(out).__name__}"
+        return
+    problem = _same_kind(out, kind, lat, "aligned")
+    assert problem is None, f"geodesic_to_cells({kname}): {problem}"

@@ -227,3 +227,51 @@ def test_long_line_refused_before_sampling(monkeypatch):
     monkeypatch.setattr(paths.kline, "trace", no_sampling)  # geodesic_to_cells is line_to_cells of one segment
     with pytest.raises(dggs.TooManyCellsError, match="line_to_cells"):
         geodesic_to_cells(0, 0, 0.5, 179.9, 28)
+
+
+# -- a geodesic along a cell edge (issue 32 item 13) --------------------------------------------------------------
+
+#: The rule (docs/features.md, "A geodesic along a cell edge"): the answer is exact to 0.1 mm.
+EPSILON_M = 1e-4
+_VERTICES = {c: dggs.cell_to_boundary(c) for c in ("H01", "H02")}
+_TOP, _MID, _BOT = _VERTICES["H01"][0], _VERTICES["H01"][2], _VERTICES["H02"][0]
+
+
+def _within(cells: set[str], lat: float, lng: float, level: int, eps: float) -> bool:
+    """Whether a point within ``eps`` metres of (lat, lng) lies in one of ``cells`` (16 directions, at eps and eps/2)."""
+    az = np.arange(0.0, 360.0, 22.5)
+    for d in (eps, eps / 2):
+        lng2, lat2, _ = GEOD.fwd(np.full(az.size, lng), np.full(az.size, lat), az, np.full(az.size, d))
+        if set(np.asarray(dggs.latlng_to_cell(lat2, lng2, level)).tolist()) & cells:
+            return True
+    return False
+
+
+@pytest.mark.parametrize("p,q", [
+    ((_TOP[0], 11.25), (_BOT[0], 11.25)),  # the issue's line: exact meridian 11.25E between grid vertices
+    ((_BOT[0], 11.25), (_TOP[0], 11.25)),
+    ((_MID[0], 11.25), (_BOT[0], 11.25)),
+    (_TOP, _BOT), (_BOT, _TOP), (_TOP, _MID),  # the vertices' own coordinates (11.25 + 1e-14)
+])
+@pytest.mark.parametrize("level", [2, 4, 6])
+def test_a_geodesic_along_a_cell_edge_keeps_the_rule(p, q, level):
+    """Every cell given meets the line within 0.1 mm, every point of the line is within 0.1 mm of a cell given.
+
+    The oracle: pyproj.Geod.npts's 2,000 points along the geodesic, each located by latlng_to_cell (and, where
+    its cell is not given, the points 0.1 mm and 0.05 mm round it).
+    """
+    got = dggs.line_to_cells(np.array([p, q]), level)
+    assert got.tolist() == dggs.geodesic_to_cells(*p, *q, level).tolist()
+    assert bool(np.all(dggs.are_neighbor_cells(got[:-1], got[1:])))
+    given = set(got.tolist())
+    pts = np.array(GEOD.npts(p[1], p[0], q[1], q[0], 2000))
+    lat, lng = np.concatenate([[p[0]], pts[:, 1], [q[0]]]), np.concatenate([[p[1]], pts[:, 0], [q[1]]])
+    located = np.asarray(dggs.latlng_to_cell(lat, lng, level))
+    for i in np.flatnonzero(~np.isin(located, list(given))).tolist():
+        assert _within(given, float(lat[i]), float(lng[i]), level, EPSILON_M), (lat[i], lng[i], located[i])
+    low, high = min(p[0], q[0]) - 1e-6, max(p[0], q[0]) + 1e-6
+    for cell in given - set(located.tolist()):  # given, with no sample in it: it meets the line within 0.1 mm
+        ring = np.asarray(dggs.cell_to_boundary(cell, densify=16), dtype=np.float64)
+        on = (ring[:, 0] >= low) & (ring[:, 0] <= high)
+        off_m = np.abs(ring[on, 1] - 11.25) * 111_320.0 * np.cos(np.radians(ring[on, 0]))  # metres off the meridian
+        assert on.any() and off_m.min() <= EPSILON_M, (cell, off_m.min() if on.any() else None)

@@ -541,3 +541,37 @@ def test_aggregate_good_aggs_still_work():
     assert out[("v", "sum")].tolist() == [3, 5] and out[("w", "mean")].tolist() == [2.0, 5.0]
     assert df.dggs.aggregate(2, "sum")["v"].tolist() == [3, 5]
     assert df.dggs.aggregate(2, ["min", len])[("v", "min")].tolist() == [1, 5]
+
+
+# -- issue 32 item 11 -------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("names", [["k", "n"], [None, None], ["k", None]])
+def test_sjoin_cells_keeps_a_multiindex_of_the_polygons_as_geopandas_does(names):
+    zones = gpd.GeoDataFrame({"zone": ["west", "east"]}, geometry=[box(0, 0, 20, 50), box(140, -40, 160, -20)],
+                             index=pd.MultiIndex.from_tuples([("a", 1), ("b", 2)], names=names), crs="EPSG:4326")
+    points = pd.DataFrame({"lat": [5.0, 45.0, -30.0, 70.0], "lng": [5.0, 10.0, 150.0, 100.0]}, index=[7, 8, 9, 6])
+    ours = points.dggs.sjoin_cells(zones, 8)
+    ref = gpd.sjoin(gpd.GeoDataFrame(points, geometry=gpd.points_from_xy(points.lng, points.lat), crs="EPSG:4326"),
+                    zones, predicate="within")
+    index_columns = [c for c in ref.columns if c not in points.columns and c not in ("geometry", "zone")]
+    assert index_columns == [c for c in ours.columns if c not in points.columns and c not in ("cell_8", "zone")]
+    assert ours[index_columns + ["zone"]].sort_index().equals(pd.DataFrame(ref[index_columns + ["zone"]]).sort_index())
+
+
+@pytest.mark.parametrize("dtype", ["UInt64", "Int64", "uint64[pyarrow]"])
+def test_a_missing_id_in_a_nullable_integer_column_is_named_at_its_row(dtype):
+    if dtype.endswith("[pyarrow]"):
+        pytest.importorskip("pyarrow")
+    good = dggs.str_to_int("C401")
+    frame = pd.DataFrame({"cell_3": pd.array([good, None, good], dtype=dtype), "x": [1.0, 2.0, 3.0]}, index=[10, 20, 30])
+    zones = gpd.GeoDataFrame({"zone": ["all"]}, geometry=[box(-180, -90, 180, 90)], crs="EPSG:4326")
+    for call in (lambda: frame.dggs.cell_to_geometry(), lambda: frame.dggs.aggregate(2),
+                 lambda: frame.dggs.sjoin_cells(zones, 2, cells="cell_3")):
+        with pytest.raises(dggs.InvalidCellError) as info:
+            call()
+        message = str(info.value)
+        assert "row 20" in message and "missing value" in message, message
+        assert "e+18" not in message and str(good) not in message, message
+    whole = pd.DataFrame({"cell_3": pd.array([good, good], dtype=dtype)}, index=[1, 2])
+    assert whole.dggs.aggregate(2)["count"].tolist() == [2]

@@ -353,3 +353,60 @@ def test_function_table_is_complete():
     assert {spec[1] for spec in FUNCTIONS.values()} <= {"bigint", "string", "array<bigint>", "binary", "double",
                                                         "int", "boolean", "struct<lat:double,lng:double>"}
     assert examples(100) >= 5
+
+
+# ------------------------------------------------------------------ corrupt columns (issue 32 item 9), no JVM
+
+from dggs._spark_udfs import ColumnTypeError  # noqa: E402
+
+_CORRUPT = {
+    "strings": pa.array(["n/a", "C401", "", "1e400"]),
+    "numbers": pa.array([1.5, float("nan"), -1.0, 1e300]),
+    "ints": pa.array([0, -1, 2**62, 5]),
+    "lists": pa.array([["C401"], [], ["Z9"], ["C402", "C401"]]),
+    "binary": pa.array([b"\x00\x01", b"C401", b"", b"\xff"]),
+    "nulls": pa.nulls(4, pa.string()),
+}
+
+
+def test_string_coordinates_with_junk_are_bad_values_of_their_rows():
+    lat, lng, level = pa.array(["51.05", "n/a", "10"]), pa.array(["-114.07", "0", "x"]), pa.array([9, 9, 9])
+    fn = batch_function("dggs_latlng_to_cell_str", "null")
+    assert fn(lat, lng, level).to_pylist() == [dggs.latlng_to_cell(51.05, -114.07, 9), None, None]
+    with pytest.raises(dggs.CoordinateError, match="row 1 .*'n/a'"):
+        batch_function("dggs_latlng_to_cell_str")(lat, lng, level)
+
+
+def test_is_valid_cell_never_raises_on_any_column():
+    for name, col in _CORRUPT.items():
+        got = batch_function("dggs_is_valid_cell")(col).to_pylist()
+        assert len(got) == len(col), name
+        assert all(v in (True, False, None) for v in got), name
+    assert batch_function("dggs_is_valid_cell")(_CORRUPT["lists"]).to_pylist() == [False] * 4
+
+
+def test_cells_to_polygons_wkb_on_a_plain_id_column_is_a_typed_error():
+    for on_invalid in ("raise", "null"):
+        with pytest.raises(ColumnTypeError, match="array of cell ids"):
+            batch_function("dggs_cells_to_polygons_wkb", on_invalid)(pa.array(["C401", "C402"]))
+
+
+@pytest.mark.parametrize("name", sorted(FUNCTIONS))
+@pytest.mark.parametrize("column", sorted(_CORRUPT))
+def test_every_function_takes_corrupt_columns_with_typed_errors(name, column):
+    """Any column in any argument: an answer (NULL for bad values with on_invalid='null') or a DggsValueError."""
+    arity = len(FUNCTIONS[name][0].strip("()").split(","))
+    good = {"cell": pa.array(["C401"] * 4), "a": pa.array(["C401"] * 4), "b": pa.array(["C402"] * 4),
+            "lat": pa.array([1.0] * 4), "lng": pa.array([2.0] * 4), "level": pa.array([5] * 4), "k": pa.array([1] * 4),
+            "cells": pa.array([["C401"]] * 4), "mode": pa.array(["center"] * 4),
+            "wkb": pa.array([shapely.box(0, 0, 1, 1).wkb] * 4)}
+    names = [n.strip() for n in FUNCTIONS[name][0].strip("()").split(",")]
+    for i in range(arity):
+        args = [good[n] for n in names]
+        args[i] = _CORRUPT[column]
+        for on_invalid in ("raise", "null"):
+            try:
+                out = batch_function(name, on_invalid)(*args)
+            except dggs.DggsValueError:
+                continue
+            assert len(out) == 4

@@ -245,3 +245,37 @@ def test_integer_zone_lists_are_the_text_ones(app_client, parent, level):
     ints = np.frombuffer(body[8:], dtype="<u8")
     assert count == len(text) == len(dggs.uncompact_cells([parent], level))
     assert [dggs.int_to_str(int(i)) for i in ints] == text
+
+
+# -- corrupt requests on the IVEA routes (issue 32: the adversarial suite's routes it skipped) ----------------------
+
+_BAD_ZONES = ["Z1", "A9", "c401", "A" + "0" * 40, "A06", "C4x", "%00", "C4.1", "C401:1", "-1", "1e400", "%F0%9F%8C%8D"]
+_BAD_QUERIES = ["zone-level=-1", "zone-level=29", "zone-level=abc", "zone-level=1.5", "zone-depth=-3", "zone-depth=x",
+                "bbox=1,2,3", "bbox=a,b,c,d", "bbox=0,0,1e400,1", "compact-zones=maybe", "limit=-1", "limit=1e99",
+                "f=xml", "properties=nope", "zone-level=2&bbox=179,-10,-179,10"]
+
+
+def _status_and_type(address: str) -> tuple[int, str]:
+    try:
+        with urllib.request.urlopen(address, timeout=30) as res:
+            res.read()
+            return res.status, res.headers.get("content-type", "")
+    except urllib.error.HTTPError as exc:
+        exc.read()
+        return exc.code, exc.headers.get("content-type", "")
+
+
+@pytest.mark.parametrize("root", [f"/dggs/{IVEA_ID}", f"/collections/ivea/dggs/{IVEA_ID}"])
+def test_corrupt_requests_on_the_ivea_routes_are_4xx_problems(url, root):
+    problems = []
+    for zone in _BAD_ZONES:
+        for tail in ("", "/data"):
+            code, kind = _status_and_type(f"{url}{root}/zones/{zone}{tail}")
+            if not (400 <= code < 500 and kind.startswith("application/problem+json")):
+                problems.append((zone, tail, code, kind))
+    for query in _BAD_QUERIES:
+        for path in ("/zones", "/zones/C4/data"):
+            code, kind = _status_and_type(f"{url}{root}{path}?{query}")
+            if code >= 500 or (code >= 400 and not kind.startswith("application/problem+json")):
+                problems.append((path, query, code, kind))
+    assert not problems, problems
