@@ -38,8 +38,8 @@ def render(res: dict[str, Any]) -> str:
     m = res["machine"]
     w("### Kernel: dggs against h3ronpy, healpy, h3-py and A5 (bench_kernel.py)\n")
     v = m["versions"]
-    w(f"{m['nproc']} cores ({m['cpu']}), Python {m['python']}, numpy {m['numpy']}; dggs {v['dggs']}, numba "
-      f"{v['numba']}, h3 {v['h3']}, h3ronpy {v['h3ronpy']}, healpy {v['healpy']}, pya5 {v['pya5']}, shapely "
+    w(f"{m['nproc']} cores ({m['cpu']}), Python {m['python']}, numpy {m['numpy']}; dggs {v['dggs']} (C core), "
+      f"h3 {v['h3']}, h3ronpy {v['h3ronpy']}, healpy {v['healpy']}, pya5 {v['pya5']}, shapely "
       f"{v['shapely']}. Code measured: {describe_code(res['code'])}. Load average (1 min) {res['load_start'][0]:.2f} "
       f"at the start of bench_kernel.py, {res['load_end'][0]:.2f} at the end.\n")
     for mode, name in MODES:
@@ -180,10 +180,9 @@ def render_compile(res: dict[str, Any], w) -> None:
     c = res.get("compile")
     if not c:
         return
-    w("#### First call in a fresh process (numba compilation), default threads\n")
-    w(f"`NUMBA_CACHE_DIR` set to a new empty temporary folder (cache cold), then the same folder again in a "
-      f"second fresh process (cache warm). ids: {c.get('kind', '?')}. Each number is one run (seconds, wall / "
-      "CPU).\n")
+    w("#### First call in a fresh process, default threads\n")
+    w(f"Two fresh processes in turn (the compiled core has no cache: both are alike; `bench_core.py` times a fresh "
+      f"wheel install). ids: {c.get('kind', '?')}. Each number is one run (seconds, wall / CPU).\n")
     w("| cache | `import dggs` | first `latlng_to_cell` (1,000 points) | second call | first `grid_disk(ids, 1)` "
       "(100 cells) | second call | files in the cache afterwards |")
     w("|---|---:|---:|---:|---:|---:|---:|")

@@ -68,25 +68,17 @@ def point_table(n: int, rounds: int) -> dict[str, Any]:
 
 
 def call_table(n: int, rounds: int) -> dict[str, Any]:
-    import numba
-
     import dggs
+    from dggs.index._kernel import hierarchy as kh
 
     h3 = c.try_import("h3")
     cells = [int(x) for x in dggs.latlng_to_cell(*c.points(n), 17, as_int=True)]
 
-    @numba.njit(cache=False)
-    def nothing(x: int) -> int:
-        return x
-
-    nothing(1)
-    entry = nothing.compile("int64(int64)")
     mask = (1 << 64) - 1 - 3
 
     cases: dict[str, Any] = {
         "Python function returning its argument": (_loop(lambda x: x, cells), n),
-        "numba function doing nothing, through its dispatcher": (_loop(nothing, cells), n),
-        "numba function doing nothing, through its compiled entry": (_loop(entry, cells), n),
+        "the core's single-id entry (dggs._core parent_of(int, -1))": (_loop(lambda x: kh.parent_of(x, -1), cells), n),
         "Python bit operations on the int (a mask, an or)": (_loop(lambda x: (x & mask) | 1, cells), n),
         "dggs.cell_to_parent(int)": (_loop(dggs.cell_to_parent, cells), n),
     }

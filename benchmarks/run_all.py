@@ -1,6 +1,6 @@
 """Run every benchmark and write BENCHMARKS.md at the repository root.
 
-Runs ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py``, ``bench_ingest.py``, ``bench_serve.py`` and
+Runs ``bench_core.py``, ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py``, ``bench_ingest.py``, ``bench_serve.py`` and
 ``bench_workflow.py`` (each
 skipped with a note if it is missing or fails) as subprocesses with this
 interpreter, collects the markdown each prints, and writes BENCHMARKS.md: the
@@ -31,7 +31,7 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-TIMEOUT = {"bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300,
+TIMEOUT = {"bench_core.py": 1200, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_ingest.py": 400, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
            "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600,
            "bench_dissolve.py": 900, "bench_scale.py": 2400,
@@ -78,6 +78,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         kjson = Path(tmp) / "kernel.json"
         runs = [
+            # the compiled core's targets (issue 31): a fresh install's first calls, single calls, point location
+            ("bench_core.py", ["--quick"] if args.quick else [], thread_env(False)),
             # bench_kernel sets the thread variables itself, per worker
             ("bench_kernel.py", ["--json", str(kjson)] + (["--quick"] if args.quick else []), thread_env(False)),
             # one core for both sides (bench_snyder's own thread options are off here)
