@@ -8,7 +8,7 @@ BENCH_VENV := .venv-bench
 BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
-.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean
+.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -109,6 +109,50 @@ test-browser: $(STAMP) $(STATIC)
 		(apt-get -o APT::Sandbox::User=root update -q && \
 		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q chromium chromium-driver)
 	$(PY) -m pytest -q -m browser tests/server
+
+# The C core as WebAssembly for the JS package (js/): clang's wasm32-wasi target, Debian's wasi-libc (musl's libm
+# and malloc) and lld, installed here if missing (needs root). One js/dist/dggs.wasm (git-ignored) exporting the
+# public functions of dggs.h and malloc/free, with no imports (the core calls nothing of WASI) and no generated
+# JS: js/src/dggs.js instantiates it. Floating point as the native build: -ffp-contract=off, no fast-math (wasm
+# has no fused multiply-add and no excess precision). Debian's emscripten 3.1.6 would also do, but it adds a
+# Python compiler driver, binaryen and a cache of system libraries built on first use, for a glue file we do
+# not need. WASM_CC=clang-NN picks another clang (with its libclang-rt-NN-dev-wasm32).
+WASM := js/dist/dggs.wasm
+WASM_CC ?= clang
+WASM_SYSROOT := build/wasm/sysroot
+WASM_PKGS := clang lld wasi-libc libclang-rt-dev-wasm32
+OPEN := (
+WASM_EXPORTS = $(shell grep -oE '^\w.*dggs_\w+[$(OPEN)]' libdggs/include/dggs.h | grep -oE 'dggs_\w+[$(OPEN)]$$' | \
+	sed 's/.$$//') malloc free
+WASM_CFLAGS := --target=wasm32-wasi --sysroot=$(WASM_SYSROOT) -std=c11 -O3 -ffp-contract=off -fno-fast-math \
+	-fno-finite-math-only -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion -Werror \
+	-mexec-model=reactor -Ilibdggs/include -Ilibdggs/src
+
+# A sysroot of Debian's wasi-libc alone (its headers and libraries sit in the host's /usr under wasm32-wasi;
+# --sysroot=/usr would put /usr/local/include before them). The toolchain is installed if clang, wasm-ld,
+# wasi-libc or compiler-rt's wasm32 builtins are missing.
+$(WASM_SYSROOT)/.made:
+	@command -v $(WASM_CC) >/dev/null && test -f /usr/lib/wasm32-wasi/libc.a && \
+		test -f "$$($(WASM_CC) -print-resource-dir)/lib/wasi/libclang_rt.builtins-wasm32.a" && \
+		command -v "$$($(WASM_CC) --target=wasm32-wasi -print-prog-name=wasm-ld)" >/dev/null || \
+		(apt-get -o APT::Sandbox::User=root update -q && \
+		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q $(WASM_PKGS))
+	mkdir -p $(WASM_SYSROOT)/include $(WASM_SYSROOT)/lib
+	ln -sfn /usr/include/wasm32-wasi $(WASM_SYSROOT)/include/wasm32-wasi
+	ln -sfn /usr/lib/wasm32-wasi $(WASM_SYSROOT)/lib/wasm32-wasi
+	touch $@
+
+wasm-toolchain: $(WASM_SYSROOT)/.made
+
+# js/src/*.c: the JS package's batch loops over the public functions (exported by their export_name attributes).
+$(WASM): $(WASM_SYSROOT)/.made libdggs/include/dggs.h $(wildcard libdggs/src/*.c libdggs/src/*.h js/src/*.c)
+	@mkdir -p $(dir $@)
+	@echo "$(WASM_CC) $(WASM_CFLAGS) -o $@ libdggs/src/*.c $(wildcard js/src/*.c) (exports: dggs.h's functions, malloc, free)"
+	@$(WASM_CC) $(WASM_CFLAGS) -o $@ libdggs/src/*.c $(wildcard js/src/*.c) \
+		$(foreach f,$(WASM_EXPORTS),-Wl,--export=$(f))
+	@echo "built $@ ($$(wc -c < $@) bytes) with $$($(WASM_CC) --version | head -1)"
+
+wasm: $(WASM)
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
