@@ -8,7 +8,8 @@ BENCH_VENV := .venv-bench
 BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
-.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain
+.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain \
+	js-fixtures test-js
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -120,7 +121,7 @@ test-browser: $(STAMP) $(STATIC)
 WASM := js/dist/dggs.wasm
 WASM_CC ?= clang
 WASM_SYSROOT := build/wasm/sysroot
-WASM_PKGS := clang lld wasi-libc libclang-rt-dev-wasm32
+WASM_PKGS := clang lld wasi-libc libclang-rt-dev-wasm32 nodejs
 OPEN := (
 WASM_EXPORTS = $(shell grep -oE '^\w.*dggs_\w+[$(OPEN)]' libdggs/include/dggs.h | grep -oE 'dggs_\w+[$(OPEN)]$$' | \
 	sed 's/.$$//') malloc free
@@ -132,7 +133,7 @@ WASM_CFLAGS := --target=wasm32-wasi --sysroot=$(WASM_SYSROOT) -std=c11 -O3 -ffp-
 # --sysroot=/usr would put /usr/local/include before them). The toolchain is installed if clang, wasm-ld,
 # wasi-libc or compiler-rt's wasm32 builtins are missing.
 $(WASM_SYSROOT)/.made:
-	@command -v $(WASM_CC) >/dev/null && test -f /usr/lib/wasm32-wasi/libc.a && \
+	@command -v $(WASM_CC) >/dev/null && command -v node >/dev/null && test -f /usr/lib/wasm32-wasi/libc.a && \
 		test -f "$$($(WASM_CC) -print-resource-dir)/lib/wasi/libclang_rt.builtins-wasm32.a" && \
 		command -v "$$($(WASM_CC) --target=wasm32-wasi -print-prog-name=wasm-ld)" >/dev/null || \
 		(apt-get -o APT::Sandbox::User=root update -q && \
@@ -153,6 +154,18 @@ $(WASM): $(WASM_SYSROOT)/.made libdggs/include/dggs.h $(wildcard libdggs/src/*.c
 	@echo "built $@ ($$(wc -c < $@) bytes) with $$($(WASM_CC) --version | head -1)"
 
 wasm: $(WASM)
+
+# The JS package's tests (node --test) against fixtures the Python package writes (js/tools/write_fixtures.py);
+# tests/js/test_js.py runs the same in the Python suite.
+JS_FIXTURES := build/js-fixtures
+$(JS_FIXTURES)/fixtures.json: js/tools/write_fixtures.py $(STAMP)
+	@$(BUILD_CORE)
+	$(PY) js/tools/write_fixtures.py $(JS_FIXTURES)
+
+js-fixtures: $(JS_FIXTURES)/fixtures.json
+
+test-js: $(WASM) $(JS_FIXTURES)/fixtures.json
+	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
