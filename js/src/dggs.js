@@ -91,18 +91,21 @@ function core() {
   return W;
 }
 
+// Throw a DggsError for an error code; `what` is a function giving the message's start (built only then).
 function check(err, what) {
   if (err !== 0) {
     const ptr = W.dggs_error_string(err);
     views();
     let end = ptr;
     while (U8[end]) end++;
-    throw new DggsError(`${what}: ${String.fromCharCode(...U8.subarray(ptr, end))}`, err);
+    throw new DggsError(`${typeof what === "function" ? what() : what}: ${String.fromCharCode(...U8.subarray(ptr, end))}`, err);
   }
 }
 
 function projection(opts) {
-  const p = opts?.projection ?? "ISEA";
+  const p = opts?.projection;
+  if (p === undefined || p === "ISEA") return 0;
+  if (p === "IVEA") return 1;
   const v = PROJECTIONS[typeof p === "string" ? p.toUpperCase() : p];
   if (v === undefined) throw new DggsError(`projection ${JSON.stringify(p)} is not ISEA or IVEA`, 8);
   return v;
@@ -122,14 +125,14 @@ export function stringToCell(s) {
   for (let i = 0; i < s.length; i++) U8[scratch + 8 + i] = s.charCodeAt(i) & 0xff;
   U8[scratch + 8 + s.length] = 0;
   for (let i = 0; i < s.length; i++) if (s.charCodeAt(i) > 0x7f || s.charCodeAt(i) === 0) U8[scratch + 8] = 0x21;
-  check(w.dggs_string_to_cell(scratch + 8, scratch), `${JSON.stringify(s)} is not a cell id`);
+  check(w.dggs_string_to_cell(scratch + 8, scratch), () => `${JSON.stringify(s)} is not a cell id`);
   return rdU64(scratch);
 }
 
 /** The string id of a BigInt id (checked). */
 export function cellToString(cell) {
   const w = core();
-  check(w.dggs_cell_to_string(BigInt.asIntN(64, cell), scratch, 32), `${cell} is not a cell id`);
+  check(w.dggs_cell_to_string(BigInt.asIntN(64, cell), scratch, 32), () => `${cell} is not a cell id`);
   let end = scratch;
   while (U8[end]) end++;
   return String.fromCharCode(...U8.subarray(scratch, end));
@@ -189,7 +192,7 @@ export function getNumCells(level) {
 /** The cell of `level` holding the point (WGS84 degrees): a string id, or a BigInt with `{ asBigInt: true }`. */
 export function latLngToCell(lat, lng, level, opts) {
   const w = core();
-  check(w.dggs_latlng_to_cell(lat, lng, level, projection(opts), scratch), `point (${lat}, ${lng}) at level ${level}`);
+  check(w.dggs_latlng_to_cell(lat, lng, level, projection(opts), scratch), () => `point (${lat}, ${lng}) at level ${level}`);
   const cell = rdU64(scratch);
   return opts?.asBigInt ? cell : cellToString(cell);
 }
@@ -197,7 +200,7 @@ export function latLngToCell(lat, lng, level, opts) {
 /** The centre of a cell as [lat, lng] degrees. */
 export function cellToLatLng(cell, opts) {
   const w = core();
-  check(w.dggs_cell_to_latlng(toBig(cell), projection(opts), scratch, scratch + 8), `cell ${cell}`);
+  check(w.dggs_cell_to_latlng(toBig(cell), projection(opts), scratch, scratch + 8), () => `cell ${cell}`);
   return [F64[scratch >> 3], F64[(scratch >> 3) + 1]];
 }
 
@@ -212,7 +215,7 @@ export function cellToBoundary(cell, opts) {
   const id = toBig(cell);
   const ptr = n * 16 <= SCRATCH - 16 ? scratch + 16 : w.malloc(n * 16);
   try {
-    check(w.dggs_cell_to_boundary(id, densify, projection(opts), ptr, n, scratch), `cell ${cell}`);
+    check(w.dggs_cell_to_boundary(id, densify, projection(opts), ptr, n, scratch), () => `cell ${cell}`);
     views();
     const out = new Array(n);
     for (let i = 0, p = ptr >> 3; i < n; i++, p += 2) out[i] = [F64[p], F64[p + 1]];
@@ -255,7 +258,7 @@ export function latLngToCells(lat, lng, level, opts) {
     F64.set(lng, ln >> 3);
     const bad = W.dggsjs_latlng_to_cells(la, ln, n, level, proj, out);
     views();
-    if (bad >= 0) check(W.dggs_latlng_to_cell(lat[bad], lng[bad], level, proj, ptr), `point ${bad} (${lat[bad]}, ${lng[bad]})`);
+    if (bad >= 0) check(W.dggs_latlng_to_cell(lat[bad], lng[bad], level, proj, ptr), () => `point ${bad} (${lat[bad]}, ${lng[bad]})`);
     return U64.slice(out >> 3, (out >> 3) + n);
   });
 }
@@ -304,7 +307,7 @@ export function cellToParent(cell, level) {
   const w = core();
   const id = toBig(cell);
   const lv = level ?? w.dggs_get_level(id) - 1;
-  check(w.dggs_cell_to_parent(id, lv, scratch), `parent of ${cell} at level ${lv}`);
+  check(w.dggs_cell_to_parent(id, lv, scratch), () => `parent of ${cell} at level ${lv}`);
   return like(cell, rdU64(scratch));
 }
 
@@ -313,7 +316,7 @@ export function cellToCenterChild(cell, level) {
   const w = core();
   const id = toBig(cell);
   const lv = level ?? w.dggs_get_level(id) + 1;
-  check(w.dggs_cell_to_center_child(id, lv, scratch), `centre child of ${cell} at level ${lv}`);
+  check(w.dggs_cell_to_center_child(id, lv, scratch), () => `centre child of ${cell} at level ${lv}`);
   return like(cell, rdU64(scratch));
 }
 
@@ -338,11 +341,11 @@ export function cellToChildren(cell, level, opts) {
   const w = core();
   const id = toBig(cell);
   const lv = level ?? w.dggs_get_level(id) + 1;
-  check(w.dggs_cell_to_children_size(id, lv, scratch), `children of ${cell} at level ${lv}`);
+  check(w.dggs_cell_to_children_size(id, lv, scratch), () => `children of ${cell} at level ${lv}`);
   const n = rdI64(scratch);
   if (n > maxCells(opts)) throw new DggsError(`${n} children of ${cell} at level ${lv} exceed maxCells ${maxCells(opts)}`, 6);
   return withHeap(8 * n, (ptr) => {
-    check(w.dggs_cell_to_children(id, lv, ptr, BigInt(n)), `children of ${cell}`);
+    check(w.dggs_cell_to_children(id, lv, ptr, BigInt(n)), () => `children of ${cell}`);
     return idsOut(cell, ptr, n);
   });
 }
@@ -377,7 +380,7 @@ export function uncompactCells(cells, level, opts) {
   return withHeap(8 * n, (inp) => {
     views();
     U64.set(ids, inp >> 3);
-    check(w.dggs_uncompact_cells_size(inp, BigInt(n), level, scratch), `uncompactCells to level ${level}`);
+    check(w.dggs_uncompact_cells_size(inp, BigInt(n), level, scratch), () => `uncompactCells to level ${level}`);
     const size = rdI64(scratch);
     if (size > Math.max(maxCells(opts), 3 * n + 20480)) throw new DggsError(`uncompactCells: ${size} cells exceed maxCells ${maxCells(opts)}`, 6);
     return withHeap(8 * size, (out) => {
@@ -393,11 +396,11 @@ function sizedSearch(name, cell, k, opts) {
   const w = core();
   const id = toBig(cell);
   if (!Number.isInteger(k) || k < 0) throw new DggsError(`k ${k} is not a non-negative integer`, 6);
-  check(w[`dggs_${name}_size`](id, BigInt(k), scratch), `${name} of ${cell}`);
+  check(w[`dggs_${name}_size`](id, BigInt(k), scratch), () => `${name} of ${cell}`);
   const size = rdI64(scratch);
   if (size > 4 * maxCells(opts)) throw new DggsError(`${name} of ${cell} with k ${k}: over maxCells ${maxCells(opts)}`, 6);
   return withHeap(8 * size, (ptr) => {
-    check(w[`dggs_${name}`](id, BigInt(k), ptr, BigInt(size), scratch), `${name} of ${cell}`);
+    check(w[`dggs_${name}`](id, BigInt(k), ptr, BigInt(size), scratch), () => `${name} of ${cell}`);
     return idsOut(cell, ptr, rdI64(scratch));
   });
 }
@@ -415,14 +418,14 @@ export function gridRing(cell, k = 1, opts) {
 /** The three cells sharing an edge with a cell (across its edges from corner i to i + 1). */
 export function edgeNeighbors(cell) {
   const w = core();
-  check(w.dggs_edge_neighbors(toBig(cell), scratch), `cell ${cell}`);
+  check(w.dggs_edge_neighbors(toBig(cell), scratch), () => `cell ${cell}`);
   return idsOut(cell, scratch, 3);
 }
 
 /** The number of edge steps between two cells of one level. */
 export function gridDistance(a, b) {
   const w = core();
-  check(w.dggs_grid_distance(toBig(a), toBig(b), scratch), `distance from ${a} to ${b}`);
+  check(w.dggs_grid_distance(toBig(a), toBig(b), scratch), () => `distance from ${a} to ${b}`);
   return rdI64(scratch);
 }
 
