@@ -1,7 +1,8 @@
 // Point location per point in node (one thread), to set beside the native core's (js/tools/bench_native.py):
 //   node js/tools/bench.mjs [FIXTURES_DIR]      (the 100,000 random points of bulk.bin, make js-fixtures)
 // Times latLngToCells (Float64Array in, BigUint64Array out: one call into wasm) and latLngToCell per point
-// (BigInt and string ids) at level 17 on ISEA, best of 7 runs after a warm-up.
+// (BigInt and string ids) at level 17 on ISEA: the process's CPU time (steadier than wall time on a shared
+// machine), best of 7 runs after a warm-up.
 import { readFileSync } from "node:fs";
 
 import * as dggs from "../src/dggs.js";
@@ -18,9 +19,10 @@ function best(fn, runs = 7) {
   fn();
   let t = Infinity;
   for (let r = 0; r < runs; r++) {
-    const t0 = process.hrtime.bigint();
+    const c0 = process.cpuUsage();
     fn();
-    t = Math.min(t, Number(process.hrtime.bigint() - t0));
+    const c = process.cpuUsage(c0);
+    t = Math.min(t, (c.user + c.system) * 1000);
   }
   return t / n;
 }
