@@ -9,7 +9,7 @@ BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
 .PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain \
-	js-fixtures test-js
+	js-fixtures test-js typecheck-js
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -166,6 +166,12 @@ js-fixtures: $(JS_FIXTURES)/fixtures.json
 
 test-js: $(WASM) $(JS_FIXTURES)/fixtures.json
 	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs
+
+# The TypeScript declarations (js/src/dggs.d.ts) as a user meets them (js/test/types.ts), by tsc --strict from
+# npm (js/package-lock.json).
+typecheck-js:
+	npm ci --prefix js --no-audit --no-fund --loglevel=error
+	cd js && npx tsc -p .
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
