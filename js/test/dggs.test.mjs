@@ -199,3 +199,17 @@ test("errors: typed, with the core's code", () => {
   assert.deepEqual(dggs.edgeNeighbors("C401").length, 3);
   assert.equal(dggs.cellToCenterChild("C401", 5).length, 6);
 });
+
+test("init from bytes or a compiled module; batches that grow the memory", async () => {
+  const bytes = readFileSync(new URL("../dist/dggs.wasm", import.meta.url));
+  await dggs.init(new WebAssembly.Module(bytes));
+  assert.equal(dggs.latLngToCell(48.85, 2.35, 10), "C5210001102");
+  await dggs.init(bytes);
+  const n = 1_500_000; // 36 MB of arguments and answers: the memory grows during the call
+  const la = new Float64Array(n).map((_, i) => -89 + ((i * 7919) % 178000) / 1000);
+  const ln = new Float64Array(n).map((_, i) => -180 + ((i * 104729) % 360000) / 1000);
+  const ids = dggs.latLngToCells(la, ln, 24);
+  for (let i = 0; i < n; i += 9973) assert.equal(dggs.latLngToCell(la[i], ln[i], 24, { asBigInt: true }), ids[i]);
+  assert.equal(dggs.cellsToBoundaries(ids.subarray(0, 200_000)).length, 1_200_000);
+  assert.equal(dggs.cellToChildren("C401", 14).length, 3 ** 11);
+});
