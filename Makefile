@@ -9,7 +9,7 @@ BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
 .PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain \
-	js-fixtures test-js typecheck-js
+	js-fixtures test-js typecheck-js static-wasm
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -39,6 +39,7 @@ $(DEMO_STAMP): pyproject.toml setup.py
 # countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static
 # folder (git-ignored) so `dggs serve` needs no internet. dggs/server/_build.py copies the same for wheels.
 STATIC := dggs/server/static/vendor/.installed
+STATIC_WASM := dggs/server/static/vendor/dggs/.installed
 $(STATIC): dggs/server/package.json dggs/server/package-lock.json
 	npm ci --prefix dggs/server --no-audit --no-fund --loglevel=error
 	rm -rf dggs/server/static/vendor && mkdir -p dggs/server/static/vendor
@@ -104,7 +105,7 @@ fuzz: $(STAMP)
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout
 # (no sandbox user), so a /tmp that only root may write to does not stop it.
-test-browser: $(STAMP) $(STATIC)
+test-browser: $(STAMP) $(STATIC) $(STATIC_WASM)
 	@$(BUILD_CORE)
 	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
 		(apt-get -o APT::Sandbox::User=root update -q && \
@@ -154,6 +155,15 @@ $(WASM): $(WASM_SYSROOT)/.made libdggs/include/dggs.h $(wildcard libdggs/src/*.c
 	@echo "built $@ ($$(wc -c < $@) bytes) with $$($(WASM_CC) --version | head -1)"
 
 wasm: $(WASM)
+
+# The JS package beside the web map's other vendor files, so that the globe of `dggs serve` draws its cells from
+# ids (git-ignored, as the npm files; without it the page asks the server for GeoJSON).
+$(STATIC_WASM): $(WASM) js/src/dggs.js
+	mkdir -p $(dir $@)
+	cp js/src/dggs.js js/src/dggs.d.ts $(WASM) $(dir $@)
+	touch $@
+
+static-wasm: $(STATIC_WASM)
 
 # The JS package's tests (node --test) against fixtures the Python package writes (js/tools/write_fixtures.py);
 # tests/js/test_js.py runs the same in the Python suite.
