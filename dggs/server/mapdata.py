@@ -48,7 +48,7 @@ from .encodings import UINT64
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
 from .params import Context, check_level, negotiate, parse_bbox
-from .reader import cells_meeting_bbox
+from .reader import cells_meeting_bbox, covers_world
 
 __all__ = ["register", "MAP_STATS"]
 
@@ -101,6 +101,9 @@ def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, st
             return Response(np.zeros(1, dtype="<u8").tobytes(), media_type=UINT64)
         return Response(feature_collection([], [], [], {"numberReturned": 0}), media_type=GEOJSON)
     data = ctx.reader.level_data(level, column, stat)
+    if fmt == "uint64" and covers_world(bbox) and len(data) <= ctx.max_features:
+        # the whole world as ids: no polygon to build (the page draws them)
+        return Response(ids_body(data.ids, data.counts, list(data.values)), media_type=UINT64)
     found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_features)
     if found is None:
         where, smaller = (
