@@ -648,3 +648,39 @@ def test_cells_as_geojson_where_asked(page: Any, server: str) -> None:
     finally:
         page.get(f"{server}/")
         wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+
+
+def test_the_standalone_page_of_docs_js_draws_cells_from_ids(page: Any, data: dict[str, Any], server: str,
+                                                              tmp_path: Path) -> None:
+    """docs/js.md's page, saved in a copy of the web map's folder and served by create_app(static=...), draws
+    the store's level-3 cells from ids. Last: it leaves the page reloaded as the other tests had it."""
+    import re
+    import shutil
+    import threading
+
+    import uvicorn
+
+    from dggs.server.app import create_app
+    from dggs.server.vendor import STATIC_FOLDER
+
+    html = re.search(r"^```html\n(.*?)^```", (Path(__file__).parents[2] / "docs/js.md").read_text(), re.M | re.S)
+    assert html is not None
+    folder = tmp_path / "static"
+    shutil.copytree(STATIC_FOLDER, folder)
+    (folder / "cells.html").write_text(html.group(1))
+    port = _free_port()
+    srv = uvicorn.Server(uvicorn.Config(create_app(data["path"], static=folder), host="127.0.0.1", port=port,
+                                        log_level="warning"))
+    thread = threading.Thread(target=srv.run, daemon=True)
+    thread.start()
+    try:
+        wait_for(page, lambda: srv.started, message="the second server did not start")
+        page.get(f"http://127.0.0.1:{port}/static/cells.html")
+        drawn = wait_for(page, lambda: page.execute_script("return window.cellsDrawn"), message="no cells drawn")
+        assert drawn == len(level_rows(data["path"], 3)) > 0
+        assert js_errors(page) == []
+    finally:
+        srv.should_exit = True
+        thread.join(10)
+        page.get(f"{server}/")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
