@@ -1,7 +1,7 @@
 """The globe's cells from ids (WebAssembly) against GeoJSON: bytes over the wire, time to first paint, frame time
 while panning, in headless Chromium (issue 34).
 
-    python benchmarks/bench_map_ids.py [--sizes 10000 100000] [--level 9]
+    python benchmarks/bench_map_ids.py [--sizes 10000 100000] [--level 9] [--ways geojson ids]
 
 For each size N: a store of N cells at `level` (the centres of N distinct random cells), `dggs serve` on
 127.0.0.1 with --max-features N, and the page in headless Chromium (Debian's chromium and chromedriver, as
@@ -144,6 +144,7 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--sizes", type=int, nargs="+", default=[10_000, 100_000])
     parser.add_argument("--level", type=int, default=9)
+    parser.add_argument("--ways", nargs="+", default=["geojson", "ids"], choices=["geojson", "ids"])
     args = parser.parse_args()
     if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):
         sys.exit("needs Debian's chromium and chromium-driver (make test-browser installs them)")
@@ -155,7 +156,7 @@ def main() -> None:
         proc, base = serve(path, n)
         driver = browser()
         try:
-            for way in ("geojson", "ids"):
+            for way in args.ways:
                 r = measure(driver, base, args.level, way)
                 assert r["source"] == way and r["cells"] == n and r["state"] == "idle", r
                 print(f"| {n:,} | {way} | {r['bytes']:,} | {r['cold_ms']:,.0f} | {r['warm_ms']:,.0f} | "
