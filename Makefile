@@ -8,7 +8,8 @@ BENCH_VENV := .venv-bench
 BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
-.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean
+.PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain \
+	js-fixtures test-js typecheck-js static-wasm
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -38,6 +39,7 @@ $(DEMO_STAMP): pyproject.toml setup.py
 # countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static
 # folder (git-ignored) so `dggs serve` needs no internet. dggs/server/_build.py copies the same for wheels.
 STATIC := dggs/server/static/vendor/.installed
+STATIC_WASM := dggs/server/static/vendor/dggs/.installed
 $(STATIC): dggs/server/package.json dggs/server/package-lock.json
 	npm ci --prefix dggs/server --no-audit --no-fund --loglevel=error
 	rm -rf dggs/server/static/vendor && mkdir -p dggs/server/static/vendor
@@ -103,12 +105,83 @@ fuzz: $(STAMP)
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout
 # (no sandbox user), so a /tmp that only root may write to does not stop it.
-test-browser: $(STAMP) $(STATIC)
+test-browser: $(STAMP) $(STATIC) $(STATIC_WASM)
 	@$(BUILD_CORE)
 	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
 		(apt-get -o APT::Sandbox::User=root update -q && \
 		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q chromium chromium-driver)
 	$(PY) -m pytest -q -m browser tests/server
+
+# The C core as WebAssembly for the JS package (js/): clang's wasm32-wasi target, Debian's wasi-libc (musl's libm
+# and malloc) and lld, installed here if missing (needs root). One js/dist/dggs.wasm (git-ignored) exporting the
+# public functions of dggs.h and malloc/free, with no imports (the core calls nothing of WASI) and no generated
+# JS: js/src/dggs.js instantiates it. Floating point as the native build: -ffp-contract=off, no fast-math (wasm
+# has no fused multiply-add and no excess precision). Debian's emscripten 3.1.6 would also do, but it adds a
+# Python compiler driver, binaryen and a cache of system libraries built on first use, for a glue file we do
+# not need. WASM_CC=clang-NN picks another clang (with its libclang-rt-NN-dev-wasm32).
+WASM := js/dist/dggs.wasm
+WASM_CC ?= clang
+WASM_SYSROOT := build/wasm/sysroot
+WASM_PKGS := clang lld wasi-libc libclang-rt-dev-wasm32 nodejs
+OPEN := (
+WASM_EXPORTS = $(shell grep -oE '^\w.*dggs_\w+[$(OPEN)]' libdggs/include/dggs.h | grep -oE 'dggs_\w+[$(OPEN)]$$' | \
+	sed 's/.$$//') malloc free
+WASM_CFLAGS := --target=wasm32-wasi --sysroot=$(WASM_SYSROOT) -std=c11 -O3 -ffp-contract=off -fno-fast-math \
+	-fno-finite-math-only -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion -Werror \
+	-mexec-model=reactor -Ilibdggs/include -Ilibdggs/src
+
+# A sysroot of Debian's wasi-libc alone (its headers and libraries sit in the host's /usr under wasm32-wasi;
+# --sysroot=/usr would put /usr/local/include before them). The toolchain is installed if clang, wasm-ld,
+# wasi-libc or compiler-rt's wasm32 builtins are missing.
+$(WASM_SYSROOT)/.made:
+	@command -v $(WASM_CC) >/dev/null && command -v node >/dev/null && test -f /usr/lib/wasm32-wasi/libc.a && \
+		test -f "$$($(WASM_CC) -print-resource-dir)/lib/wasi/libclang_rt.builtins-wasm32.a" && \
+		command -v "$$($(WASM_CC) --target=wasm32-wasi -print-prog-name=wasm-ld)" >/dev/null || \
+		(apt-get -o APT::Sandbox::User=root update -q && \
+		 DEBIAN_FRONTEND=noninteractive apt-get -o APT::Sandbox::User=root install -y -q $(WASM_PKGS))
+	mkdir -p $(WASM_SYSROOT)/include $(WASM_SYSROOT)/lib
+	ln -sfn /usr/include/wasm32-wasi $(WASM_SYSROOT)/include/wasm32-wasi
+	ln -sfn /usr/lib/wasm32-wasi $(WASM_SYSROOT)/lib/wasm32-wasi
+	touch $@
+
+wasm-toolchain: $(WASM_SYSROOT)/.made
+
+# js/src/*.c: the JS package's batch loops over the public functions (exported by their export_name attributes).
+$(WASM): $(WASM_SYSROOT)/.made libdggs/include/dggs.h $(wildcard libdggs/src/*.c libdggs/src/*.h js/src/*.c)
+	@mkdir -p $(dir $@)
+	@echo "$(WASM_CC) $(WASM_CFLAGS) -o $@ libdggs/src/*.c $(wildcard js/src/*.c) (exports: dggs.h's functions, malloc, free)"
+	@$(WASM_CC) $(WASM_CFLAGS) -o $@ libdggs/src/*.c $(wildcard js/src/*.c) \
+		$(foreach f,$(WASM_EXPORTS),-Wl,--export=$(f))
+	@echo "built $@ ($$(wc -c < $@) bytes) with $$($(WASM_CC) --version | head -1)"
+
+wasm: $(WASM)
+
+# The JS package beside the web map's other vendor files, so that the globe of `dggs serve` draws its cells from
+# ids (git-ignored, as the npm files; without it the page asks the server for GeoJSON).
+$(STATIC_WASM): $(WASM) js/src/dggs.js
+	mkdir -p $(dir $@)
+	cp js/src/dggs.js js/src/dggs.d.ts $(WASM) $(dir $@)
+	touch $@
+
+static-wasm: $(STATIC_WASM)
+
+# The JS package's tests (node --test) against fixtures the Python package writes (js/tools/write_fixtures.py);
+# tests/js/test_js.py runs the same in the Python suite.
+JS_FIXTURES := build/js-fixtures
+$(JS_FIXTURES)/fixtures.json: js/tools/write_fixtures.py $(STAMP)
+	@$(BUILD_CORE)
+	$(PY) js/tools/write_fixtures.py $(JS_FIXTURES)
+
+js-fixtures: $(JS_FIXTURES)/fixtures.json
+
+test-js: $(WASM) $(JS_FIXTURES)/fixtures.json
+	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs
+
+# The TypeScript declarations (js/src/dggs.d.ts) as a user meets them (js/test/types.ts), by tsc --strict from
+# npm (js/package-lock.json).
+typecheck-js:
+	npm ci --prefix js --no-audit --no-fund --loglevel=error
+	cd js && npx tsc -p .
 
 # Benchmarks against the peers (h3, h3ronpy, pya5, PROJ via pyproj) in their own environment.
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt

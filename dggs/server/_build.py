@@ -10,6 +10,10 @@ Without npm the build goes on with a warning (and ``dggs serve`` warns at start-
 Editable installs are left alone: they read the source folder, where ``make static``
 puts the files.
 
+The globe draws its cells from ids with the grid's C core compiled to WebAssembly: the JS package's module and
+``.wasm`` (``js/``, ``make wasm``) go into ``static/vendor/dggs`` likewise, built first where the toolchain
+(clang with Debian's wasi-libc) is installed; without them the page reads the server's GeoJSON instead.
+
 Setuptools runs :class:`BuildPy` in place of its ``build_py`` (``tool.setuptools.cmdclass``
 in pyproject.toml); it needs nothing but the standard library and setuptools.
 """
@@ -23,7 +27,7 @@ from pathlib import Path
 
 from setuptools.command.build_py import build_py
 
-__all__ = ["BuildPy", "vendor_maplibre"]
+__all__ = ["BuildPy", "vendor_maplibre", "vendor_dggs_js"]
 
 _HERE = Path(__file__).parent
 _WANTED = ("maplibre-gl.mjs", "maplibre-gl.css")
@@ -69,10 +73,37 @@ def vendor_maplibre(server: Path = _HERE) -> bool:
     return True
 
 
+#: The JS package's files the page loads: repository path -> static/vendor path (as ``make static-wasm``).
+DGGS_JS = {"js/src/dggs.js": "dggs/dggs.js", "js/dist/dggs.wasm": "dggs/dggs.wasm"}
+
+
+def vendor_dggs_js(server: Path = _HERE) -> bool:
+    """Copy the JS package (its module and the C core as WebAssembly) into ``static/vendor/dggs``.
+
+    The ``.wasm`` is built first (``make wasm``) if it is missing and the toolchain is installed (nothing is
+    installed here). Returns whether both files are there afterwards; the page reads GeoJSON without them.
+    """
+    root = server.parents[1]
+    vendor = server / "static" / "vendor"
+    wasm = root / "js" / "dist" / "dggs.wasm"
+    toolchain = shutil.which("clang") and Path("/usr/lib/wasm32-wasi/libc.a").is_file()
+    if not wasm.is_file() and toolchain and shutil.which("make") and (root / "Makefile").is_file():
+        subprocess.run(["make", "-C", str(root), "--no-print-directory", "wasm"], check=False)
+    missing = [name for name in DGGS_JS if not (root / name).is_file()]
+    if missing:
+        warnings.warn(f"not built: {', '.join(missing)} (make wasm): the wheel's web map will read GeoJSON", stacklevel=2)
+        return False
+    for name, copy in DGGS_JS.items():
+        (vendor / copy).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(root / name, vendor / copy)
+    return True
+
+
 class BuildPy(build_py):
     """Setuptools' ``build_py``, with the web map's MapLibre files put in place first."""
 
     def run(self) -> None:  # noqa: D102 - setuptools' own command
         if not getattr(self, "editable_mode", False):
             vendor_maplibre()
+            vendor_dggs_js()
         super().run()

@@ -638,3 +638,23 @@ def test_zone_info_at_the_finest_level(client):
     conforms(info, "zone-info")
     assert info["level"] == dggs.MAX_LEVEL and info["children"] == [] and "statistics" not in info
     assert info["uint64Id"] == str(dggs.str_to_int(zone))
+
+
+def test_map_cells_as_ids_are_the_geojson_cells(store_path):
+    """/map/cells?f=uint64: the same cells, counts and values as the GeoJSON, as ids (the page draws them with the
+    WebAssembly core)."""
+    with make_client(store_path) as c:
+        for params in ({"level": 3}, {"level": 4, "bbox": "170,-40,-170,40", "column": "temp", "stat": "mean"}):
+            doc = c.get("/map/cells", params=params).json()
+            got = c.get("/map/cells", params={**params, "f": "uint64"})
+            assert got.status_code == 200 and got.headers["content-type"] == "application/x-binary"
+            body = got.content
+            n = int(np.frombuffer(body[:8], "<u8")[0])
+            assert len(body) == 8 + 24 * n and n == len(doc["features"]) > 0
+            ids = dggs.int_to_str(np.frombuffer(body[8:8 + 8 * n], "<u8").tolist())
+            counts = np.frombuffer(body[8 + 8 * n:8 + 16 * n], "<f8").tolist()
+            values = np.frombuffer(body[8 + 16 * n:], "<f8").tolist()
+            props = [f["properties"] for f in doc["features"]]
+            assert ids == [p["zone_id"] for p in props]
+            assert counts == [p["count"] for p in props]
+            assert [None if np.isnan(v) else v for v in values] == [p["value"] for p in props]

@@ -567,3 +567,120 @@ def test_a_skewed_column_spreads_over_the_colour_classes(page: Any, data: dict[s
             choose(page, "scale", "quantile")
         if state(page)["column"] is not None:
             choose(page, "column", "")
+
+
+# --- Cells from ids (issue 34) ---------------------------------------------------------------------
+def _plain(geometry: Any) -> Any:
+    """A lng/lat geometry whose longitudes run past +-180 (the page's rings) cut there and shifted back."""
+    import shapely
+    from shapely.affinity import translate
+    from shapely.geometry import box
+
+    parts = []
+    for k in (-1, 0, 1):
+        piece = geometry.intersection(box(-180 + 360 * k, -90, 180 + 360 * k, 90))
+        if not piece.is_empty:
+            parts.append(translate(piece, -360 * k))
+    return shapely.union_all(parts)
+
+
+def test_cells_are_drawn_from_ids_by_default(page: Any, server: str) -> None:
+    """The page asks for ids (map/cells?f=uint64) and draws them with the WebAssembly core: the same cells as
+    the GeoJSON answer for the view on the map."""
+    s = set_view(page, EUROPE_VIEW)
+    assert s["source"] == "ids", s
+    urls = page.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+    cells = [u for u in urls if "/map/cells?" in u]
+    assert cells and all("f=uint64" in u for u in cells), cells
+    assert any(u.endswith("/vendor/dggs/dggs.wasm") for u in urls)
+    drawn = page.execute_script(
+        "return window.dggsMap.getSource('cells').serialize().data.features.map(f => f.properties.zone_id)")
+    bbox = ",".join(str(x) for x in s["bbox"])
+    doc = _get_json(f"{server}/map/cells?level={s['level']}&bbox={bbox}&stat=count")
+    assert drawn == [f["properties"]["zone_id"] for f in doc["features"]] and len(drawn) == s["featureCount"] > 0
+    assert js_errors(page) == []
+
+
+@pytest.mark.parametrize("level", [0, 1, 2, 4])
+def test_cells_from_ids_cover_the_ground_of_the_geojson(page: Any, level: int) -> None:
+    """Every cell of levels 0-2 (the poles and the antimeridian among them) and a level-4 sample, drawn by the
+    page from ids, covers the ground of the server's GeoJSON polygon (dggs.cell_to_polygon with map_densify's
+    points): the symmetric difference in lng/lat is under 1e-9 of the cell's area, and under 1e-6 for a cell
+    across the antimeridian, where the server's polygon has the crossing on the curved edge and the page takes
+    it from a chord of the edge with 64 times map_densify's points."""
+    from shapely.geometry import shape
+
+    from dggs.server.reader import map_densify
+
+    zones = [str(z) for z in dggs.uncompact_cells(list(dggs.get_base_cells()), level)]
+    if level == 4:
+        zones = zones[::7] + [str(dggs.latlng_to_cell(lat, lng, 4)) for lat in (90, -90, 0) for lng in (180, -180)]
+    fc = page.execute_script("return window.dggsCellFeatures(arguments[0], arguments[1])", zones, level)
+    assert len(fc["features"]) == len(zones)
+    for zone, feature in zip(zones, fc["features"], strict=True):
+        assert feature["properties"]["zone_id"] == zone
+        ours = _plain(shape(feature["geometry"]))
+        theirs = dggs.cell_to_polygon(zone, densify=map_densify(level))
+        off = ours.symmetric_difference(theirs).area
+        across = theirs.geom_type == "MultiPolygon" or max(abs(x) for x in theirs.bounds[::2]) == 180
+        assert off <= (1e-6 if across else 1e-9) * theirs.area, (zone, off, theirs.area, across)
+
+
+def test_cells_as_geojson_where_asked(page: Any, server: str) -> None:
+    """With ?cells=geojson (as where the WebAssembly core is missing) the page draws the server's GeoJSON: the
+    same cells as from ids. Last: it leaves the page reloaded as the other tests had it."""
+    try:
+        from_ids = set_view(page, EUROPE_VIEW)
+        ids_drawn = page.execute_script(
+            "return window.dggsMap.getSource('cells').serialize().data.features.map(f => f.properties.zone_id)")
+        page.get(f"{server}/?cells=geojson")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+        s = set_view(page, EUROPE_VIEW)
+        assert s["source"] == "geojson" and s["level"] == from_ids["level"], s
+        urls = page.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+        cells = [u for u in urls if "/map/cells?" in u]
+        assert cells and not any("f=uint64" in u for u in cells), cells
+        assert not any("/vendor/dggs/" in u for u in urls)
+        drawn = page.execute_script(
+            "return window.dggsMap.getSource('cells').serialize().data.features.map(f => f.properties.zone_id)")
+        assert drawn == ids_drawn and len(drawn) > 0
+        assert js_errors(page) == []
+    finally:
+        page.get(f"{server}/")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+
+
+def test_the_standalone_page_of_docs_js_draws_cells_from_ids(page: Any, data: dict[str, Any], server: str,
+                                                              tmp_path: Path) -> None:
+    """docs/js.md's page, saved in a copy of the web map's folder and served by create_app(static=...), draws
+    the store's level-3 cells from ids. Last: it leaves the page reloaded as the other tests had it."""
+    import re
+    import shutil
+    import threading
+
+    import uvicorn
+
+    from dggs.server.app import create_app
+    from dggs.server.vendor import STATIC_FOLDER
+
+    html = re.search(r"^```html\n(.*?)^```", (Path(__file__).parents[2] / "docs/js.md").read_text(), re.M | re.S)
+    assert html is not None
+    folder = tmp_path / "static"
+    shutil.copytree(STATIC_FOLDER, folder)
+    (folder / "cells.html").write_text(html.group(1))
+    port = _free_port()
+    srv = uvicorn.Server(uvicorn.Config(create_app(data["path"], static=folder), host="127.0.0.1", port=port,
+                                        log_level="warning"))
+    thread = threading.Thread(target=srv.run, daemon=True)
+    thread.start()
+    try:
+        wait_for(page, lambda: srv.started, message="the second server did not start")
+        page.get(f"http://127.0.0.1:{port}/static/cells.html")
+        drawn = wait_for(page, lambda: page.execute_script("return window.cellsDrawn"), message="no cells drawn")
+        assert drawn == len(level_rows(data["path"], 3)) > 0
+        assert js_errors(page) == []
+    finally:
+        srv.should_exit = True
+        thread.join(10)
+        page.get(f"{server}/")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))

@@ -50,6 +50,9 @@ def test_a_wheel_built_from_a_clone_serves_a_whole_map(tmp_path):
     for name in (*VENDOR, "vendor/maplibre-gl/maplibre-gl-worker.mjs", *geography):
         assert sizes.get(f"dggs/server/static/{name}", 0) > 5_000, name
     assert not [name for name in sizes if name.endswith(".map") or "-dev." in name]  # 19 MB the page never loads
+    if shutil.which("clang") and Path("/usr/lib/wasm32-wasi/libc.a").is_file():  # built by make wasm (issue 34)
+        assert sizes.get("dggs/server/static/vendor/dggs/dggs.wasm", 0) > 100_000
+        assert sizes.get("dggs/server/static/vendor/dggs/dggs.js", 0) > 5_000
 
 
 def test_without_npm_the_build_goes_on_with_a_warning(tmp_path, monkeypatch):
@@ -69,3 +72,32 @@ def test_the_build_copies_what_npm_installed(tmp_path):
         (dist / name).write_text("x")
     assert _build.vendor_maplibre(tmp_path) is True
     assert (tmp_path / "static/vendor/maplibre-gl/maplibre-gl.mjs").read_text() == "x"
+
+
+def _js_tree(root: Path, wasm: bool) -> Path:
+    (root / "js/src").mkdir(parents=True)
+    (root / "js/src/dggs.js").write_text("export {}")
+    if wasm:
+        (root / "js/dist").mkdir(parents=True)
+        (root / "js/dist/dggs.wasm").write_bytes(b"\0asm")
+    server = root / "dggs" / "server"
+    (server / "static").mkdir(parents=True)
+    return server
+
+
+def test_the_build_copies_the_js_package(tmp_path):
+    """Issue 34: the WebAssembly core and its module go into static/vendor/dggs, where the page loads them."""
+    server = _js_tree(tmp_path, wasm=True)
+    assert _build.vendor_dggs_js(server) is True
+    assert (server / "static/vendor/dggs/dggs.wasm").read_bytes() == b"\0asm"
+    assert (server / "static/vendor/dggs/dggs.js").read_text() == "export {}"
+
+
+def test_without_the_wasm_the_build_goes_on_with_a_warning(tmp_path, monkeypatch):
+    server = _js_tree(tmp_path, wasm=False)
+    monkeypatch.setattr(_build.shutil, "which", lambda name: None)  # no toolchain: nothing is built
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert _build.vendor_dggs_js(server) is False
+    assert any("will read GeoJSON" in str(w.message) for w in caught)
+    assert not (server / "static" / "vendor").exists()

@@ -2,7 +2,10 @@
 // from the zoom (GET map/layers, GET map/cells), coloured by a value in classes (quantiles, logarithmic or
 // linear) with a legend of the classes, a cell popup, and Natural Earth's coastlines and borders beneath.
 // An ES module with no build step; MapLibre GL JS, the countries (world-atlas, TopoJSON) and
-// topojson-client come from /static/vendor, installed from npm (no internet needed).
+// topojson-client come from /static/vendor, installed from npm (no internet needed). The cells come as ids
+// (map/cells?f=uint64, 24 bytes a cell) and are drawn with the grid's WebAssembly core (the JS package js/,
+// copied to /static/vendor/dggs by `make static-wasm`); as GeoJSON from the server where it is missing or
+// with ?cells=geojson in the page's URL.
 import { Map as MapLibreMap, Marker, NavigationControl, Popup } from './vendor/maplibre-gl/maplibre-gl.mjs';
 
 // --- Level from zoom ------------------------------------------------------------------------------
@@ -60,6 +63,7 @@ const state = {
   geography: 'loading', // Natural Earth's countries: 'loading', 'loaded' or 'missing'
   renders: 0,           // fetches rendered so far
   selected: null,       // zone id of the clicked cell
+  source: 'loading',    // how cells arrive: 'ids' (drawn with the WebAssembly core) or 'geojson'
 };
 window.dggsState = state;
 
@@ -109,6 +113,140 @@ function graticule(step = 30, density = 2) {
 }
 
 const EMPTY = { type: 'FeatureCollection', features: [] };
+
+// --- Cells from ids ---------------------------------------------------------------------------------
+// The grid's C core as WebAssembly draws each cell's outline from its id, as the server's GeoJSON has it
+// (dggs.cell_to_polygon with map_densify's points per edge): a pole on the ring (a corner, or on an edge between
+// two of its points) as two points at latitude +-90 (arriving and leaving longitude), longitudes unwrapped (MapLibre wraps them back) and a ring that goes
+// round a pole closed over it. The server's polygons are split at the antimeridian instead; the ground is the same.
+let core = null; // the JS package (vendor/dggs/dggs.js), once its WebAssembly module is loaded
+const coreReady = new URLSearchParams(window.location.search).get('cells') === 'geojson'
+  ? Promise.resolve().then(() => { state.source = 'geojson'; })
+  : import('./vendor/dggs/dggs.js')
+    .then(async (m) => {
+      await m.init(new URL('./vendor/dggs/dggs.wasm', import.meta.url));
+      core = m;
+      state.source = 'ids';
+    })
+    .catch((err) => {
+      state.source = 'geojson';
+      console.warn('cells as GeoJSON (no WebAssembly core):', String(err.message || err));
+    });
+
+const mapDensify = (level) => (level <= 2 ? 8 : level <= 5 ? 4 : 2); // dggs.server.reader.map_densify
+
+// One cell's ring, [lng, lat] points, closed, from m (lat, lng) pairs of `pts` at `at` (index/_shapes.py's
+// ring_to_geometry before its split at the antimeridian).
+function cellRing(pts, at, m) {
+  const xs = [];
+  const ys = [];
+  const atPole = (k) => Math.abs(Math.abs(pts[at + 2 * k]) - 90) < 1e-9;
+  for (let k = 0; k < m; k += 1) {
+    const lat = pts[at + 2 * k];
+    if (atPole(k)) {
+      xs.push(pts[at + 2 * ((k + m - 1) % m) + 1], pts[at + 2 * ((k + 1) % m) + 1]);
+      ys.push(Math.sign(lat) * 90, Math.sign(lat) * 90);
+    } else {
+      xs.push(pts[at + 2 * k + 1]);
+      ys.push(lat);
+      // An edge through a pole (a pole between two of its points): the two points lie on opposite meridians.
+      const j = (k + 1) % m;
+      const lat2 = pts[at + 2 * j];
+      const turn = Math.abs(((((pts[at + 2 * j + 1] - pts[at + 2 * k + 1]) % 360) + 360) % 360) - 180);
+      if (!atPole(j) && turn < 1e-9 && lat * lat2 > 0) {
+        xs.push(pts[at + 2 * k + 1], pts[at + 2 * j + 1]);
+        ys.push(Math.sign(lat) * 90, Math.sign(lat) * 90);
+      }
+    }
+  }
+  const n = xs.length;
+  const ring = [[xs[0], ys[0]]];
+  let x = xs[0];
+  let winding = 0;
+  for (let i = 0; i < n; i += 1) {
+    const j = (i + 1) % n;
+    const raw = xs[j] - xs[i];
+    let step = ((((raw + 180) % 360) + 360) % 360) - 180;
+    if (Math.abs(ys[i]) === 90 && ys[j] === ys[i]) { // along a pole: west at the north, east at the south
+      step = ys[i] > 0 ? -((((-raw) % 360) + 360) % 360) : ((raw % 360) + 360) % 360;
+    }
+    winding += step;
+    x += step;
+    if (j !== 0) ring.push([x, ys[j]]);
+  }
+  if (Math.abs(winding) > 180) { // round a pole: close the ring over it
+    const pole = ys.reduce((a, b) => a + b, 0) / n > 0 ? 90 : -90;
+    const last = ring[ring.length - 1][0];
+    ring.push([last, pole], [xs[0] + winding, pole], [xs[0] + winding, ys[0]]);
+  }
+  ring.push(ring[0]);
+  return ring;
+}
+
+// The points where a ring crosses the antimeridian, added to it: the server's polygon crosses on the curved edge,
+// MapLibre on the chord between two points, and with the map's 2-8 points an edge the two crossings are up to
+// 3 % of the cell apart. Each crossing is taken from the cell's ring with 64 times the points per edge (in the
+// same unwrapped frame: both start at the first corner), the crossing of its chords nearest the coarse one.
+const ACROSS_FINER = 64;
+function crossingsOf(ring) {
+  const out = [];
+  for (let k = 0; k + 1 < ring.length; k += 1) {
+    const [x0, y0] = ring[k];
+    const [x1, y1] = ring[k + 1];
+    const lo = Math.min(x0, x1);
+    const hi = Math.max(x0, x1);
+    for (let X = 180 + 360 * Math.ceil((lo - 180) / 360); X <= hi; X += 360) {
+      if (X === x0 || X === x1 || x0 === x1) continue;
+      out.push({ k, X, y: y0 + ((y1 - y0) * (X - x0)) / (x1 - x0) });
+    }
+  }
+  return out;
+}
+
+function acrossAntimeridian(ring, id, densify, projection) {
+  const coarse = crossingsOf(ring);
+  if (!coarse.length) return ring;
+  const pts = Float64Array.from(core.cellToBoundary(id, { densify: ACROSS_FINER * (densify + 1) - 1, projection }).flat());
+  const fine = crossingsOf(cellRing(pts, 0, pts.length / 2));
+  const out = ring.slice();
+  for (const c of coarse.reverse()) { // from the last, so that earlier indexes stay
+    const near = fine.filter((f) => f.X === c.X).sort((a, b) => Math.abs(a.y - c.y) - Math.abs(b.y - c.y))[0];
+    if (near) out.splice(c.k + 1, 0, [c.X, near.y]);
+  }
+  return out;
+}
+
+// GeoJSON features of cells given as ids (BigUint64Array) at one level, with the properties map/cells gives.
+function cellFeatures(ids, level, counts, values) {
+  const densify = mapDensify(level);
+  const m = 3 * (densify + 1);
+  const projection = layers && String(layers.dggrs).endsWith('IVEA') ? 'IVEA' : 'ISEA';
+  const pts = core.cellsToBoundaries(ids, { densify, projection });
+  const area = core.cellArea(level, 'km^2');
+  const features = new Array(ids.length);
+  for (let i = 0; i < ids.length; i += 1) {
+    const value = values ? values[i] : NaN;
+    features[i] = {
+      type: 'Feature',
+      properties: {
+        zone_id: core.cellToString(ids[i]), level, area_km2: area, count: counts ? counts[i] : 0,
+        value: Number.isNaN(value) ? null : value,
+      },
+      geometry: { type: 'Polygon', coordinates: [acrossAntimeridian(cellRing(pts, 2 * m * i, m), ids[i], densify, projection)] },
+    };
+  }
+  return { type: 'FeatureCollection', features };
+}
+
+// map/cells?f=uint64's body: count n, n uint64 ids, n float64 counts, n float64 values (NaN: none).
+function featuresFromBody(body, level) {
+  const n = Number(new BigUint64Array(body, 0, 1)[0]);
+  return cellFeatures(
+    new BigUint64Array(body, 8, n), level, new Float64Array(body, 8 + 8 * n, n), new Float64Array(body, 8 + 16 * n, n),
+  );
+}
+// For the tests: the features the page would draw for string ids of one level.
+window.dggsCellFeatures = (zones, level) => cellFeatures(BigUint64Array.from(zones, (z) => core.stringToCell(z)), level);
 
 // --- The map --------------------------------------------------------------------------------------
 const style = {
@@ -516,15 +654,17 @@ async function refresh() {
     return;
   }
   try {
+    await coreReady;
     for (;;) {
-      const response = await fetch(cellsUrl(level, bbox), { signal });
+      const url = cellsUrl(level, bbox);
+      const response = await fetch(core ? `${url}&f=uint64` : url, { signal });
       if (seq !== requestSeq) return;
       if (response.status === 413 && level > 0) {
         level -= 1;
         continue;
       }
       if (!response.ok) throw new Error(`cells at level ${level}: ${await readError(response)}`);
-      const fc = await response.json();
+      const fc = core ? featuresFromBody(await response.arrayBuffer(), level) : await response.json();
       if (seq !== requestSeq) return;
       render(fc, level, bbox, wanted);
       shownKey = key;
