@@ -82,10 +82,10 @@ test-all: $(STAMP) static-if-npm
 # The C core's own tests (ctest), built warning-free (-Werror) as a static and a shared library.
 CMAKE := $(VENV)/bin/cmake
 test-core: $(STAMP)
-	$(CMAKE) -S libdggs -B build/libdggs -G Ninja -DCMAKE_MAKE_PROGRAM=$(abspath $(VENV))/bin/ninja \
+	$(CMAKE) -S libdggs -B build/ctest -G Ninja -DCMAKE_MAKE_PROGRAM=$(abspath $(VENV))/bin/ninja \
 		-DCMAKE_BUILD_TYPE=Release -DDGGS_WERROR=ON >/dev/null
-	$(CMAKE) --build build/libdggs
-	$(VENV)/bin/ctest --test-dir build/libdggs --output-on-failure
+	$(CMAKE) --build build/ctest
+	$(VENV)/bin/ctest --test-dir build/ctest --output-on-failure
 
 # The same C tests, and the Python suite's kernel tests over a dggs._core built likewise, under
 # AddressSanitizer and UBSan (gcc's runtimes, preloaded into the Python process): libdggs/tools/sanitize.sh.

@@ -142,7 +142,8 @@ SLOW_SH = {"README.md-3", "experiments.md-0"}
 
 @pytest.mark.parametrize("code", [pytest.param(*p.values, id=p.id, marks=pytest.mark.slow) if p.id in SLOW_SH else p for p in _blocks("sh")])
 def test_sh_blocks_run(code, docs_dir, monkeypatch):
-    """Each ``dggs ...`` line, in order, through click's CliRunner; other lines (make) are the Makefile's.
+    """Each ``dggs ...`` line, in order, through click's CliRunner; ``cmake``/``ctest`` lines (the C library on its
+    own) run as written in the repository, with the venv's cmake; other lines (make) are the Makefile's.
 
     ``dggs serve`` runs up to the point where it would start listening: the store is opened and the app
     built, and uvicorn is handed the app (a server that runs until stopped has its own tests in tests/server).
@@ -158,6 +159,15 @@ def test_sh_blocks_run(code, docs_dir, monkeypatch):
     monkeypatch.setattr(uvicorn, "run", lambda app, **kwargs: served.append((app, kwargs)))
     for line in code.splitlines():
         args = shlex.split(line, comments=True)
+        if args and args[0] in ("cmake", "ctest"):
+            import os
+            import subprocess
+            import sys
+
+            env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}"}
+            done = subprocess.run(["bash", "-c", line], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+            assert done.returncode == 0, (line, done.stdout[-2000:], done.stderr[-2000:])
+            continue
         if not args or args[0] != "dggs":
             assert not args or args[0] == "make", line
             continue
