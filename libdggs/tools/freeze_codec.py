@@ -5,7 +5,7 @@ level 0..28 (every face, first and last digits) and junk with their parsed ids (
 well-formed integers with their validity and strings, and small arrays with max_level's answer. Run with the
 numba package installed (the reference), from anywhere but this checkout's root::
 
-    cd /tmp && python /work/wt/points/libdggs/tools/freeze_codec.py
+    cd /tmp && python /path/to/libdggs/tools/freeze_codec.py
 """
 
 from __future__ import annotations

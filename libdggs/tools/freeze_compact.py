@@ -3,7 +3,7 @@
 Writes libdggs/tests/frozen_compact.h: cell sets (complete and incomplete sibling sets at levels 1..28 on faces
 at the icosahedron's vertices and middle, duplicates, cells inside others, shuffled) with compact's output and
 uncompact_prepare's cover, total and bad at a few levels. Run once with the numba package
-(/work/main/.venv/bin/python libdggs/tools/freeze_compact.py).
+(.venv/bin/python libdggs/tools/freeze_compact.py).
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ fine cells, edges, rings), the rings' starts, and the first rows of its ring poi
 projections, densified 0-2 points an edge. Run with the numba package installed (the reference), from anywhere
 but this checkout's root::
 
-    cd /tmp && python /work/wt/dissolve/libdggs/tools/freeze_dissolve.py
+    cd /tmp && python /path/to/libdggs/tools/freeze_dissolve.py
 """
 
 from __future__ import annotations

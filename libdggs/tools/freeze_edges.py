@@ -6,7 +6,7 @@ at every level 0..27, one directed edge each: its origin, destination, reverse, 
 boundary with one point between its corners, on both projections. Run with the numba package installed (the
 reference), from anywhere but this checkout's root::
 
-    cd /tmp && python /work/wt/dissolve/libdggs/tools/freeze_edges.py
+    cd /tmp && python /path/to/libdggs/tools/freeze_edges.py
 """
 
 from __future__ import annotations

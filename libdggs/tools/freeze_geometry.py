@@ -9,7 +9,7 @@ points on face edges and 1e-12 / 1e-9 off them, level-1 dividing rays, and a few
 
 Run once with the numba kernel (the installed package, not the worktree: run it from outside the repository)::
 
-    cd /tmp && /work/main/.venv/bin/python /path/to/libdggs/tools/freeze_geometry.py /path/to/libdggs/tests/frozen_geometry.h
+    cd /tmp && .venv/bin/python /path/to/libdggs/tools/freeze_geometry.py /path/to/libdggs/tests/frozen_geometry.h
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 Writes libdggs/tests/frozen_hierarchy.h: parent_of of first, last and middle cells of every level 0..28 on the
 faces at the icosahedron's top and bottom vertices and around its middle (levels -1..29, invalid ints too),
 levels, count_children and children (in full when small; count, first, last and a sum otherwise) of such cells
-at every level. Run once with the numba package (/work/main/.venv/bin/python libdggs/tools/freeze_hierarchy.py);
+at every level. Run once with the numba package (.venv/bin/python libdggs/tools/freeze_hierarchy.py);
 the C test then checks the C kernels still give these values.
 """
 

@@ -4,7 +4,7 @@ Writes libdggs/tests/frozen_local.h: at every level 0..28, anchors holding the p
 antimeridian and icosahedron vertices (face corners) (located with the numba points kernel, ISEA; local
 (i, j) itself is planar and the same under IVEA), each with cells of its own face, of the faces across its edges
 and of a far face: their local_ij, local_cells of that (i, j) and of (i + 1, j), child_pos at two parent levels
-and child_pos_cells. Run once with the numba package (/work/main/.venv/bin/python libdggs/tools/freeze_local.py).
+and child_pos_cells. Run once with the numba package (.venv/bin/python libdggs/tools/freeze_local.py).
 """
 
 from __future__ import annotations

@@ -9,7 +9,7 @@ np.argsort (its quicksort: the order of ties) of arrays with ties and NaNs. ISEA
 points are rebuilt in the test by the same arithmetic (lat0 - d r, lng0 + d c). Run with the numba package
 installed (the reference), from anywhere but this checkout's root::
 
-    cd /tmp && python /work/wt/dissolve/libdggs/tools/freeze_pixels.py
+    cd /tmp && python /path/to/libdggs/tools/freeze_pixels.py
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ midpoints and face centres and at random points, every level 0..28, both project
 corners; plain boundaries; the exact pole and antimeridian rings. ``--poles`` prints points.c's pole table.
 Run with the numba package installed (the reference), from anywhere but this checkout's root::
 
-    cd /tmp && python /work/wt/points/libdggs/tools/freeze_points.py
+    cd /tmp && python /path/to/libdggs/tools/freeze_points.py
 """
 
 from __future__ import annotations

@@ -7,7 +7,7 @@ literal (``float.hex()``), so the C core has the Python floor's exact values. ``
 here operation for operation over the geometry kernel's ``inverse_unit``; where the numba local.py is still
 importable the tables are checked equal to its own.
 
-Run with the project's Python (``/work/main/.venv/bin/python libdggs/tools/gen_local_tables.py``); ``--check``
+Run with the project's Python (``.venv/bin/python libdggs/tools/gen_local_tables.py``); ``--check``
 compares instead of writing (exit 1 on a difference).
 """
 
