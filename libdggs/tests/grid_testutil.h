@@ -6,14 +6,10 @@
 
 #include "bits.h"
 #include "grid.h"
+#include "testutil.h"
 
-/* splitmix64 on a caller's state. */
-static inline uint64_t gt_next(uint64_t *state) {
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-}
+/* splitmix64 on a caller's state (testutil.h). */
+static inline uint64_t gt_next(uint64_t *state) { return splitmix64(state); }
 
 static inline int gt_below(uint64_t *state, int n) { return (int)(gt_next(state) % (uint64_t)n); }
 

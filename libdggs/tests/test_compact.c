@@ -4,25 +4,14 @@
 #include "compact.h"
 
 #include "check.h"
+#include "testutil.h"
 #include "dggs.h"
 #include "frozen_compact.h"
 #include "hierarchy.h"
 
-static uint64_t sid(const char *s) {
-    uint64_t c = dggs_base_cell(s[0] - 'A');
-    if (!s[1]) return c;
-    c |= (uint64_t)(s[1] - '0' + 1) << DGGS_L1_SHIFT;
-    for (int k = 2; s[k]; k++) c |= (uint64_t)(s[k] - '0' + 1) << (2 * (DGGS_MAX_LEVEL - k));
-    return c;
-}
 
 static uint64_t rnd_state = 777;
-static uint64_t rnd(void) {
-    uint64_t z = (rnd_state += UINT64_C(0x9e3779b97f4a7c15));
-    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
-    return z ^ (z >> 31);
-}
+static uint64_t rnd(void) { return splitmix64(&rnd_state); }
 
 #define BIG 100000
 static uint64_t in[BIG], out[BIG], out2[BIG], scratch[BIG + DGGS_RADIX_HIST], work[4 * BIG + DGGS_RADIX_HIST];

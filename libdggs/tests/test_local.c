@@ -5,25 +5,14 @@
 
 #include "bits.h"
 #include "check.h"
+#include "testutil.h"
 #include "dggs.h"
 #include "frozen_local.h"
 #include "hierarchy.h"
 
-static uint64_t sid(const char *s) {
-    uint64_t c = dggs_base_cell(s[0] - 'A');
-    if (!s[1]) return c;
-    c |= (uint64_t)(s[1] - '0' + 1) << DGGS_L1_SHIFT;
-    for (int k = 2; s[k]; k++) c |= (uint64_t)(s[k] - '0' + 1) << (2 * (DGGS_MAX_LEVEL - k));
-    return c;
-}
 
 static uint64_t rnd_state = 99;
-static uint64_t rnd(void) {
-    uint64_t z = (rnd_state += UINT64_C(0x9e3779b97f4a7c15));
-    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
-    return z ^ (z >> 31);
-}
+static uint64_t rnd(void) { return splitmix64(&rnd_state); }
 static uint64_t rnd_cell(int face, int level) {
     uint64_t c = dggs_base_cell(face);
     if (level >= 1) c |= (rnd() % 6 + 1) << DGGS_L1_SHIFT;
