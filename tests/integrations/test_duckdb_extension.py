@@ -1,0 +1,309 @@
+"""The native DuckDB extension (libdggs/duckdb/) in the real DuckDB CLI, row by row against the Python API.
+
+Each test starts pip's ``duckdb`` CLI (the ``duckdb-cli`` package) with ``-unsigned``, LOADs the extension
+built by ``make duckdb-extension`` (built here if missing or older than its sources) and compares what SQL
+answers with what ``dggs`` answers for the same inputs: random points and ids at every level, and the edge
+cases (the poles, the antimeridian, levels 0 and 28, NULL, invalid ids and coordinates). The SQL files of
+``duckdb_sql/`` (a subset of sqllogictest: ``statement ok|error`` and ``query`` blocks) run the same way.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+import dggs
+
+ROOT = Path(__file__).resolve().parents[2]
+EXT = ROOT / "build" / "duckdb" / "dggs.duckdb_extension"
+SQL_DIR = Path(__file__).resolve().parent / "duckdb_sql"
+CLI = Path(sys.executable).with_name("duckdb")
+if not CLI.is_file():
+    CLI = Path(shutil.which("duckdb") or CLI)
+
+pytestmark = pytest.mark.skipif(not CLI.is_file(), reason="no duckdb CLI (pip install duckdb-cli)")
+
+
+def _sources() -> list[Path]:
+    return [*ROOT.glob("libdggs/duckdb/*.[ch]"), *ROOT.glob("libdggs/src/*.[ch]"), ROOT / "libdggs/include/dggs.h",
+            ROOT / "libdggs/duckdb/build.py"]  # fmt: skip
+
+
+@pytest.fixture(scope="module")
+def ext() -> Path:
+    stale = not EXT.is_file() or EXT.stat().st_mtime < max(p.stat().st_mtime for p in _sources())
+    if stale:
+        if shutil.which("cc") is None:
+            pytest.skip("no C compiler to build the extension")
+        subprocess.run([sys.executable, str(ROOT / "libdggs/duckdb/build.py"), "--out", str(EXT)], check=True)
+    return EXT
+
+
+def run(ext: Path, sql: str, db: Path | None = None, mode: str = "-json", load: bool = True) -> subprocess.CompletedProcess:
+    prefix = f"LOAD '{ext}'; " if load else ""
+    args = [str(CLI), "-unsigned", mode, *(["-noheader", "-separator", "\t", "-nullvalue", "NULL"] if mode == "-list" else [])]
+    return subprocess.run([*args, *([str(db)] if db else []), "-c", prefix + sql], capture_output=True, text=True,
+                          timeout=600)  # fmt: skip
+
+
+def rows(ext: Path, sql: str, db: Path | None = None) -> list[dict[str, Any]]:
+    """The rows of the last statement of ``sql`` as dicts (DuckDB's JSON output mode)."""
+    proc = run(ext, sql, db)
+    assert proc.returncode == 0, proc.stderr + proc.stdout
+    out: list[dict[str, Any]] = []
+    text, at, decoder = proc.stdout, 0, json.JSONDecoder()
+    while text[at:].strip():  # one JSON array per statement with results; the last one's
+        at += len(text[at:]) - len(text[at:].lstrip())
+        out, at = decoder.raw_decode(text, at)
+    return out
+
+
+def table(path: Path, columns: dict[str, np.ndarray]) -> str:
+    """Write ``columns`` to a CSV file; the SQL that reads it back typed, with a row number ``i``."""
+    names = list(columns)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["i", *names])
+        for i, values in enumerate(zip(*(columns[n] for n in names), strict=True)):
+            w.writerow([i, *(repr(float(v)) if isinstance(v, float | np.floating) else v for v in values)])
+    types = {"i": "BIGINT", **{n: "DOUBLE" if columns[n].dtype.kind == "f" else "UBIGINT" if columns[n].dtype.kind == "u"
+                               else "BIGINT" for n in names}}  # fmt: skip
+    spec = ", ".join(f"'{k}': '{v}'" for k, v in types.items())
+    return f"read_csv('{path}', header=true, columns={{{spec}}})"
+
+
+# ---------------------------------------------------------------------------------------------- points to ids
+
+EDGE_POINTS = [(90.0, 0.0), (-90.0, 0.0), (90.0, 180.0), (-90.0, -180.0), (0.0, 180.0), (0.0, -180.0),
+               (45.0, 179.9999999), (-45.0, -179.9999999), (0.0, 0.0), (89.9999, 45.0), (-89.9999, -135.0),
+               (10.0, 540.0), (-10.0, -359.5), (26.56505117707799, 36.0), (-26.56505117707799, 0.0)]  # fmt: skip
+
+
+def _points(n: int, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    rng = np.random.default_rng(seed)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, n)))
+    lng = rng.uniform(-180, 180, n)
+    edge = np.array(EDGE_POINTS)
+    return np.concatenate([lat, edge[:, 0]]), np.concatenate([lng, edge[:, 1]])
+
+
+@pytest.mark.parametrize("level", [0, 1, 7, 17, 28])
+def test_latlng_to_cell_row_by_row(ext: Path, tmp_path: Path, level: int) -> None:
+    lat, lng = _points(2000, level)
+    src = table(tmp_path / "p.csv", {"lat": lat, "lng": lng})
+    got = rows(ext, f"SELECT dggs_latlng_to_cell(lat, lng, {level}) AS c, dggs_latlng_to_cell_str(lat, lng, {level}) AS s, "
+                    f"dggs_latlng_to_cell_ubigint(lat, lng, {level}) AS u FROM {src} ORDER BY i")  # fmt: skip
+    want = np.asarray(dggs.latlng_to_cell(lat, lng, level, as_int=True), np.uint64)
+    assert [int(r["c"]) for r in got] == want.tolist()
+    assert [int(r["u"]) for r in got] == want.tolist()
+    assert [r["s"] for r in got] == list(dggs.latlng_to_cell(lat, lng, level))
+
+
+# ---------------------------------------------------------------------------------------------- one id per row
+
+
+def _ids(seed: int = 7) -> np.ndarray:
+    """Cells at every level 0..28: random points, the edge points, the 20 faces."""
+    lat, lng = _points(60, seed)
+    out = [np.asarray(dggs.latlng_to_cell(lat, lng, lv, as_int=True), np.uint64) for lv in range(29)]
+    faces = np.asarray(dggs.str_to_int([chr(ord("A") + f) for f in range(20)]), np.uint64)
+    return np.unique(np.concatenate([*out, faces]))
+
+
+@pytest.mark.parametrize("kind", ["BIGINT", "UBIGINT", "VARCHAR"])
+def test_cell_functions_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None:
+    ids = _ids()
+    levels = np.asarray(dggs.get_level(ids), np.int64)
+    src = table(tmp_path / "c.csv", {"u": ids})
+    cell = {"BIGINT": "u::BIGINT", "UBIGINT": "u", "VARCHAR": "dggs_int_to_str(u)"}[kind]
+    got = rows(ext, f"""
+        SELECT dggs_get_level(c) AS level, dggs_is_valid_cell(c) AS ok, dggs_int_to_str(c) AS s, dggs_str_to_int(c) AS n,
+               dggs_cell_to_parent(c, dggs_get_level(c) // 2) AS parent,
+               dggs_cell_to_center_child(c, least(dggs_get_level(c) + 2, 28)) AS centre_child,
+               dggs_cell_to_latlng_lat(c) AS lat, dggs_cell_to_latlng_lng(c) AS lng, dggs_cell_to_latlng(c) AS ll,
+               dggs_cell_area(c) AS area, dggs_cell_to_boundary(c) AS corners,
+               dggs_cell_to_child_pos(c, dggs_get_level(c) // 2) AS pos,
+               dggs_child_pos_to_cell(dggs_cell_to_child_pos(c, dggs_get_level(c) // 2),
+                                      dggs_cell_to_parent(c, dggs_get_level(c) // 2), dggs_get_level(c)) AS back,
+               dggs_grid_disk(c, 1) AS disk, dggs_grid_ring(c, 2) AS ring
+        FROM (SELECT i, {cell} AS c FROM {src}) ORDER BY i""")
+    strings = list(dggs.int_to_str(ids))
+
+    def form(values: Any) -> list[Any]:
+        values = np.asarray(values, np.uint64)
+        return list(dggs.int_to_str(values)) if kind == "VARCHAR" else [int(v) for v in values]
+
+    def got_ids(col: str) -> list[Any]:
+        return [r[col] if kind == "VARCHAR" else int(r[col]) for r in got]
+
+    assert [r["level"] for r in got] == levels.tolist()
+    assert all(r["ok"] is True for r in got)
+    assert [r["s"] for r in got] == strings
+    assert [int(r["n"]) for r in got] == ids.tolist()
+    parents = np.array([dggs.cell_to_parent(int(c), int(lv) // 2) for c, lv in zip(ids, levels, strict=True)], np.uint64)
+    assert got_ids("parent") == form(parents)
+    centre = np.array([dggs.cell_to_center_child(int(c), min(int(lv) + 2, 28)) for c, lv in zip(ids, levels, strict=True)])
+    assert got_ids("centre_child") == form(centre.astype(np.uint64))
+    lat, lng = dggs.cell_to_latlng(ids)
+    assert [r["lat"] for r in got] == np.asarray(lat).tolist()  # the same doubles: one C core
+    assert [r["lng"] for r in got] == np.asarray(lng).tolist()
+    assert [(r["ll"]["lat"], r["ll"]["lng"]) for r in got] == list(zip(np.asarray(lat).tolist(), np.asarray(lng).tolist(), strict=True))
+    assert [r["area"] for r in got] == np.asarray(dggs.cell_area(ids)).tolist()
+    corners = np.asarray(dggs.cell_to_boundary(ids), np.float64)
+    assert [[(p["lat"], p["lng"]) for p in r["corners"]] for r in got] == [[tuple(p) for p in c] for c in corners.tolist()]
+    pos = [dggs.cell_to_child_pos(int(c), int(lv) // 2) for c, lv in zip(ids, levels, strict=True)]
+    assert [r["pos"] for r in got] == pos
+    assert got_ids("back") == form(ids)
+    for r, c in zip(got, ids, strict=True):
+        disk = np.sort(np.asarray(dggs.grid_disk(int(c), 1), np.uint64).ravel())
+        ring = np.sort(np.asarray(dggs.grid_ring(int(c), 2), np.uint64).ravel())
+        want_disk, want_ring = form(disk[disk != 0]), form(ring[ring != 0])
+        assert [v if kind == "VARCHAR" else int(v) for v in r["disk"]] == want_disk
+        assert [v if kind == "VARCHAR" else int(v) for v in r["ring"]] == want_ring
+
+
+def test_children_distances_paths_compaction(ext: Path, tmp_path: Path) -> None:
+    ids = _ids(11)
+    ids = ids[np.asarray(dggs.get_level(ids)) <= 26]
+    levels = np.asarray(dggs.get_level(ids), np.int64)
+    src = table(tmp_path / "c.csv", {"u": ids})
+    got = rows(ext, f"""
+        SELECT dggs_cell_to_children(u, least(dggs_get_level(u) + 2, 28)) AS kids,
+               dggs_compact_cells(dggs_cell_to_children(u, least(dggs_get_level(u) + 2, 28))) AS compact,
+               dggs_uncompact_cells([u], least(dggs_get_level(u) + 1, 28)) AS uncompact,
+               dggs_grid_distance(u, (dggs_grid_ring(u, 3))[1]) AS d3,
+               dggs_grid_path_cells(u, (dggs_grid_ring(u, 3))[1]) AS path
+        FROM {src} ORDER BY i""")
+    for r, c, lv in zip(got, ids, levels, strict=True):
+        kids = np.asarray(dggs.cell_to_children(int(c), min(int(lv) + 2, 28)), np.uint64).ravel()
+        assert [int(v) for v in r["kids"]] == kids.tolist()
+        assert [int(v) for v in r["compact"]] == [int(c)]
+        assert [int(v) for v in r["uncompact"]] == np.asarray(dggs.uncompact_cells([int(c)], min(int(lv) + 1, 28)), np.uint64).tolist()
+        far = int(r["path"][-1])
+        assert r["d3"] == dggs.grid_distance(int(c), far) == 3 or lv == 0
+        assert [int(v) for v in r["path"]] == np.asarray(dggs.grid_path_cells(int(c), far), np.uint64).tolist()
+
+
+def test_edges_and_local_ij(ext: Path) -> None:
+    got = rows(ext, """
+        SELECT dggs_cells_to_directed_edge('C401', 'C402') AS e, dggs_origin_to_directed_edges('C401') AS es,
+               dggs_directed_edge_to_cells('C401.1') AS cells, dggs_reverse_directed_edge('C401.1') AS back,
+               dggs_get_directed_edge_origin('C401.1') AS o, dggs_get_directed_edge_destination('C401.1') AS d,
+               dggs_is_valid_directed_edge('C401.1') AS ok, dggs_is_valid_directed_edge('C401') AS not_edge,
+               dggs_edge_length('C401.1', 'km') AS km, dggs_directed_edge_to_boundary('C401.1') AS ends,
+               dggs_cell_to_local_ij('C401', 'C402') AS ij, dggs_local_ij_to_cell('C401', 4, 2) AS at,
+               dggs_cells_to_directed_edge(dggs_str_to_int('C401'), dggs_str_to_int('C402')) AS e_int""")[0]
+    assert got["e"] == "C401.1" and got["es"] == list(dggs.origin_to_directed_edges("C401"))
+    assert got["cells"] == list(dggs.directed_edge_to_cells("C401.1"))
+    assert got["back"] == dggs.reverse_directed_edge("C401.1")
+    assert (got["o"], got["d"]) == (dggs.get_directed_edge_origin("C401.1"), dggs.get_directed_edge_destination("C401.1"))
+    assert got["ok"] is True and got["not_edge"] is False
+    assert got["km"] == dggs.edge_length("C401.1", unit="km")
+    ends = np.asarray(dggs.directed_edge_to_boundary("C401.1"), np.float64)
+    assert [(p["lat"], p["lng"]) for p in got["ends"]] == [tuple(p) for p in ends.tolist()]
+    assert (got["ij"]["i"], got["ij"]["j"]) == tuple(int(v) for v in dggs.cell_to_local_ij("C401", "C402"))
+    assert got["at"] == "C402"
+    assert int(got["e_int"]) + (1 << 64) == int(dggs.cells_to_directed_edge(dggs.str_to_int("C401"), dggs.str_to_int("C402")))
+
+
+# ---------------------------------------------------------------------------------------------- NULL, invalid, WKT/WKB
+
+
+def test_null_and_invalid_give_null_as_h3(ext: Path) -> None:
+    got = rows(ext, """
+        SELECT dggs_get_level(NULL::VARCHAR) AS a, dggs_get_level('X9') AS b, dggs_get_level(-5) AS c,
+               dggs_is_valid_cell('X9') AS d, dggs_is_valid_cell(NULL::BIGINT) AS e, dggs_latlng_to_cell(100, 0, 5) AS f,
+               dggs_latlng_to_cell(0, 0, 29) AS g, dggs_latlng_to_cell('nan'::DOUBLE, 0, 5) AS h,
+               dggs_cell_to_parent('C4', 3) AS i, dggs_cell_to_parent('C401', NULL) AS j, dggs_grid_disk('C401', -1) AS k,
+               dggs_grid_distance('C401', 'C4') AS l, dggs_compact_cells(['C401', 'nope']) AS m,
+               dggs_compact_cells(['C401', NULL]) AS n, dggs_cell_to_lat(0::UBIGINT) AS o,
+               dggs_latlng_to_cell(0, 'inf'::DOUBLE, 5) AS p, dggs_cell_to_children('C401', 2) AS q,
+               dggs_local_ij_to_cell('C401', 1, 1) AS r""")[0]
+    assert got == {**dict.fromkeys("abcfghijklmopqr"), "d": False, "e": None, "n": ["C401"]}
+
+
+def test_bad_argument_is_an_error_naming_it(ext: Path) -> None:
+    proc = run(ext, "SELECT dggs_edge_length('C401.1', 'miles')")
+    assert proc.returncode != 0 and "dggs_edge_length: unit 'miles' is not one of" in proc.stderr + proc.stdout
+    proc = run(ext, "SELECT dggs_cell_to_boundary_wkt('C401', 5000)")
+    assert proc.returncode != 0 and "densify 5000 is out of range" in proc.stderr + proc.stdout
+
+
+def test_boundary_wkt_and_wkb(ext: Path) -> None:
+    shapely = pytest.importorskip("shapely")
+    got = rows(ext, "SELECT dggs_cell_to_boundary_wkt('C401') AS wkt, hex(dggs_cell_to_boundary_wkb('C401')) AS wkb, "
+                    "dggs_cell_to_boundary_wkt('C401', 3) AS dense")[0]  # fmt: skip
+    ring = np.asarray(dggs.cell_to_boundary("C401"), np.float64)
+    shape = shapely.from_wkt(got["wkt"])
+    assert np.asarray(shape.exterior.coords).tolist() == [[lng, lat] for lat, lng in [*ring.tolist(), ring[0].tolist()]]
+    assert shapely.from_wkb(bytes.fromhex(got["wkb"])).equals_exact(shape, 0)
+    dense = np.asarray(dggs.cell_to_boundary("C401", densify=3), np.float64)
+    assert len(shapely.from_wkt(got["dense"]).exterior.coords) == len(dense) + 1
+
+
+# ---------------------------------------------------------------------------------------------- where users are
+
+
+def test_persisted_view_after_reopen_and_load(ext: Path, tmp_path: Path) -> None:
+    db = tmp_path / "cells.duckdb"
+    setup = ("CREATE TABLE pts AS SELECT * FROM (VALUES (51.05, -114.07), (-33.9, 18.4)) t(lat, lng); "
+             "CREATE VIEW binned AS SELECT dggs_latlng_to_cell_str(lat, lng, 9) AS cell, "
+             "dggs_cell_to_parent(dggs_latlng_to_cell_str(lat, lng, 9), 3) AS parent FROM pts")  # fmt: skip
+    assert run(ext, setup, db).returncode == 0
+    without = run(ext, "SELECT * FROM binned", db, load=False)
+    assert without.returncode != 0 and "dggs_latlng_to_cell_str" in without.stderr + without.stdout
+    got = rows(ext, "SELECT * FROM binned", db)
+    want = dggs.latlng_to_cell([51.05, -33.9], [-114.07, 18.4], 9)
+    assert [r["cell"] for r in got] == list(want)
+    assert [r["parent"] for r in got] == list(dggs.cell_to_parent(want, 3))
+
+
+def test_python_load(ext: Path) -> None:
+    duckdb = pytest.importorskip("duckdb")
+    import dggs.duckdb
+
+    con = duckdb.connect(config={"allow_unsigned_extensions": "true"})
+    assert dggs.duckdb.load(con, ext) is True
+    assert con.sql("SELECT dggs_latlng_to_cell_str(51.05, -114.07, 9)").fetchall() == [("F200021102",)]
+    with pytest.raises(RuntimeError, match="allow_unsigned_extensions"):
+        dggs.duckdb.load(duckdb.connect(), ext)
+
+
+# ---------------------------------------------------------------------------------------------- the SQL files
+
+
+def _blocks(text: str) -> list[tuple[str, str, list[str]]]:
+    """(kind, sql, expected lines) of each block: 'statement ok', 'statement error' (expected: a message part),
+    or 'query ...' followed by the SQL, '----' and the rows, tab-separated."""
+    out = []
+    for chunk in text.split("\n\n"):
+        lines = [ln for ln in chunk.strip().splitlines() if not ln.startswith("#")]
+        if not lines:
+            continue
+        head, body = lines[0], lines[1:]
+        sep = body.index("----") if "----" in body else len(body)
+        out.append((head.split()[0] + (" error" if head == "statement error" else ""), "\n".join(body[:sep]), body[sep + 1:]))
+    return out
+
+
+@pytest.mark.parametrize("path", sorted(SQL_DIR.glob("*.test")), ids=lambda p: p.stem)
+def test_sql_file(ext: Path, path: Path) -> None:
+    done: list[str] = []  # statements so far, run again before each block (one CLI process a block)
+    for kind, sql, expected in _blocks(path.read_text()):
+        proc = run(ext, "; ".join([*done, sql]), mode="-list")
+        if kind == "statement error":
+            assert proc.returncode != 0 and all(e in proc.stderr + proc.stdout for e in expected), (sql, proc.stderr)
+            continue
+        assert proc.returncode == 0, (sql, proc.stderr)
+        if kind == "statement":
+            done.append(sql)
+        else:
+            assert proc.stdout.splitlines() == expected, sql
