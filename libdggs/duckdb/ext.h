@@ -138,5 +138,6 @@ void reg(duckdb_connection con, const char *name, const char *params, char ret, 
 void register_cells(duckdb_connection con);
 void register_grid(duckdb_connection con);
 void register_edges(duckdb_connection con);
+void register_fill(duckdb_connection con);
 
 #endif

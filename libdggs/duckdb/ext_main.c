@@ -152,5 +152,6 @@ DUCKDB_EXTENSION_ENTRYPOINT(duckdb_connection connection, duckdb_extension_info 
     register_cells(connection);
     register_grid(connection);
     register_edges(connection);
+    register_fill(connection);
     return true;
 }

@@ -307,3 +307,43 @@ def test_sql_file(ext: Path, path: Path) -> None:
             done.append(sql)
         else:
             assert proc.stdout.splitlines() == expected, sql
+
+
+# ---------------------------------------------------------------------------------------------- polygon fill
+
+
+def _shapes() -> list[Any]:
+    shapely = pytest.importorskip("shapely")
+    box = shapely.box(-10, -10, 10, 10)
+    holed = shapely.Polygon([(30, 40), (45, 40), (45, 52), (30, 52)], [[(35, 44), (40, 44), (40, 48), (35, 48)]])
+    multi = shapely.MultiPolygon([shapely.box(170, -5, 180, 5), shapely.box(-180, -5, -170, 5)])
+    polar = shapely.Polygon([(-180, 80), (-60, 75), (60, 78), (180, 80), (180, 90), (-180, 90)])
+    thin = shapely.Polygon([(100.1, -33.3), (101.7, -33.1), (100.4, -31.9)])
+    return [box, holed, multi, polar, thin]
+
+
+@pytest.mark.parametrize("mode", ["center", "contains", "overlaps", "overlapping_bbox"])
+def test_polygon_fill_wkb_and_wkt_row_by_row(ext: Path, mode: str) -> None:
+    shapely = pytest.importorskip("shapely")
+    shapes, levels = _shapes(), [5, 7, 6, 4, 9]
+    values = ", ".join(f"({i}, from_hex('{shapely.to_wkb(s).hex()}'), '{shapely.to_wkt(s, rounding_precision=-1)}', {lv})"
+                       for i, (s, lv) in enumerate(zip(shapes, levels, strict=True)))  # fmt: skip
+    got = rows(ext, f"""SELECT dggs_polygon_to_cells(wkb, lv, '{mode}') AS a, dggs_polygon_wkt_to_cells(wkt, lv, '{mode}') AS b,
+                            dggs_polygon_to_cells_str(wkb, lv, '{mode}') AS s
+                        FROM (VALUES {values}) t(i, wkb, wkt, lv) ORDER BY i""")  # fmt: skip
+    for r, shape, lv in zip(got, shapes, levels, strict=True):
+        want = np.asarray(dggs.polygon_to_cells(shape, lv, mode=mode, as_int=True), np.uint64)
+        assert [int(v) for v in r["a"]] == np.sort(want).tolist()
+        assert r["b"] == r["a"] and r["s"] == list(dggs.int_to_str(np.sort(want)))
+
+
+def test_polygon_fill_errors_and_nulls(ext: Path) -> None:
+    got = rows(ext, "SELECT dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', 29, 'center') AS a, "
+                    "dggs_polygon_wkt_to_cells(NULL, 5, 'center') AS b, dggs_polygon_wkt_to_cells('POLYGON EMPTY', 5, 'center') AS c")[0]  # fmt: skip
+    assert got == {"a": None, "b": None, "c": []}
+    for sql, part in [("dggs_polygon_wkt_to_cells('POLYGON ((1 2, 3', 6, 'center')", "not a WKT (Multi)Polygon"),
+                      ("dggs_polygon_to_cells('\\x01\\x02'::BLOB, 6, 'center')", "not a WKB (Multi)Polygon"),
+                      ("dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', 6, 'inside')", "mode 'inside' is not one of"),
+                      ("dggs_polygon_wkt_to_cells('POLYGON ((170 0, 190 0, 190 5, 170 0))', 6, 'center')", "-180..180")]:  # fmt: skip
+        proc = run(ext, f"SELECT {sql}")
+        assert proc.returncode != 0 and part in proc.stderr + proc.stdout, sql
