@@ -347,3 +347,16 @@ def test_polygon_fill_errors_and_nulls(ext: Path) -> None:
                       ("dggs_polygon_wkt_to_cells('POLYGON ((170 0, 190 0, 190 5, 170 0))', 6, 'center')", "-180..180")]:  # fmt: skip
         proc = run(ext, f"SELECT {sql}")
         assert proc.returncode != 0 and part in proc.stderr + proc.stdout, sql
+
+
+def test_docs_sql_blocks_run_in_the_cli(ext: Path) -> None:
+    """docs/duckdb.md's ``sql`` blocks, each in its own CLI process from the repository root (their LOAD path)."""
+    import re
+    import textwrap
+
+    text = (ROOT / "docs" / "duckdb.md").read_text()
+    blocks = [textwrap.dedent(m.group(2)) for m in re.finditer(r"^( *)```sql\n(.*?)^\1```", text, re.M | re.S)]
+    assert len(blocks) >= 2
+    for sql in blocks:
+        proc = subprocess.run([str(CLI), "-unsigned", "-c", sql], capture_output=True, text=True, cwd=ROOT, timeout=300)
+        assert proc.returncode == 0 and "Error" not in proc.stdout + proc.stderr, (sql, proc.stderr)
