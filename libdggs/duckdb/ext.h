@@ -117,6 +117,9 @@ static inline const fn_extra *extra_of(duckdb_function_info info) {
     return (const fn_extra *)duckdb_scalar_function_get_extra_info(info);
 }
 
+/* Most ids one row's list may hold (2^27 ids, 1 GiB): past it the query fails with an error naming the function. */
+#define MAX_LIST_CELLS ((int64_t)1 << 27)
+
 /* LIST outputs: start, append n ids of kind `kind` as row `row`'s list, or n doubles pairs (lat, lng structs). */
 list_out_t list_of(duckdb_vector v);
 /* Returns false if DuckDB could not reserve the room. */

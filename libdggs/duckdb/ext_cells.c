@@ -97,6 +97,13 @@ static void cell_to_children(duckdb_function_info info, duckdb_data_chunk in, du
             out_null(&o, r);
             continue;
         }
+        if (size > MAX_LIST_CELLS) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "dggs_cell_to_children: a level-%d cell has more than %lld descendants at level %d",
+                     dggs_get_level(cell), (long long)MAX_LIST_CELLS, level);
+            duckdb_scalar_function_set_error(info, msg);
+            return;
+        }
         kids = (dggs_cell *)malloc((size_t)size * sizeof(dggs_cell));
         if (!kids) {
             duckdb_scalar_function_set_error(info, "dggs_cell_to_children: out of memory");

@@ -8,8 +8,6 @@
 #include "ext.h"
 
 #define ROWS(n) for (idx_t r = 0; r < (n); r++)
-/* Most cells one row's list may hold (2^27 ids, 1 GiB): past it the query fails, naming the level. */
-#define MAX_FILL_CELLS ((int64_t)1 << 27)
 
 /* A polygon being read: (lat, lng) pairs and ring sizes, grown as needed. */
 typedef struct {
@@ -209,9 +207,9 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
         }
         err = dggs_polygon_to_cells_size(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode, DGGS_ISEA,
                                          &size);
-        if (err == DGGS_OK && size > MAX_FILL_CELLS) {
+        if (err == DGGS_OK && size > MAX_LIST_CELLS) {
             snprintf(msg, sizeof msg, "%s: the polygon holds more than %lld cells at level %d", x->name,
-                     (long long)MAX_FILL_CELLS, level);
+                     (long long)MAX_LIST_CELLS, level);
             duckdb_scalar_function_set_error(info, msg);
             break;
         }

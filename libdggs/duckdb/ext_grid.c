@@ -7,10 +7,6 @@
 
 #define ROWS(n) for (idx_t r = 0; r < (n); r++)
 
-/* The largest k a disk or ring takes in SQL: past it the whole level is within reach anyway at the levels where a
- * list fits in memory, and the core's work space grows with k. */
-#define MAX_SQL_K 100000
-
 /* dggs_grid_disk (variant 0) and dggs_grid_ring (1): (cell, k) -> sorted list of ids. */
 static void disk(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
@@ -23,10 +19,17 @@ static void disk(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector 
         int64_t k, size, count;
         list_empty(&l, r);
         if (is_null(&c, r) || is_null(&kc, r) || !id_get(&c, x->kind, r, &cell) ||
-            (k = ((int64_t *)kc.data)[r]) < 0 || k > MAX_SQL_K ||
+            (k = ((int64_t *)kc.data)[r]) < 0 ||
             (x->variant == 0 ? dggs_grid_disk_size(cell, k, &size) : dggs_grid_ring_size(cell, k, &size)) != DGGS_OK) {
             out_null(&o, r);
             continue;
+        }
+        if (size > MAX_LIST_CELLS) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "%s: k %lld at level %d needs more than %lld cells of work space", x->name,
+                     (long long)k, dggs_get_level(cell), (long long)MAX_LIST_CELLS);
+            duckdb_scalar_function_set_error(info, msg);
+            return;
         }
         buf = (dggs_cell *)malloc((size_t)size * sizeof(dggs_cell));
         if (!buf) {
@@ -65,6 +68,13 @@ static void pair(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector 
         if (x->variant == 0) {
             ((int64_t *)o.data)[r] = d;
             continue;
+        }
+        if (d + 1 > MAX_LIST_CELLS) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "dggs_grid_path_cells: a path of %lld cells is longer than %lld", (long long)(d + 1),
+                     (long long)MAX_LIST_CELLS);
+            duckdb_scalar_function_set_error(info, msg);
+            return;
         }
         path = (dggs_cell *)malloc((size_t)(d + 1) * sizeof(dggs_cell));
         if (!path) {
@@ -107,6 +117,13 @@ static void compaction(duckdb_function_info info, duckdb_data_chunk in, duckdb_v
             free(ids);
             out_null(&o, r);
             continue;
+        }
+        if (size > MAX_LIST_CELLS) {
+            free(ids);
+            char msg[160];
+            snprintf(msg, sizeof msg, "%s: more than %lld cells", x->name, (long long)MAX_LIST_CELLS);
+            duckdb_scalar_function_set_error(info, msg);
+            return;
         }
         out = (dggs_cell *)malloc((size_t)(size ? size : 1) * sizeof(dggs_cell));
         if (!out) {

@@ -360,3 +360,55 @@ def test_docs_sql_blocks_run_in_the_cli(ext: Path) -> None:
     for sql in blocks:
         proc = subprocess.run([str(CLI), "-unsigned", "-c", sql], capture_output=True, text=True, cwd=ROOT, timeout=300)
         assert proc.returncode == 0 and "Error" not in proc.stdout + proc.stderr, (sql, proc.stderr)
+
+
+# ---------------------------------------------------------------------------------------------- adversarial values
+
+BAD_IDS = ["0", "1", "-1", "-9223372036854775808", "9223372036854775807", "4996743786567565311", "4996743786567565313"]
+BAD_STRINGS = ["''", "'C'", "'c401'", "'Z0'", "'C9'", "'C4013'", "'C' || repeat('0', 40)", "'C401\\0'", "'C401.9'",
+               "'C401.'", "'.1'", "' C401'", "'ééé'"]  # fmt: skip
+BAD_INTS = ["-1", "0", "29", "9223372036854775807", "-9223372036854775808", "3"]
+CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (doubles)) for every function
+    "dggs_latlng_to_cell(x, y, n)", "dggs_latlng_to_cell_str(x, y, n)", "dggs_latlng_to_cell_ubigint(x, y, n)",
+    "dggs_cell_to_latlng(i)", "dggs_cell_to_lat(i)", "dggs_cell_to_lng(i)", "dggs_cell_to_boundary(i)",
+    "dggs_cell_to_boundary_wkt(i)", "dggs_cell_to_boundary_wkb(i)", "dggs_cell_area(i)", "dggs_get_level(i)",
+    "dggs_is_valid_cell(i)", "dggs_str_to_int(i)", "dggs_int_to_str(i)", "dggs_cell_to_parent(i, n)",
+    "dggs_cell_to_center_child(i, n)", "dggs_cell_to_child_pos(i, n)", "dggs_child_pos_to_cell(m, i, n)",
+    "dggs_grid_ring(i, least(n, 3))", "dggs_grid_distance(i, i)", "dggs_grid_path_cells(i, i)",
+    "dggs_compact_cells([i, i])", "dggs_uncompact_cells([i], n)", "dggs_cell_to_local_ij(i, i)",
+    "dggs_local_ij_to_cell(i, m, n)", "dggs_get_directed_edge_origin(i)", "dggs_get_directed_edge_destination(i)",
+    "dggs_reverse_directed_edge(i)", "dggs_is_valid_directed_edge(i)", "dggs_directed_edge_to_cells(i)",
+    "dggs_directed_edge_to_boundary(i)", "dggs_cells_to_directed_edge(i, i)", "dggs_origin_to_directed_edges(i)",
+    "dggs_edge_length(i, 'm')", "dggs_grid_disk(i, least(n, 3))", "dggs_cell_to_children(i, least(n, 6))",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("kind", ["BIGINT", "UBIGINT", "VARCHAR"])
+def test_adversarial_values_never_crash(ext: Path, kind: str) -> None:
+    """Bad ids, levels, positions and coordinates through every function: each row NULL or a right value."""
+    ids = BAD_STRINGS + ["'C401'", "'C401.1'", "NULL"] if kind == "VARCHAR" else BAD_IDS + ["4996743786567565312", "NULL"]
+    if kind == "UBIGINT":
+        ids = [v for v in ids if not v.startswith("-")] + ["18446744073709551615", "14220678773375762432"]
+    ints = ", ".join(f"({v})" for v in [*BAD_INTS, "NULL"])
+    nums = ", ".join(f"({v})" for v in ["'nan'::DOUBLE", "'inf'::DOUBLE", "-1e308", "90.0000001", "0.0", "NULL"])
+    source = (f"(SELECT i::{kind} AS i, n, n AS m, x, x AS y FROM (VALUES {', '.join(f'({v})' for v in ids)}) a(i), "
+              f"(VALUES {ints}) b(n), (VALUES {nums}) c(x))")  # fmt: skip
+    for call in CALLS:
+        proc = run(ext, f"SELECT count(*), count({call}) FROM {source}")
+        assert proc.returncode == 0, (call, proc.returncode, proc.stderr)
+        assert "INTERNAL" not in proc.stdout + proc.stderr, call
+
+
+def test_random_values_validity_as_python(ext: Path, tmp_path: Path) -> None:
+    """Random 64-bit values and mutated ids: dggs_is_valid_cell and dggs_get_level as dggs's, row by row."""
+    rng = np.random.default_rng(3)
+    ids = _ids(5)
+    flips = ids ^ (np.uint64(1) << rng.integers(0, 64, ids.size).astype(np.uint64))
+    values = np.concatenate([rng.integers(0, 2**64 - 1, 2000, dtype=np.uint64, endpoint=True), flips, ids])
+    src = table(tmp_path / "v.csv", {"u": values})
+    got = rows(ext, f"SELECT dggs_is_valid_cell(u) AS ok, dggs_get_level(u) AS lv, dggs_is_valid_directed_edge(u) AS e "
+                    f"FROM {src} ORDER BY i")  # fmt: skip
+    ok = np.asarray(dggs.is_valid_cell(values), bool)
+    assert [r["ok"] for r in got] == ok.tolist()
+    assert [r["lv"] for r in got] == [int(dggs.get_level(int(v))) if k else None for v, k in zip(values, ok, strict=True)]
+    assert [r["e"] for r in got] == np.asarray(dggs.is_valid_directed_edge(values), bool).tolist()
