@@ -133,13 +133,18 @@ def test_cell_functions_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None
                dggs_cell_to_child_pos(c, dggs_get_level(c) // 2) AS pos,
                dggs_child_pos_to_cell(dggs_cell_to_child_pos(c, dggs_get_level(c) // 2),
                                       dggs_cell_to_parent(c, dggs_get_level(c) // 2), dggs_get_level(c)) AS back,
-               dggs_grid_disk(c, 1) AS disk, dggs_grid_ring(c, 2) AS ring
+               dggs_grid_disk(c, 1) AS disk, dggs_grid_ring(c, 2) AS ring, dggs_get_face(c) AS face,
+               dggs_edge_neighbors(c) AS nbrs, dggs_are_neighbor_cells(c, (dggs_edge_neighbors(c))[2]) AS nb,
+               dggs_are_neighbor_cells(c, c) AS self
         FROM (SELECT i, {cell} AS c FROM {src}) ORDER BY i""")
     strings = list(dggs.int_to_str(ids))
 
     def form(values: Any) -> list[Any]:
         values = np.asarray(values, np.uint64)
         return list(dggs.int_to_str(values)) if kind == "VARCHAR" else [int(v) for v in values]
+
+    def got_ids_row(values: list[Any]) -> list[Any]:
+        return [v if kind == "VARCHAR" else int(v) for v in values]
 
     def got_ids(col: str) -> list[Any]:
         return [r[col] if kind == "VARCHAR" else int(r[col]) for r in got]
@@ -162,12 +167,26 @@ def test_cell_functions_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None
     pos = [dggs.cell_to_child_pos(int(c), int(lv) // 2) for c, lv in zip(ids, levels, strict=True)]
     assert [r["pos"] for r in got] == pos
     assert got_ids("back") == form(ids)
+    assert [r["face"] for r in got] == np.asarray(dggs.get_face(ids)).tolist()
+    assert [got_ids_row(r["nbrs"]) for r in got] == [form(n) for n in np.asarray(dggs.edge_neighbors(ids), np.uint64)]
+    assert all(r["nb"] is True and r["self"] is False for r in got)
     for r, c in zip(got, ids, strict=True):
         disk = np.sort(np.asarray(dggs.grid_disk(int(c), 1), np.uint64).ravel())
         ring = np.sort(np.asarray(dggs.grid_ring(int(c), 2), np.uint64).ravel())
         want_disk, want_ring = form(disk[disk != 0]), form(ring[ring != 0])
         assert [v if kind == "VARCHAR" else int(v) for v in r["disk"]] == want_disk
         assert [v if kind == "VARCHAR" else int(v) for v in r["ring"]] == want_ring
+
+
+def test_level_table(ext: Path) -> None:
+    got = rows(ext, "SELECT lv, dggs_get_num_cells(lv) AS n, dggs_level_area(lv, 'm^2') AS m2, dggs_level_area(lv, 'km^2') AS km2, "
+                    "dggs_level_area(lv, 'rads^2') AS sr FROM range(29) t(lv) ORDER BY lv")  # fmt: skip
+    levels = list(range(29))
+    assert [r["n"] for r in got] == [int(dggs.get_num_cells(lv)) for lv in levels]
+    for col, unit in (("m2", "m^2"), ("km2", "km^2"), ("sr", "rads^2")):
+        assert [r[col] for r in got] == [float(dggs.cell_area(lv, unit)) for lv in levels]
+    proc = run(ext, "SELECT dggs_level_area(3, 'acres')")
+    assert proc.returncode != 0 and "unit 'acres' is not one of" in proc.stderr + proc.stdout
 
 
 def test_children_distances_paths_compaction(ext: Path, tmp_path: Path) -> None:
@@ -380,6 +399,8 @@ CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (d
     "dggs_reverse_directed_edge(i)", "dggs_is_valid_directed_edge(i)", "dggs_directed_edge_to_cells(i)",
     "dggs_directed_edge_to_boundary(i)", "dggs_cells_to_directed_edge(i, i)", "dggs_origin_to_directed_edges(i)",
     "dggs_edge_length(i, 'm')", "dggs_grid_disk(i, least(n, 3))", "dggs_cell_to_children(i, least(n, 6))",
+    "dggs_get_face(i)", "dggs_edge_neighbors(i)", "dggs_are_neighbor_cells(i, i)", "dggs_get_num_cells(n)",
+    "dggs_level_area(n, 'm^2')",
 ]  # fmt: skip
 
 
