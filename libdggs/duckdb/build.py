@@ -89,7 +89,10 @@ def footer(platform_name: str, api_version: str, extension_version: str, abi: st
     return out
 
 
-def build(version: str, out: Path, cc: str) -> Path:
+SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer", "-g"]
+
+
+def build(version: str, out: Path, cc: str, sanitize: bool = False) -> Path:
     include = headers(version, ROOT / "build" / "duckdb-sdk")
     out.parent.mkdir(parents=True, exist_ok=True)
     library = out.with_suffix(".so")
@@ -100,7 +103,8 @@ def build(version: str, out: Path, cc: str) -> Path:
     if platform.machine() in ("i386", "i686", "x86"):
         defines += ["-msse2", "-mfpmath=sse"]
     includes = [f"-I{include}", f"-I{ROOT / 'libdggs' / 'include'}", f"-I{ROOT / 'libdggs' / 'src'}"]
-    subprocess.run([cc, *FLAGS, *defines, *includes, *sources, "-o", str(library), "-lm"], check=True)
+    flags = FLAGS + (SANITIZE if sanitize else [])
+    subprocess.run([cc, *flags, *defines, *includes, *sources, "-o", str(library), "-lm"], check=True)
     tmp = out.with_suffix(".tmp")
     shutil.copyfile(library, tmp)
     with open(tmp, "ab") as f:
@@ -114,8 +118,10 @@ def main() -> None:
     parser.add_argument("--duckdb-version", default=os.environ.get("DUCKDB_VERSION", DEFAULT_DUCKDB))
     parser.add_argument("--out", type=Path, default=ROOT / "build" / "duckdb" / "dggs.duckdb_extension")
     parser.add_argument("--cc", default=os.environ.get("CC", "cc"))
+    parser.add_argument("--sanitize", action="store_true",
+                        help="AddressSanitizer and UBSan (run the CLI binary with LD_PRELOAD of the compiler's libasan)")
     args = parser.parse_args()
-    print(build(args.duckdb_version, args.out, args.cc))
+    print(build(args.duckdb_version, args.out, args.cc, args.sanitize))
 
 
 if __name__ == "__main__":

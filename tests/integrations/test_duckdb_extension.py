@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import csv
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -25,9 +26,14 @@ import dggs
 ROOT = Path(__file__).resolve().parents[2]
 EXT = ROOT / "build" / "duckdb" / "dggs.duckdb_extension"
 SQL_DIR = Path(__file__).resolve().parent / "duckdb_sql"
-CLI = Path(sys.executable).with_name("duckdb")
+CLI = Path(os.environ.get("DGGS_DUCKDB_CLI", "") or sys.executable).with_name("duckdb")
+if os.environ.get("DGGS_DUCKDB_CLI"):  # a CLI binary, e.g. duckdb_cli/duckdb of pip's package, for a sanitizer run
+    CLI = Path(os.environ["DGGS_DUCKDB_CLI"])
 if not CLI.is_file():
     CLI = Path(shutil.which("duckdb") or CLI)
+# Set for the CLI processes only: LD_PRELOAD of libasan with an extension built by build.py --sanitize.
+CLI_ENV = {**os.environ, "LD_PRELOAD": os.environ.get("DGGS_DUCKDB_CLI_PRELOAD", ""),
+           "ASAN_OPTIONS": "detect_leaks=0"} if os.environ.get("DGGS_DUCKDB_CLI_PRELOAD") else None  # fmt: skip
 
 pytestmark = pytest.mark.skipif(not CLI.is_file(), reason="no duckdb CLI (pip install duckdb-cli)")
 
@@ -39,6 +45,8 @@ def _sources() -> list[Path]:
 
 @pytest.fixture(scope="module")
 def ext() -> Path:
+    if os.environ.get("DGGS_DUCKDB_EXTENSION"):  # a given build (a sanitizer build): used as it is
+        return Path(os.environ["DGGS_DUCKDB_EXTENSION"]).resolve()
     stale = not EXT.is_file() or EXT.stat().st_mtime < max(p.stat().st_mtime for p in _sources())
     if stale:
         if shutil.which("cc") is None:
@@ -51,7 +59,7 @@ def run(ext: Path, sql: str, db: Path | None = None, mode: str = "-json", load: 
     prefix = f"LOAD '{ext}'; " if load else ""
     args = [str(CLI), "-unsigned", mode, *(["-noheader", "-separator", "\t", "-nullvalue", "NULL"] if mode == "-list" else [])]
     return subprocess.run([*args, *([str(db)] if db else []), "-c", prefix + sql], capture_output=True, text=True,
-                          timeout=600)  # fmt: skip
+                          timeout=600, env=CLI_ENV)  # fmt: skip
 
 
 def rows(ext: Path, sql: str, db: Path | None = None) -> list[dict[str, Any]]:
@@ -377,7 +385,8 @@ def test_docs_sql_blocks_run_in_the_cli(ext: Path) -> None:
     blocks = [textwrap.dedent(m.group(2)) for m in re.finditer(r"^( *)```sql\n(.*?)^\1```", text, re.M | re.S)]
     assert len(blocks) >= 2
     for sql in blocks:
-        proc = subprocess.run([str(CLI), "-unsigned", "-c", sql], capture_output=True, text=True, cwd=ROOT, timeout=300)
+        proc = subprocess.run([str(CLI), "-unsigned", "-c", sql], capture_output=True, text=True, cwd=ROOT, timeout=300,
+                              env=CLI_ENV)  # fmt: skip
         assert proc.returncode == 0 and "Error" not in proc.stdout + proc.stderr, (sql, proc.stderr)
 
 
