@@ -442,3 +442,17 @@ def test_random_values_validity_as_python(ext: Path, tmp_path: Path) -> None:
     assert [r["ok"] for r in got] == ok.tolist()
     assert [r["lv"] for r in got] == [int(dggs.get_level(int(v))) if k else None for v, k in zip(values, ok, strict=True)]
     assert [r["e"] for r in got] == np.asarray(dggs.is_valid_directed_edge(values), bool).tolist()
+
+
+def test_parallel_threads_give_the_same_ids(ext: Path, tmp_path: Path) -> None:
+    """DuckDB runs the functions on its own threads (a Parquet-like scan split across 2): the same ids as numpy."""
+    lat, lng = _points(300_000, 21)
+    src = table(tmp_path / "p.csv", {"lat": lat, "lng": lng})
+    got = rows(ext, f"SET threads = 2; CREATE TABLE p AS SELECT * FROM {src}; "
+                    "SELECT sum(c::HUGEINT)::VARCHAR AS s, bit_xor(c) AS x, count(c) AS n, "
+                    "sum(dggs_get_level(dggs_cell_to_parent(c, 9))) AS lv "
+                    "FROM (SELECT dggs_latlng_to_cell_ubigint(lat, lng, 20) AS c FROM p)")[0]  # fmt: skip
+    want = np.asarray(dggs.latlng_to_cell(lat, lng, 20, as_int=True), np.uint64)
+    assert int(got["s"]) == sum(int(v) for v in want)
+    assert int(got["x"]) == int(np.bitwise_xor.reduce(want))
+    assert got["n"] == want.size and int(got["lv"]) == 9 * want.size
