@@ -117,6 +117,9 @@ static inline const fn_extra *extra_of(duckdb_function_info info) {
     return (const fn_extra *)duckdb_scalar_function_get_extra_info(info);
 }
 
+/* The WGS84 ellipsoid's area in m^2 (dggs.geometry.authalic.WGS84.area): a level's cells share it equally. */
+#define WGS84_AREA_M2 0x1.cfe6e831ebb87p+48
+
 /* Most ids one row's list may hold (2^27 ids, 1 GiB): past it the query fails with an error naming the function. */
 #define MAX_LIST_CELLS ((int64_t)1 << 27)
 
@@ -142,5 +145,6 @@ void register_cells(duckdb_connection con);
 void register_grid(duckdb_connection con);
 void register_edges(duckdb_connection con);
 void register_fill(duckdb_connection con);
+void register_levels(duckdb_connection con);
 
 #endif

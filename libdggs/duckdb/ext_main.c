@@ -153,5 +153,6 @@ DUCKDB_EXTENSION_ENTRYPOINT(duckdb_connection connection, duckdb_extension_info 
     register_grid(connection);
     register_edges(connection);
     register_fill(connection);
+    register_levels(connection);
     return true;
 }
