@@ -87,7 +87,7 @@ static inline int id_get(const col_t *c, id_kind kind, idx_t row, dggs_cell *cel
         uint32_t n;
         const char *s = str_data(&((duckdb_string_t *)c->data)[row], &n);
         char buf[DGGS_MAX_CHARS + 1];
-        if (n == 0 || n > DGGS_MAX_CHARS) return 0;
+        if (n == 0 || n > DGGS_MAX_CHARS || memchr(s, '\0', n)) return 0; /* 'C401\0x' is no id */
         memcpy(buf, s, n);
         buf[n] = '\0';
         return dggs_string_to_cell(buf, cell) == DGGS_OK;

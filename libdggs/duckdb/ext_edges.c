@@ -17,7 +17,7 @@ static int edge_get(const col_t *c, id_kind kind, idx_t row, uint64_t *edge) {
         const char *s = str_data(&((duckdb_string_t *)c->data)[row], &n);
         char buf[DGGS_MAX_CHARS + 2];
         dggs_cell shadow;
-        if (n < 3 || n > DGGS_MAX_CHARS + 1 || s[n - 2] != '.') return 0;
+        if (n < 3 || n > DGGS_MAX_CHARS + 1 || s[n - 2] != '.' || memchr(s, '\0', n)) return 0;
         memcpy(buf, s, n - 2);
         buf[n - 2] = s[n - 1];
         buf[n - 1] = '\0';

@@ -456,3 +456,13 @@ def test_parallel_threads_give_the_same_ids(ext: Path, tmp_path: Path) -> None:
     assert int(got["s"]) == sum(int(v) for v in want)
     assert int(got["x"]) == int(np.bitwise_xor.reduce(want))
     assert got["n"] == want.size and int(got["lv"]) == 9 * want.size
+
+
+def test_strings_validity_as_python(ext: Path) -> None:
+    strings = ["", "C", "c401", "Z0", "C9", "C4013", "C" + "0" * 40, "C401.9", " C401", "C401 ", "ééé", "C401.1",
+               "T5" + "2" * 27, "T5" + "2" * 28, "A0", "B20", "C401.3", "C.1", "C4.0"]  # fmt: skip
+    literal = ", ".join(f"('{x}')" for x in strings)
+    got = rows(ext, f"SELECT s, dggs_is_valid_cell(s) AS ok, dggs_is_valid_directed_edge(s) AS e FROM (VALUES {literal}) t(s)")
+    assert [r["s"] for r in got] == strings
+    assert [r["ok"] for r in got] == [bool(dggs.is_valid_cell(x)) for x in strings]
+    assert [r["e"] for r in got] == [bool(dggs.is_valid_directed_edge(x)) for x in strings]
