@@ -158,30 +158,6 @@ static void convert_id(duckdb_function_info info, duckdb_data_chunk in, duckdb_v
     }
 }
 
-/* dggs_cell_area(cell) -> DOUBLE m^2: the WGS84 ellipsoid's area over the level's number of cells, computed as
- * dggs.cell_area does (20 at level 0, 120 * 3^(level - 1) below), so the same double. */
-static void cell_area(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
-    const fn_extra *x = extra_of(info);
-    idx_t n = duckdb_data_chunk_get_size(in);
-    col_t c = col_of(in, 0);
-    out_t o = out_of(outv);
-    ROWS(n) {
-        dggs_cell cell;
-        if (is_null(&c, r) || !id_get(&c, x->kind, r, &cell)) {
-            out_null(&o, r);
-            continue;
-        }
-        int level = dggs_get_level(cell);
-        double cells = 20.0;
-        if (level > 0) {
-            double p = 1.0;
-            for (int i = 1; i < level; i++) p *= 3.0;
-            cells = 120.0 * p;
-        }
-        ((double *)o.data)[r] = WGS84_AREA_M2 / cells;
-    }
-}
-
 /* The boundary: dggs_cell_to_boundary -> list of STRUCT(lat, lng) (variant 0), _wkt -> VARCHAR (1), _wkb -> BLOB
  * (2): the 3 corners counter-clockwise, `densify` points along each edge (second argument, default 0), in (lng,
  * lat) for WKT and WKB, closed. */
@@ -316,7 +292,6 @@ void register_cells(duckdb_connection con) {
     reg(con, "dggs_string_to_cell", "I", 'B', convert_id, 1, K_NONE, K_BIGINT);
     reg(con, "dggs_int_to_str", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
     reg(con, "dggs_cell_to_string", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
-    reg(con, "dggs_cell_area", "I", 'D', cell_area, 1, K_NONE, 0);
     reg(con, "dggs_cell_to_boundary", "I|IB", 'P', boundary, 1, K_NONE, 0);
     reg(con, "dggs_cell_to_boundary_wkt", "I|IB", 'V', boundary, 1, K_NONE, 1);
     reg(con, "dggs_cell_to_boundary_wkb", "I|IB", 'X', boundary, 1, K_NONE, 2);

@@ -143,7 +143,7 @@ def test_cell_functions_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None
                                       dggs_cell_to_parent(c, dggs_get_level(c) // 2), dggs_get_level(c)) AS back,
                dggs_grid_disk(c, 1) AS disk, dggs_grid_ring(c, 2) AS ring, dggs_get_face(c) AS face,
                dggs_edge_neighbors(c) AS nbrs, dggs_are_neighbor_cells(c, (dggs_edge_neighbors(c))[2]) AS nb,
-               dggs_are_neighbor_cells(c, c) AS self
+               dggs_are_neighbor_cells(c, c) AS self, dggs_cell_area(c, 'km^2') AS km2, dggs_cell_area(c, 'rads^2') AS sr
         FROM (SELECT i, {cell} AS c FROM {src}) ORDER BY i""")
     strings = list(dggs.int_to_str(ids))
 
@@ -170,6 +170,8 @@ def test_cell_functions_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None
     assert [r["lng"] for r in got] == np.asarray(lng).tolist()
     assert [(r["ll"]["lat"], r["ll"]["lng"]) for r in got] == list(zip(np.asarray(lat).tolist(), np.asarray(lng).tolist(), strict=True))
     assert [r["area"] for r in got] == np.asarray(dggs.cell_area(ids)).tolist()
+    assert [r["km2"] for r in got] == np.asarray(dggs.cell_area(ids, "km^2")).tolist()
+    assert [r["sr"] for r in got] == np.asarray(dggs.cell_area(ids, "rads^2")).tolist()
     corners = np.asarray(dggs.cell_to_boundary(ids), np.float64)
     assert [[(p["lat"], p["lng"]) for p in r["corners"]] for r in got] == [[tuple(p) for p in c] for c in corners.tolist()]
     pos = [dggs.cell_to_child_pos(int(c), int(lv) // 2) for c, lv in zip(ids, levels, strict=True)]
@@ -193,6 +195,9 @@ def test_level_table(ext: Path) -> None:
     assert [r["n"] for r in got] == [int(dggs.get_num_cells(lv)) for lv in levels]
     for col, unit in (("m2", "m^2"), ("km2", "km^2"), ("sr", "rads^2")):
         assert [r[col] for r in got] == [float(dggs.cell_area(lv, unit)) for lv in levels]
+    base = rows(ext, "SELECT dggs_get_base_cells() AS a, dggs_get_base_cells_str() AS s")[0]
+    assert [int(v) for v in base["a"]] == np.asarray(dggs.get_base_cells(as_int=True)).tolist()
+    assert base["s"] == list(dggs.get_base_cells())
     proc = run(ext, "SELECT dggs_level_area(3, 'acres')")
     assert proc.returncode != 0 and "unit 'acres' is not one of" in proc.stderr + proc.stdout
 
@@ -409,7 +414,7 @@ CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (d
     "dggs_directed_edge_to_boundary(i)", "dggs_cells_to_directed_edge(i, i)", "dggs_origin_to_directed_edges(i)",
     "dggs_edge_length(i, 'm')", "dggs_grid_disk(i, least(n, 3))", "dggs_cell_to_children(i, least(n, 6))",
     "dggs_get_face(i)", "dggs_edge_neighbors(i)", "dggs_are_neighbor_cells(i, i)", "dggs_get_num_cells(n)",
-    "dggs_level_area(n, 'm^2')",
+    "dggs_level_area(n, 'm^2')", "dggs_cell_area(i, 'km^2')",
 ]  # fmt: skip
 
 
