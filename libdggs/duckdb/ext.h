@@ -113,6 +113,10 @@ static inline int level_get(const col_t *c, idx_t row) {
     return v < 0 || v > DGGS_MAX_LEVEL ? -1 : (int)v;
 }
 
+/* The projection named in row `row` of a VARCHAR column ('ISEA' or 'IVEA', any case) into *proj: false, and the
+ * query's error set naming the value, for another name. */
+bool proj_get(duckdb_function_info info, const char *name, const col_t *c, idx_t row, dggs_projection *proj);
+
 static inline const fn_extra *extra_of(duckdb_function_info info) {
     return (const fn_extra *)duckdb_scalar_function_get_extra_info(info);
 }

@@ -11,14 +11,17 @@
 static void latlng_to_cell(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
     idx_t n = duckdb_data_chunk_get_size(in);
-    col_t la = col_of(in, 0), ln = col_of(in, 1), lv = col_of(in, 2);
+    int has_proj = duckdb_data_chunk_get_column_count(in) > 3;
+    col_t la = col_of(in, 0), ln = col_of(in, 1), lv = col_of(in, 2), pc = has_proj ? col_of(in, 3) : la;
     out_t o = out_of(outv);
     const double *lat = (const double *)la.data, *lng = (const double *)ln.data;
+    dggs_projection proj = DGGS_ISEA;
     ROWS(n) {
         dggs_cell cell;
         int level;
-        if (is_null(&la, r) || is_null(&ln, r) || is_null(&lv, r) || (level = level_get(&lv, r)) < 0 ||
-            dggs_latlng_to_cell(lat[r], lng[r], level, DGGS_ISEA, &cell) != DGGS_OK) {
+        if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) return;
+        if (is_null(&la, r) || is_null(&ln, r) || is_null(&lv, r) || (has_proj && is_null(&pc, r)) ||
+            (level = level_get(&lv, r)) < 0 || dggs_latlng_to_cell(lat[r], lng[r], level, proj, &cell) != DGGS_OK) {
             out_null(&o, r);
             continue;
         }
@@ -30,8 +33,10 @@ static void latlng_to_cell(duckdb_function_info info, duckdb_data_chunk in, duck
 static void cell_to_latlng(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
     idx_t n = duckdb_data_chunk_get_size(in);
-    col_t c = col_of(in, 0);
+    int has_proj = duckdb_data_chunk_get_column_count(in) > 1;
+    col_t c = col_of(in, 0), pc = has_proj ? col_of(in, 1) : c;
     out_t o = out_of(outv);
+    dggs_projection proj = DGGS_ISEA;
     double *lat_out = NULL, *lng_out = NULL;
     out_t olat, olng;
     if (x->variant == 0) {
@@ -43,8 +48,9 @@ static void cell_to_latlng(duckdb_function_info info, duckdb_data_chunk in, duck
     ROWS(n) {
         dggs_cell cell;
         double lat, lng;
-        if (is_null(&c, r) || !id_get(&c, x->kind, r, &cell) ||
-            dggs_cell_to_latlng(cell, DGGS_ISEA, &lat, &lng) != DGGS_OK) {
+        if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) return;
+        if (is_null(&c, r) || (has_proj && is_null(&pc, r)) || !id_get(&c, x->kind, r, &cell) ||
+            dggs_cell_to_latlng(cell, proj, &lat, &lng) != DGGS_OK) {
             out_null(&o, r);
             if (x->variant == 0) {
                 out_null(&olat, r);
@@ -165,8 +171,9 @@ static void convert_id(duckdb_function_info info, duckdb_data_chunk in, duckdb_v
 static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
     idx_t n = duckdb_data_chunk_get_size(in);
-    int has_densify = duckdb_data_chunk_get_column_count(in) > 1;
-    col_t c = col_of(in, 0), d = has_densify ? col_of(in, 1) : c;
+    int has_densify = duckdb_data_chunk_get_column_count(in) > 1, has_proj = duckdb_data_chunk_get_column_count(in) > 2;
+    col_t c = col_of(in, 0), d = has_densify ? col_of(in, 1) : c, pc = has_proj ? col_of(in, 2) : c;
+    dggs_projection proj = DGGS_ISEA;
     out_t o = out_of(outv);
     list_out_t l;
     if (x->variant == 0) l = list_of(outv);
@@ -184,7 +191,8 @@ static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vec
         size_t count;
         int64_t densify = has_densify && !is_null(&d, r) ? ((int64_t *)d.data)[r] : 0;
         if (x->variant == 0) list_empty(&l, r);
-        if (is_null(&c, r) || (has_densify && is_null(&d, r))) {
+        if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) break;
+        if (is_null(&c, r) || (has_densify && is_null(&d, r)) || (has_proj && is_null(&pc, r))) {
             out_null(&o, r);
             continue;
         }
@@ -196,7 +204,7 @@ static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vec
             break;
         }
         if (!id_get(&c, x->kind, r, &cell) ||
-            dggs_cell_to_boundary(cell, (int)densify, DGGS_ISEA, pts, cap, &count) != DGGS_OK) {
+            dggs_cell_to_boundary(cell, (int)densify, proj, pts, cap, &count) != DGGS_OK) {
             out_null(&o, r);
             continue;
         }
@@ -274,15 +282,15 @@ static void child_pos_to_cell(duckdb_function_info info, duckdb_data_chunk in, d
 }
 
 void register_cells(duckdb_connection con) {
-    reg(con, "dggs_latlng_to_cell", "DDB", 'I', latlng_to_cell, 0, K_BIGINT, 0);
-    reg(con, "dggs_latlng_to_cell_ubigint", "DDB", 'I', latlng_to_cell, 0, K_UBIGINT, 0);
-    reg(con, "dggs_latlng_to_cell_str", "DDB", 'I', latlng_to_cell, 0, K_VARCHAR, 0);
-    reg(con, "dggs_latlng_to_cell_string", "DDB", 'I', latlng_to_cell, 0, K_VARCHAR, 0);
-    reg(con, "dggs_cell_to_latlng", "I", 'S', cell_to_latlng, 1, K_NONE, 0);
-    reg(con, "dggs_cell_to_latlng_lat", "I", 'D', cell_to_latlng, 1, K_NONE, 1);
-    reg(con, "dggs_cell_to_latlng_lng", "I", 'D', cell_to_latlng, 1, K_NONE, 2);
-    reg(con, "dggs_cell_to_lat", "I", 'D', cell_to_latlng, 1, K_NONE, 1);
-    reg(con, "dggs_cell_to_lng", "I", 'D', cell_to_latlng, 1, K_NONE, 2);
+    reg(con, "dggs_latlng_to_cell", "DDB|DDBV", 'I', latlng_to_cell, 0, K_BIGINT, 0);
+    reg(con, "dggs_latlng_to_cell_ubigint", "DDB|DDBV", 'I', latlng_to_cell, 0, K_UBIGINT, 0);
+    reg(con, "dggs_latlng_to_cell_str", "DDB|DDBV", 'I', latlng_to_cell, 0, K_VARCHAR, 0);
+    reg(con, "dggs_latlng_to_cell_string", "DDB|DDBV", 'I', latlng_to_cell, 0, K_VARCHAR, 0);
+    reg(con, "dggs_cell_to_latlng", "I|IV", 'S', cell_to_latlng, 1, K_NONE, 0);
+    reg(con, "dggs_cell_to_latlng_lat", "I|IV", 'D', cell_to_latlng, 1, K_NONE, 1);
+    reg(con, "dggs_cell_to_latlng_lng", "I|IV", 'D', cell_to_latlng, 1, K_NONE, 2);
+    reg(con, "dggs_cell_to_lat", "I|IV", 'D', cell_to_latlng, 1, K_NONE, 1);
+    reg(con, "dggs_cell_to_lng", "I|IV", 'D', cell_to_latlng, 1, K_NONE, 2);
     reg(con, "dggs_cell_to_parent", "IB", 'I', cell_at_level, 1, K_NONE, 0);
     reg(con, "dggs_cell_to_center_child", "IB", 'I', cell_at_level, 1, K_NONE, 1);
     reg(con, "dggs_cell_to_children", "IB", 'E', cell_to_children, 1, K_NONE, 0);
@@ -292,9 +300,9 @@ void register_cells(duckdb_connection con) {
     reg(con, "dggs_string_to_cell", "I", 'B', convert_id, 1, K_NONE, K_BIGINT);
     reg(con, "dggs_int_to_str", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
     reg(con, "dggs_cell_to_string", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
-    reg(con, "dggs_cell_to_boundary", "I|IB", 'P', boundary, 1, K_NONE, 0);
-    reg(con, "dggs_cell_to_boundary_wkt", "I|IB", 'V', boundary, 1, K_NONE, 1);
-    reg(con, "dggs_cell_to_boundary_wkb", "I|IB", 'X', boundary, 1, K_NONE, 2);
+    reg(con, "dggs_cell_to_boundary", "I|IB|IBV", 'P', boundary, 1, K_NONE, 0);
+    reg(con, "dggs_cell_to_boundary_wkt", "I|IB|IBV", 'V', boundary, 1, K_NONE, 1);
+    reg(con, "dggs_cell_to_boundary_wkb", "I|IB|IBV", 'X', boundary, 1, K_NONE, 2);
     reg(con, "dggs_cell_to_child_pos", "IB", 'B', cell_to_child_pos, 1, K_NONE, 0);
     reg(con, "dggs_child_pos_to_cell", "BIB", 'I', child_pos_to_cell, 1, K_NONE, 0);
 }

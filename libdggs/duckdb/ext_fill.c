@@ -170,7 +170,9 @@ static int mode_of(const char *s, uint32_t n) {
 static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
     idx_t n = duckdb_data_chunk_get_size(in);
-    col_t g = col_of(in, 0), lv = col_of(in, 1), m = col_of(in, 2);
+    int has_proj = duckdb_data_chunk_get_column_count(in) > 3;
+    col_t g = col_of(in, 0), lv = col_of(in, 1), m = col_of(in, 2), pc = has_proj ? col_of(in, 3) : g;
+    dggs_projection proj = DGGS_ISEA;
     out_t o = out_of(outv);
     list_out_t l = list_of(outv);
     char msg[256];
@@ -182,7 +184,9 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
         int64_t size, count;
         dggs_error err;
         list_empty(&l, r);
-        if (is_null(&g, r) || is_null(&lv, r) || is_null(&m, r) || (level = level_get(&lv, r)) < 0) {
+        if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) break;
+        if (is_null(&g, r) || is_null(&lv, r) || is_null(&m, r) || (has_proj && is_null(&pc, r)) ||
+            (level = level_get(&lv, r)) < 0) {
             out_null(&o, r);
             continue;
         }
@@ -205,7 +209,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
             duckdb_scalar_function_set_error(info, msg);
             break;
         }
-        err = dggs_polygon_to_cells_size(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode, DGGS_ISEA,
+        err = dggs_polygon_to_cells_size(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode, proj,
                                          &size);
         if (err == DGGS_OK && size > MAX_LIST_CELLS) {
             snprintf(msg, sizeof msg, "%s: the polygon holds more than %lld cells at level %d", x->name,
@@ -217,7 +221,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
             free(cells);
             cells = (dggs_cell *)malloc((size_t)(size ? size : 1) * sizeof(dggs_cell));
             err = cells ? dggs_polygon_to_cells(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode,
-                                                DGGS_ISEA, cells, size, &count)
+                                                proj, cells, size, &count)
                         : DGGS_E_FAILED;
         }
         if (err != DGGS_OK) {
@@ -239,8 +243,8 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
 }
 
 void register_fill(duckdb_connection con) {
-    reg(con, "dggs_polygon_to_cells", "XBV", 'E', polygon_to_cells, 0, K_BIGINT, 0);
-    reg(con, "dggs_polygon_to_cells_str", "XBV", 'E', polygon_to_cells, 0, K_VARCHAR, 0);
-    reg(con, "dggs_polygon_wkt_to_cells", "VBV", 'E', polygon_to_cells, 0, K_BIGINT, 1);
-    reg(con, "dggs_polygon_wkt_to_cells_str", "VBV", 'E', polygon_to_cells, 0, K_VARCHAR, 1);
+    reg(con, "dggs_polygon_to_cells", "XBV|XBVV", 'E', polygon_to_cells, 0, K_BIGINT, 0);
+    reg(con, "dggs_polygon_to_cells_str", "XBV|XBVV", 'E', polygon_to_cells, 0, K_VARCHAR, 0);
+    reg(con, "dggs_polygon_wkt_to_cells", "VBV|VBVV", 'E', polygon_to_cells, 0, K_BIGINT, 1);
+    reg(con, "dggs_polygon_wkt_to_cells_str", "VBV|VBVV", 'E', polygon_to_cells, 0, K_VARCHAR, 1);
 }

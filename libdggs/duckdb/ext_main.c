@@ -1,4 +1,5 @@
 /* The dggs DuckDB extension's entry point, its registration helper and the LIST helpers (ext.h). */
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "ext.h"
@@ -67,6 +68,20 @@ int list_ids_get(const col_t *c, id_kind kind, idx_t row, dggs_cell **out, idx_t
     *out = ids;
     *n = m;
     return 1;
+}
+
+bool proj_get(duckdb_function_info info, const char *name, const col_t *c, idx_t row, dggs_projection *proj) {
+    uint32_t n;
+    const char *s = str_data(&((duckdb_string_t *)c->data)[row], &n);
+    if (n == 4 && (s[0] | 0x20) == 'i' && (s[2] | 0x20) == 'e' && (s[3] | 0x20) == 'a' &&
+        ((s[1] | 0x20) == 's' || (s[1] | 0x20) == 'v')) {
+        *proj = (s[1] | 0x20) == 's' ? DGGS_ISEA : DGGS_IVEA;
+        return true;
+    }
+    char msg[160];
+    snprintf(msg, sizeof msg, "%s: projection '%.*s' is not 'ISEA' or 'IVEA'", name, (int)(n > 40 ? 40 : n), s);
+    duckdb_scalar_function_set_error(info, msg);
+    return false;
 }
 
 /* ---- registration ---- */

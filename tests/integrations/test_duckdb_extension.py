@@ -471,3 +471,27 @@ def test_strings_validity_as_python(ext: Path) -> None:
     assert [r["s"] for r in got] == strings
     assert [r["ok"] for r in got] == [bool(dggs.is_valid_cell(x)) for x in strings]
     assert [r["e"] for r in got] == [bool(dggs.is_valid_directed_edge(x)) for x in strings]
+
+
+def test_ivea_projection_as_grid_ivea(ext: Path, tmp_path: Path) -> None:
+    """The optional projection argument: 'IVEA' gives dggs.Grid("IVEA")'s ids, centres, boundaries and fill."""
+    shapely = pytest.importorskip("shapely")
+    grid = dggs.Grid("IVEA")
+    lat, lng = _points(1500, 4)
+    src = table(tmp_path / "p.csv", {"lat": lat, "lng": lng})
+    got = rows(ext, f"SELECT dggs_latlng_to_cell(lat, lng, 12, 'IVEA') AS c, dggs_latlng_to_cell_str(lat, lng, 12, 'ivea') AS s, "
+                    f"dggs_cell_to_latlng(dggs_latlng_to_cell(lat, lng, 12, 'IVEA'), 'IVEA') AS ll, "
+                    f"dggs_cell_to_boundary(dggs_latlng_to_cell(lat, lng, 12, 'IVEA'), 0, 'IVEA') AS b, "
+                    f"dggs_latlng_to_cell(lat, lng, 12, 'ISEA') = dggs_latlng_to_cell(lat, lng, 12) AS same FROM {src} ORDER BY i")  # fmt: skip
+    ids = np.asarray(grid.latlng_to_cell(lat, lng, 12, as_int=True), np.uint64)
+    assert [int(r["c"]) for r in got] == ids.tolist() and [r["s"] for r in got] == list(dggs.int_to_str(ids))
+    clat, clng = grid.cell_to_latlng(ids)
+    assert [(r["ll"]["lat"], r["ll"]["lng"]) for r in got] == list(zip(np.asarray(clat).tolist(), np.asarray(clng).tolist(), strict=True))
+    corners = np.asarray(grid.cell_to_boundary(ids), np.float64)
+    assert [[(p["lat"], p["lng"]) for p in r["b"]] for r in got] == [[tuple(p) for p in c] for c in corners.tolist()]
+    assert all(r["same"] for r in got)
+    box = shapely.box(-10, -10, 10, 10)
+    fill = rows(ext, f"SELECT dggs_polygon_wkt_to_cells('{box.wkt}', 6, 'center', 'IVEA') AS f")[0]["f"]
+    assert [int(v) for v in fill] == np.sort(np.asarray(grid.polygon_to_cells(box, 6, as_int=True), np.uint64)).tolist()
+    proc = run(ext, "SELECT dggs_latlng_to_cell(0, 0, 5, 'healpix')")
+    assert proc.returncode != 0 and "projection 'healpix' is not 'ISEA' or 'IVEA'" in proc.stderr + proc.stdout
