@@ -166,6 +166,49 @@ static int mode_of(const char *s, uint32_t n) {
     return -1;
 }
 
+/* The cells of geometry `gs` (len bytes; WKT if `wkt`, else WKB) at `level` by `mode` and `proj` into *cells
+ * (malloc'd, *count of them; the caller frees it): true, or false with the message into msg (naming `name`). */
+static bool fill(const char *name, const char *gs, uint32_t len, int wkt, int level, int mode, dggs_projection proj,
+                 poly_t *p, dggs_cell **cells, int64_t *count, char *msg, size_t msg_size) {
+    int64_t size;
+    dggs_error err;
+    p->n_pts = p->n_rings = 0;
+    reader_t rd = {(const uint8_t *)gs, len, 0};
+    if (!(wkt ? wkt_polygon(gs, len, p) : wkb_polygon(&rd, p, 0) && rd.at == len)) {
+        snprintf(msg, msg_size, "%s: not a %s (Multi)Polygon in (lng, lat)%s%.*s%s", name, wkt ? "WKT" : "WKB",
+                 wkt ? ": '" : "", wkt ? (int)(len > 60 ? 60 : len) : 0, gs, wkt ? "'" : "");
+        return false;
+    }
+    err = dggs_polygon_to_cells_size(p->pts, p->rings, (int64_t)p->n_rings, level, (dggs_fill_mode)mode, proj, &size);
+    if (err == DGGS_OK && size > MAX_LIST_CELLS) {
+        snprintf(msg, msg_size, "%s: the polygon holds more than %lld cells at level %d", name,
+                 (long long)MAX_LIST_CELLS, level);
+        return false;
+    }
+    if (err == DGGS_OK) {
+        free(*cells);
+        *cells = (dggs_cell *)malloc((size_t)(size ? size : 1) * sizeof(dggs_cell));
+        err = *cells ? dggs_polygon_to_cells(p->pts, p->rings, (int64_t)p->n_rings, level, (dggs_fill_mode)mode, proj,
+                                             *cells, size, count)
+                     : DGGS_E_FAILED;
+    }
+    if (err != DGGS_OK) {
+        snprintf(msg, msg_size, "%s: %s", name,
+                 err == DGGS_E_LATLNG ? "a coordinate is not a longitude in -180..180 and a latitude in -90..90 "
+                                        "(split a polygon that crosses the antimeridian)"
+                                      : dggs_error_string(err));
+        return false;
+    }
+    return true;
+}
+
+/* The message for an unknown mode into msg; false (the mode is refused). */
+static bool mode_error(const char *name, const char *ms, uint32_t mlen, char *msg, size_t msg_size) {
+    snprintf(msg, msg_size, "%s: mode '%.*s' is not one of 'center', 'contains', 'overlaps', 'overlapping_bbox'", name,
+             (int)(mlen > 40 ? 40 : mlen), ms);
+    return false;
+}
+
 /* variant 0: WKB (BLOB), 1: WKT (VARCHAR); x->kind: the ids' kind out. */
 static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
@@ -181,8 +224,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
     ROWS(n) {
         int level, mode;
         uint32_t len, mlen;
-        int64_t size, count;
-        dggs_error err;
+        int64_t count;
         list_empty(&l, r);
         if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) break;
         if (is_null(&g, r) || is_null(&lv, r) || is_null(&m, r) || (has_proj && is_null(&pc, r)) ||
@@ -191,44 +233,11 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
             continue;
         }
         const char *ms = str_data(&((duckdb_string_t *)m.data)[r], &mlen);
-        if ((mode = mode_of(ms, mlen)) < 0) {
-            snprintf(msg, sizeof msg, "%s: mode '%.*s' is not one of 'center', 'contains', 'overlaps', "
-                     "'overlapping_bbox'", x->name, (int)(mlen > 40 ? 40 : mlen), ms);
-            duckdb_scalar_function_set_error(info, msg);
-            break;
-        }
         const char *gs = str_data(&((duckdb_string_t *)g.data)[r], &len);
-        p.n_pts = p.n_rings = 0;
-        reader_t rd = {(const uint8_t *)gs, len, 0};
-        bool ok = x->variant == 0 ? wkb_polygon(&rd, &p, 0) && rd.at == len : wkt_polygon(gs, len, &p);
+        bool ok = (mode = mode_of(ms, mlen)) >= 0 ? fill(x->name, gs, len, x->variant, level, mode, proj, &p, &cells,
+                                                         &count, msg, sizeof msg)
+                                                  : mode_error(x->name, ms, mlen, msg, sizeof msg);
         if (!ok) {
-            snprintf(msg, sizeof msg, "%s: not a %s (Multi)Polygon in (lng, lat): %s%.*s", x->name,
-                     x->variant == 0 ? "WKB" : "WKT", x->variant == 0 ? "" : "'",
-                     x->variant == 0 ? 0 : (int)(len > 60 ? 60 : len), gs);
-            if (x->variant == 1) strncat(msg, "'", sizeof msg - strlen(msg) - 1);
-            duckdb_scalar_function_set_error(info, msg);
-            break;
-        }
-        err = dggs_polygon_to_cells_size(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode, proj,
-                                         &size);
-        if (err == DGGS_OK && size > MAX_LIST_CELLS) {
-            snprintf(msg, sizeof msg, "%s: the polygon holds more than %lld cells at level %d", x->name,
-                     (long long)MAX_LIST_CELLS, level);
-            duckdb_scalar_function_set_error(info, msg);
-            break;
-        }
-        if (err == DGGS_OK) {
-            free(cells);
-            cells = (dggs_cell *)malloc((size_t)(size ? size : 1) * sizeof(dggs_cell));
-            err = cells ? dggs_polygon_to_cells(p.pts, p.rings, (int64_t)p.n_rings, level, (dggs_fill_mode)mode,
-                                                proj, cells, size, &count)
-                        : DGGS_E_FAILED;
-        }
-        if (err != DGGS_OK) {
-            snprintf(msg, sizeof msg, "%s: %s", x->name,
-                     err == DGGS_E_LATLNG ? "a coordinate is not a longitude in -180..180 and a latitude in -90..90 "
-                                            "(split a polygon that crosses the antimeridian)"
-                                          : dggs_error_string(err));
             duckdb_scalar_function_set_error(info, msg);
             break;
         }
@@ -242,7 +251,129 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
     free(p.rings);
 }
 
+/* ---- the same as table functions: SELECT cell FROM dggs_polygon_to_cells(geometry, level, mode [, projection :=
+ * 'IVEA']), one row a cell, in id order; a NULL argument or a level outside 0..28 gives no rows ---- */
+
+typedef struct {
+    dggs_cell *cells;
+    int64_t count;
+} fill_rows;
+
+static void fill_rows_free(void *data) {
+    fill_rows *f = (fill_rows *)data;
+    free(f->cells);
+    free(f);
+}
+
+static void fill_rows_bind(duckdb_bind_info info) {
+    const fn_extra *x = (const fn_extra *)duckdb_bind_get_extra_info(info);
+    duckdb_value g = duckdb_bind_get_parameter(info, 0), lv = duckdb_bind_get_parameter(info, 1),
+                 m = duckdb_bind_get_parameter(info, 2), pv = duckdb_bind_get_named_parameter(info, "projection");
+    fill_rows *f = (fill_rows *)calloc(1, sizeof *f);
+    duckdb_logical_type t = duckdb_create_logical_type(x->kind == K_VARCHAR ? DUCKDB_TYPE_VARCHAR : DUCKDB_TYPE_BIGINT);
+    duckdb_bind_add_result_column(info, "cell", t);
+    duckdb_destroy_logical_type(&t);
+    char msg[256];
+    poly_t p = {0};
+    dggs_projection proj = DGGS_ISEA;
+    bool ok = f != NULL;
+    if (ok && pv && !duckdb_is_null_value(pv)) {
+        char *name = duckdb_get_varchar(pv);
+        size_t n = strlen(name);
+        ok = n == 4 && (name[0] | 0x20) == 'i' && ((name[1] | 0x20) == 's' || (name[1] | 0x20) == 'v') &&
+             (name[2] | 0x20) == 'e' && (name[3] | 0x20) == 'a';
+        if (ok)
+            proj = (name[1] | 0x20) == 's' ? DGGS_ISEA : DGGS_IVEA;
+        else
+            snprintf(msg, sizeof msg, "%s: projection '%.40s' is not 'ISEA' or 'IVEA'", x->name, name);
+        duckdb_free(name);
+    }
+    if (ok && !duckdb_is_null_value(g) && !duckdb_is_null_value(lv) && !duckdb_is_null_value(m)) {
+        int64_t level = duckdb_get_int64(lv);
+        char *ms = duckdb_get_varchar(m);
+        int mode = mode_of(ms, (uint32_t)strlen(ms));
+        if (mode < 0) ok = mode_error(x->name, ms, (uint32_t)strlen(ms), msg, sizeof msg);
+        duckdb_free(ms);
+        if (ok && level >= 0 && level <= DGGS_MAX_LEVEL) {
+            if (x->variant == 1) {
+                char *gs = duckdb_get_varchar(g);
+                ok = fill(x->name, gs, (uint32_t)strlen(gs), 1, (int)level, mode, proj, &p, &f->cells, &f->count, msg,
+                          sizeof msg);
+                duckdb_free(gs);
+            } else {
+                duckdb_blob b = duckdb_get_blob(g);
+                ok = fill(x->name, (const char *)b.data, (uint32_t)b.size, 0, (int)level, mode, proj, &p, &f->cells,
+                          &f->count, msg, sizeof msg);
+                duckdb_free(b.data);
+            }
+        }
+    }
+    free(p.pts);
+    free(p.rings);
+    duckdb_destroy_value(&g);
+    duckdb_destroy_value(&lv);
+    duckdb_destroy_value(&m);
+    if (pv) duckdb_destroy_value(&pv);
+    if (!f) {
+        duckdb_bind_set_error(info, "dggs_polygon_to_cells: out of memory");
+        return;
+    }
+    if (!ok) {
+        fill_rows_free(f);
+        duckdb_bind_set_error(info, msg);
+        return;
+    }
+    duckdb_bind_set_cardinality(info, (idx_t)f->count, true);
+    duckdb_bind_set_bind_data(info, f, fill_rows_free);
+}
+
+static void fill_rows_init(duckdb_init_info info) {
+    int64_t *at = (int64_t *)calloc(1, sizeof *at);
+    duckdb_init_set_init_data(info, at, free);
+}
+
+static void fill_rows_scan(duckdb_function_info info, duckdb_data_chunk out) {
+    const fn_extra *x = (const fn_extra *)duckdb_function_get_extra_info(info);
+    fill_rows *f = (fill_rows *)duckdb_function_get_bind_data(info);
+    int64_t *at = (int64_t *)duckdb_function_get_init_data(info);
+    int64_t n = f->count - *at;
+    if (n > (int64_t)duckdb_vector_size()) n = (int64_t)duckdb_vector_size();
+    duckdb_vector v = duckdb_data_chunk_get_vector(out, 0);
+    void *data = duckdb_vector_get_data(v);
+    for (int64_t i = 0; i < n; i++) id_put(v, data, x->kind, (idx_t)i, f->cells[*at + i]);
+    *at += n;
+    duckdb_data_chunk_set_size(out, (idx_t)n);
+}
+
+static void reg_rows(duckdb_connection con, const char *name, int wkt, id_kind kind) {
+    duckdb_table_function tf = duckdb_create_table_function();
+    duckdb_table_function_set_name(tf, name);
+    duckdb_type types[3] = {wkt ? DUCKDB_TYPE_VARCHAR : DUCKDB_TYPE_BLOB, DUCKDB_TYPE_BIGINT, DUCKDB_TYPE_VARCHAR};
+    for (int i = 0; i < 3; i++) {
+        duckdb_logical_type t = duckdb_create_logical_type(types[i]);
+        duckdb_table_function_add_parameter(tf, t);
+        duckdb_destroy_logical_type(&t);
+    }
+    duckdb_logical_type vt = duckdb_create_logical_type(DUCKDB_TYPE_VARCHAR);
+    duckdb_table_function_add_named_parameter(tf, "projection", vt);
+    duckdb_destroy_logical_type(&vt);
+    fn_extra *x = (fn_extra *)malloc(sizeof *x);
+    x->name = name;
+    x->kind = kind;
+    x->variant = wkt;
+    duckdb_table_function_set_extra_info(tf, x, free);
+    duckdb_table_function_set_bind(tf, fill_rows_bind);
+    duckdb_table_function_set_init(tf, fill_rows_init);
+    duckdb_table_function_set_function(tf, fill_rows_scan);
+    duckdb_register_table_function(con, tf);
+    duckdb_destroy_table_function(&tf);
+}
+
 void register_fill(duckdb_connection con) {
+    reg_rows(con, "dggs_polygon_to_cells", 0, K_BIGINT);
+    reg_rows(con, "dggs_polygon_to_cells_str", 0, K_VARCHAR);
+    reg_rows(con, "dggs_polygon_wkt_to_cells", 1, K_BIGINT);
+    reg_rows(con, "dggs_polygon_wkt_to_cells_str", 1, K_VARCHAR);
     reg(con, "dggs_polygon_to_cells", "XBV|XBVV", 'E', polygon_to_cells, 0, K_BIGINT, 0);
     reg(con, "dggs_polygon_to_cells_str", "XBV|XBVV", 'E', polygon_to_cells, 0, K_VARCHAR, 0);
     reg(con, "dggs_polygon_wkt_to_cells", "VBV|VBVV", 'E', polygon_to_cells, 0, K_BIGINT, 1);

@@ -416,6 +416,9 @@ CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (d
     "dggs_get_face(i)", "dggs_edge_neighbors(i)", "dggs_are_neighbor_cells(i, i)", "dggs_get_num_cells(n)",
     "dggs_level_area(n, 'm^2')", "dggs_cell_area(i, 'km^2')", "dggs_latlng_to_cell(x, y, n, 'IVEA')",
     "dggs_cell_to_latlng(i, 'IVEA')", "dggs_cell_to_boundary_wkb(i, least(n, 5), 'IVEA')",
+    "dggs_polygon_to_cells(dggs_cell_to_boundary_wkb(i), least(n, 7), 'overlaps')",
+    "dggs_polygon_wkt_to_cells_str(dggs_cell_to_boundary_wkt(i), least(n, 7), 'center', 'IVEA')",
+    "dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', least(n, 8), 'inside')",
 ]  # fmt: skip
 
 
@@ -499,3 +502,20 @@ def test_ivea_projection_as_grid_ivea(ext: Path, tmp_path: Path) -> None:
     assert [int(v) for v in fill] == np.sort(np.asarray(grid.polygon_to_cells(box, 6, as_int=True), np.uint64)).tolist()
     proc = run(ext, "SELECT dggs_latlng_to_cell(0, 0, 5, 'healpix')")
     assert proc.returncode != 0 and "projection 'healpix' is not 'ISEA' or 'IVEA'" in proc.stderr + proc.stdout
+
+
+def test_polygon_fill_as_rows(ext: Path) -> None:
+    """The table functions of the same names: one row a cell, as the list, in id order."""
+    shapely = pytest.importorskip("shapely")
+    for shape, level in zip(_shapes(), [5, 7, 6, 4, 9], strict=True):
+        wkt, wkb = shapely.to_wkt(shape, rounding_precision=-1), shapely.to_wkb(shape).hex()
+        got = rows(ext, f"""SELECT (SELECT list(cell) FROM dggs_polygon_wkt_to_cells('{wkt}', {level}, 'overlaps')) AS a,
+                                   (SELECT list(cell) FROM dggs_polygon_to_cells_str(from_hex('{wkb}'), {level}, 'overlaps')) AS s,
+                                   (SELECT list(cell) FROM dggs_polygon_wkt_to_cells('{wkt}', {level}, 'center', projection := 'IVEA')) AS v""")[0]  # fmt: skip
+        want = np.sort(np.asarray(dggs.polygon_to_cells(shape, level, mode="overlaps", as_int=True), np.uint64))
+        assert [int(c) for c in got["a"]] == want.tolist() and got["s"] == list(dggs.int_to_str(want))
+        ivea = np.sort(np.asarray(dggs.Grid("IVEA").polygon_to_cells(shape, level, as_int=True), np.uint64))
+        assert [int(c) for c in got["v"] or []] == ivea.tolist()
+    assert rows(ext, "SELECT count(*) AS n FROM dggs_polygon_wkt_to_cells(NULL, 5, 'center')")[0]["n"] == 0
+    proc = run(ext, "SELECT * FROM dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', 5, 'center', projection := 'x')")
+    assert proc.returncode != 0 and "projection 'x' is not 'ISEA' or 'IVEA'" in proc.stderr
