@@ -19,6 +19,7 @@ import shutil
 import subprocess
 import sys
 import tarfile
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -95,7 +96,7 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-o
 def build(version: str, out: Path, cc: str, sanitize: bool = False) -> Path:
     include = headers(version, ROOT / "build" / "duckdb-sdk")
     out.parent.mkdir(parents=True, exist_ok=True)
-    library = out.with_suffix(".so")
+    library = Path(tempfile.mkdtemp(prefix="dggs-duckdb-")) / "dggs.so"  # not left beside the output (a wheel's dggs/)
     sources = sorted(str(p) for p in (ROOT / "libdggs" / "src").glob("*.c")) + sorted(str(p) for p in HERE.glob("*.c"))
     major, minor, patch = C_API
     defines = ["-DDUCKDB_EXTENSION_NAME=dggs", f"-DDUCKDB_EXTENSION_API_VERSION_MAJOR={major}",
@@ -110,6 +111,7 @@ def build(version: str, out: Path, cc: str, sanitize: bool = False) -> Path:
     with open(tmp, "ab") as f:
         f.write(footer(duckdb_platform(), "v{}.{}.{}".format(*C_API), EXTENSION_VERSION))
     tmp.replace(out)
+    shutil.rmtree(library.parent, ignore_errors=True)
     return out
 
 
