@@ -4,7 +4,8 @@
 - numpy: ``dggs.latlng_to_cell(lat, lng, 17, as_int=True)`` with DGGS_THREADS=1 (set before dggs is imported);
 - SQL, extension: ``SELECT sum(dggs_latlng_to_cell(lat, lng, 17)) FROM pts`` over a DuckDB table, 1 and 2 threads;
 - SQL, Python UDF (``dggs.duckdb.register``) on 1M points, for scale;
-- a roll-up ``GROUP BY dggs_cell_to_parent(id, 8)`` over the 10M ids, extension, 1 and 2 threads.
+- a roll-up ``GROUP BY dggs_cell_to_parent(id, 8)`` over the 10M ids, extension, 1 and 2 threads;
+- polygon fill (a 20x20 degree box at level 12) and the corners of 1M cells, against the Python API, one thread.
 Best of ``--repeat`` runs each. Needs the extension built (``make duckdb-extension``).
 
 Usage: ``DGGS_THREADS=1 python benchmarks/bench_duckdb_extension.py [--n 10000000] [--repeat 3]``.
@@ -64,6 +65,23 @@ def main() -> None:
                                       "FROM cells GROUP BY 1)").fetchall(), args.repeat)  # fmt: skip
         rows.append((threads, sql_s, roll_s))
 
+    # polygon fill and boundaries against the Python API, one thread each
+    import shapely
+
+    con.execute("SET threads = 1")
+    box = shapely.box(-10, -10, 10, 10)
+    fill_py = best(lambda: dggs.polygon_to_cells(box, 12, as_int=True), args.repeat)
+    fill_sql = best(lambda: con.sql(f"SELECT len(dggs_polygon_wkt_to_cells('{box.wkt}', 12, 'center'))").fetchall(),
+                    args.repeat)  # fmt: skip
+    n_fill = len(dggs.polygon_to_cells(box, 12, as_int=True))
+    m = min(args.n, 1_000_000)
+    some = ids[:m]
+    bnd_py = best(lambda: dggs.cell_to_boundary(some), args.repeat)
+    con.execute(f"CREATE TABLE some_cells AS SELECT id FROM cells LIMIT {m}")
+    bnd_sql = best(lambda: con.sql("SELECT sum(len(dggs_cell_to_boundary(id))) FROM some_cells").fetchall(), args.repeat)
+    wkb_sql = best(lambda: con.sql("SELECT sum(octet_length(dggs_cell_to_boundary_wkb(id))) FROM some_cells").fetchall(),
+                   args.repeat)  # fmt: skip
+
     n_udf = min(args.n, 1_000_000)
     udf = dggs.duckdb.register(duckdb.connect())
     udf.register("pts_view", con.sql(f"SELECT * FROM pts LIMIT {n_udf}").arrow())
@@ -81,6 +99,10 @@ def main() -> None:
     one, two = rows[0][1], rows[1][1]
     print(f"  extension 2 threads / 1 thread: {one / two:.2f}x")
     print(f"  SQL Python UDF, 1 thread, {n_udf:,} points: {udf_s:.3f} s ({udf_s / n_udf * 1e9:.0f} ns a point)")
+    print(f"  polygon fill, 20x20 degree box at level 12 ({n_fill:,} cells), 1 thread: dggs.polygon_to_cells "
+          f"{fill_py:.3f} s, SQL dggs_polygon_wkt_to_cells {fill_sql:.3f} s ({fill_py / fill_sql:.2f}x)")
+    print(f"  boundaries of {m:,} cells, 1 thread: dggs.cell_to_boundary {bnd_py:.3f} s, SQL dggs_cell_to_boundary "
+          f"{bnd_sql:.3f} s ({bnd_py / bnd_sql:.2f}x), SQL dggs_cell_to_boundary_wkb {wkb_sql:.3f} s")
 
 
 if __name__ == "__main__":
