@@ -166,11 +166,12 @@ static int mode_of(const char *s, uint32_t n) {
     return -1;
 }
 
-/* The cells of geometry `gs` (len bytes; WKT if `wkt`, else WKB) at `level` by `mode` and `proj` into *cells
- * (malloc'd, *count of them; the caller frees it): true, or false with the message into msg (naming `name`). */
+/* The cells of geometry `gs` (len bytes; WKT if `wkt`, else WKB) at `level` by `mode` and `proj` into *cells (a
+ * malloc'd buffer of *cap ids, grown as needed and kept for the next call; the caller frees it), their count into
+ * *count: true, or false with the message into msg (naming `name`). One descent when the buffer is large enough
+ * (the core says how many it needs when it is not: DGGS_E_BUFFER), two otherwise. */
 static bool fill(const char *name, const char *gs, uint32_t len, int wkt, int level, int mode, dggs_projection proj,
-                 poly_t *p, dggs_cell **cells, int64_t *count, char *msg, size_t msg_size) {
-    int64_t size;
+                 poly_t *p, dggs_cell **cells, int64_t *cap, int64_t *count, char *msg, size_t msg_size) {
     dggs_error err;
     p->n_pts = p->n_rings = 0;
     reader_t rd = {(const uint8_t *)gs, len, 0};
@@ -179,18 +180,30 @@ static bool fill(const char *name, const char *gs, uint32_t len, int wkt, int le
                  wkt ? ": '" : "", wkt ? (int)(len > 60 ? 60 : len) : 0, gs, wkt ? "'" : "");
         return false;
     }
-    err = dggs_polygon_to_cells_size(p->pts, p->rings, (int64_t)p->n_rings, level, (dggs_fill_mode)mode, proj, &size);
-    if (err == DGGS_OK && size > MAX_LIST_CELLS) {
-        snprintf(msg, msg_size, "%s: the polygon holds more than %lld cells at level %d", name,
-                 (long long)MAX_LIST_CELLS, level);
-        return false;
-    }
-    if (err == DGGS_OK) {
+    for (int attempt = 0; attempt < 2; attempt++) {
+        if (!*cells) {
+            *cap = 4096;
+            *cells = (dggs_cell *)malloc((size_t)*cap * sizeof(dggs_cell));
+            if (!*cells) {
+                snprintf(msg, msg_size, "%s: out of memory", name);
+                return false;
+            }
+        }
+        err = dggs_polygon_to_cells(p->pts, p->rings, (int64_t)p->n_rings, level, (dggs_fill_mode)mode, proj, *cells,
+                                    *cap, count);
+        if (err != DGGS_E_BUFFER) break;
+        if (*count > MAX_LIST_CELLS) {
+            snprintf(msg, msg_size, "%s: the polygon holds more than %lld cells at level %d", name,
+                     (long long)MAX_LIST_CELLS, level);
+            return false;
+        }
         free(*cells);
-        *cells = (dggs_cell *)malloc((size_t)(size ? size : 1) * sizeof(dggs_cell));
-        err = *cells ? dggs_polygon_to_cells(p->pts, p->rings, (int64_t)p->n_rings, level, (dggs_fill_mode)mode, proj,
-                                             *cells, size, count)
-                     : DGGS_E_FAILED;
+        *cap = *count;
+        *cells = (dggs_cell *)malloc((size_t)(*cap ? *cap : 1) * sizeof(dggs_cell));
+        if (!*cells) {
+            snprintf(msg, msg_size, "%s: out of memory", name);
+            return false;
+        }
     }
     if (err != DGGS_OK) {
         snprintf(msg, msg_size, "%s: %s", name,
@@ -221,6 +234,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
     char msg[256];
     poly_t p = {0};
     dggs_cell *cells = NULL;
+    int64_t cap = 0;
     ROWS(n) {
         int level, mode;
         uint32_t len, mlen;
@@ -235,7 +249,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
         const char *ms = str_data(&((duckdb_string_t *)m.data)[r], &mlen);
         const char *gs = str_data(&((duckdb_string_t *)g.data)[r], &len);
         bool ok = (mode = mode_of(ms, mlen)) >= 0 ? fill(x->name, gs, len, x->variant, level, mode, proj, &p, &cells,
-                                                         &count, msg, sizeof msg)
+                                                         &cap, &count, msg, sizeof msg)
                                                   : mode_error(x->name, ms, mlen, msg, sizeof msg);
         if (!ok) {
             duckdb_scalar_function_set_error(info, msg);
@@ -256,7 +270,7 @@ static void polygon_to_cells(duckdb_function_info info, duckdb_data_chunk in, du
 
 typedef struct {
     dggs_cell *cells;
-    int64_t count;
+    int64_t cap, count;
 } fill_rows;
 
 static void fill_rows_free(void *data) {
@@ -297,13 +311,13 @@ static void fill_rows_bind(duckdb_bind_info info) {
         if (ok && level >= 0 && level <= DGGS_MAX_LEVEL) {
             if (x->variant == 1) {
                 char *gs = duckdb_get_varchar(g);
-                ok = fill(x->name, gs, (uint32_t)strlen(gs), 1, (int)level, mode, proj, &p, &f->cells, &f->count, msg,
-                          sizeof msg);
+                ok = fill(x->name, gs, (uint32_t)strlen(gs), 1, (int)level, mode, proj, &p, &f->cells, &f->cap, &f->count,
+                          msg, sizeof msg);
                 duckdb_free(gs);
             } else {
                 duckdb_blob b = duckdb_get_blob(g);
                 ok = fill(x->name, (const char *)b.data, (uint32_t)b.size, 0, (int)level, mode, proj, &p, &f->cells,
-                          &f->count, msg, sizeof msg);
+                          &f->cap, &f->count, msg, sizeof msg);
                 duckdb_free(b.data);
             }
         }
