@@ -57,7 +57,10 @@ def headers(version: str, sdk: Path) -> Path:
 
 
 def duckdb_platform() -> str:
-    """DuckDB's name of this platform (``PRAGMA platform``): linux_amd64, linux_arm64, osx_arm64, ..."""
+    """DuckDB's name of this platform (``PRAGMA platform``): linux_amd64, linux_arm64, osx_arm64, ...
+
+    ``$DUCKDB_PLATFORM`` overrides it: DuckDB 1.2's Linux builds call linux_amd64 ``linux_amd64_gcc4``.
+    """
     if os.environ.get("DUCKDB_PLATFORM"):
         return os.environ["DUCKDB_PLATFORM"]
     system = {"Linux": "linux", "Darwin": "osx", "Windows": "windows"}[platform.system()]
