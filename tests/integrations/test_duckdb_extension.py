@@ -519,3 +519,33 @@ def test_polygon_fill_as_rows(ext: Path) -> None:
     assert rows(ext, "SELECT count(*) AS n FROM dggs_polygon_wkt_to_cells(NULL, 5, 'center')")[0]["n"] == 0
     proc = run(ext, "SELECT * FROM dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', 5, 'center', projection := 'x')")
     assert proc.returncode != 0 and "projection 'x' is not 'ISEA' or 'IVEA'" in proc.stderr
+
+
+def test_mangled_wkb_and_wkt_never_crash(ext: Path) -> None:
+    """Truncated, bit-flipped and random WKB, and cut or garbled WKT, through both parsers: each row a list or a
+    clean error (caught by DuckDB's try()), never a crash."""
+    shapely = pytest.importorskip("shapely")
+    rng = np.random.default_rng(9)
+    blobs, texts = [], []
+    for shape in _shapes():
+        wkb, wkt = bytearray(shapely.to_wkb(shape)), shapely.to_wkt(shape, rounding_precision=6)
+        for _ in range(40):
+            b = bytearray(wkb)
+            cut = int(rng.integers(0, len(b) + 1))
+            if rng.random() < 0.5:
+                b = b[:cut]
+            for _ in range(int(rng.integers(0, 4))):
+                if b:
+                    b[int(rng.integers(0, len(b)))] = int(rng.integers(0, 256))
+            blobs.append(bytes(b))
+            t = list(wkt[: int(rng.integers(0, len(wkt) + 1))] if rng.random() < 0.5 else wkt)
+            for _ in range(int(rng.integers(0, 4))):
+                if t:
+                    t[int(rng.integers(0, len(t)))] = "(),. 0-9eE"[int(rng.integers(0, 10))]
+            texts.append("".join(t))
+    blobs += [rng.bytes(int(n)) for n in rng.integers(0, 64, 50)]
+    values = ", ".join(f"(from_hex('{b.hex()}'), '{t}')" for b, t in zip(blobs, texts + [""] * 50, strict=True))
+    proc = run(ext, f"SELECT count(*) AS n, count(try(dggs_polygon_to_cells(b, 4, 'overlaps'))) AS a, "
+                    f"count(try(dggs_polygon_wkt_to_cells(t, 4, 'center'))) AS c FROM (VALUES {values}) v(b, t)")  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    assert "INTERNAL" not in proc.stdout + proc.stderr
