@@ -9,7 +9,7 @@ BENCH_PY   := $(BENCH_VENV)/bin/python
 BENCH_STAMP := $(BENCH_VENV)/.installed
 
 .PHONY: demo test test-all test-browser test-core test-core-sanitize fuzz static static-if-npm bench clean wasm wasm-toolchain \
-	js-fixtures test-js typecheck-js static-wasm
+	js-fixtures test-js typecheck-js static-wasm duckdb-extension test-duckdb-extension test-duckdb-extension-sanitize
 
 # The compiled core (libdggs/, C11) reaches Python as dggs._core, built by setup.py with the machine's C compiler
 # when dggs is installed, and again by every target below whenever a C, Cython or build file changed (an editable
@@ -101,6 +101,35 @@ test-core-sanitize: $(STAMP)
 FUZZ_SECONDS ?= 30
 fuzz: $(STAMP)
 	PY=$(PY) FUZZ_SECONDS=$(FUZZ_SECONDS) sh libdggs/fuzz/run.sh
+
+# The DuckDB extension (libdggs/duckdb/, docs/duckdb.md): the core's and the extension's C sources compiled into
+# build/duckdb/dggs.duckdb_extension against DuckDB's stable C extension API v1.2.0 (it loads in DuckDB 1.2.0 and
+# later), with DuckDB's metadata footer appended. DuckDB's headers come from the duckdb source distribution on PyPI,
+# downloaded by pip into build/duckdb-sdk/ (DUCKDB_VERSION, default that of pip's duckdb-cli), never committed.
+# test-duckdb-extension runs tests/integrations/test_duckdb_extension.py with pip's duckdb-cli.
+DUCKDB_PY ?= $(if $(wildcard $(PY)),$(PY),$(PYTHON))
+DUCKDB_EXT := build/duckdb/dggs.duckdb_extension
+DUCKDB_CLI_VERSION ?= 1.5.6
+DUCKDB_VERSION ?= $(DUCKDB_CLI_VERSION)
+$(DUCKDB_EXT): $(wildcard libdggs/duckdb/*.c libdggs/duckdb/*.h libdggs/src/*.c libdggs/src/*.h) \
+		libdggs/include/dggs.h libdggs/duckdb/build.py
+	$(DUCKDB_PY) libdggs/duckdb/build.py --duckdb-version $(DUCKDB_VERSION) --out $(DUCKDB_EXT)
+
+duckdb-extension: $(DUCKDB_EXT)
+
+test-duckdb-extension: $(DUCKDB_EXT)
+	$(DUCKDB_PY) -m pip install --quiet duckdb-cli==$(DUCKDB_CLI_VERSION)
+	$(DUCKDB_PY) -m pytest -q tests/integrations/test_duckdb_extension.py
+
+# The same tests with the extension built under AddressSanitizer and UBSan, in the CLI's binary with gcc's
+# runtimes preloaded (the Python connection test is left out: it would need them in the Python process).
+test-duckdb-extension-sanitize:
+	$(DUCKDB_PY) libdggs/duckdb/build.py --sanitize --duckdb-version $(DUCKDB_VERSION) --out build/duckdb-san/dggs.duckdb_extension
+	$(DUCKDB_PY) -m pip install --quiet duckdb-cli==$(DUCKDB_CLI_VERSION)
+	DGGS_DUCKDB_CLI="$$($(DUCKDB_PY) -c 'import duckdb_cli, os; print(os.path.join(os.path.dirname(duckdb_cli.__file__), "duckdb"))')" \
+	DGGS_DUCKDB_CLI_PRELOAD="$$(cc -print-file-name=libasan.so) $$(cc -print-file-name=libubsan.so)" \
+	DGGS_DUCKDB_EXTENSION=build/duckdb-san/dggs.duckdb_extension \
+		$(DUCKDB_PY) -m pytest -q tests/integrations/test_duckdb_extension.py -k "not python_load"
 
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout

@@ -54,6 +54,17 @@ class BuildExt(build_ext):
             if not omp:
                 print("note: no OpenMP in this C compiler; dggs's batch loops will run on one thread", file=sys.stderr)
         super().build_extensions()
+        if os.environ.get("DGGS_WITH_DUCKDB_EXTENSION") == "1" and not self.inplace:
+            self._duckdb_extension()
+
+    def _duckdb_extension(self) -> None:
+        """Build the DuckDB extension (libdggs/duckdb/build.py) into the wheel, beside dggs/duckdb.py.
+
+        ``dggs.duckdb.load`` looks there first. Built only when asked (``DGGS_WITH_DUCKDB_EXTENSION=1 pip wheel .``),
+        as it downloads DuckDB's headers (the duckdb sdist, by pip) and compiles the core once more.
+        """
+        out = os.path.join(os.path.abspath(self.build_lib), "dggs", "dggs.duckdb_extension")
+        subprocess.run([sys.executable, os.path.join(HERE, "libdggs", "duckdb", "build.py"), "--out", out], check=True)
 
 
 def _core_extension() -> list[Extension]:

@@ -1,4 +1,11 @@
-"""DuckDB SQL functions over Arrow batches: ``dggs.duckdb.register(con)``.
+"""DuckDB SQL functions: the native extension (``dggs.duckdb.load(con)``) or Python UDFs (``register(con)``).
+
+:func:`load` loads the native DuckDB extension built from the C core
+(``make duckdb-extension``, docs/duckdb.md), which answers the same names in
+C on DuckDB's own threads, into a Python connection, if its file is found.
+The Python UDFs below remain for where it is not (no C compiler, a wheel
+without it, a DuckDB older than 1.2) and for what it does not have yet
+(dissolve, polygon fill, lines, circles, vertexes).
 
 Optional extra: ``pip install 'dggs[duckdb]'``.  :func:`register` adds
 vectorized scalar functions to a DuckDB connection.  DuckDB hands each
@@ -45,7 +52,9 @@ try:  # the optional extra
 except ImportError as exc:  # pragma: no cover - exercised only without the extra
     raise ImportError("dggs.duckdb needs the 'duckdb' extra: pip install 'dggs[duckdb]'") from exc
 
-__all__ = ["register", "FUNCTIONS"]
+from dggs._duckdb_load import extension_path, load  # the native extension
+
+__all__ = ["register", "load", "extension_path", "FUNCTIONS"]
 
 # SQL type of an id argument -> (suffix of the typed function, Arrow type of ids of that kind)
 _ID_KINDS: dict[str, tuple[str, Any]] = {

@@ -1,0 +1,66 @@
+"""Loading the native dggs DuckDB extension into a Python connection: ``dggs.duckdb.load(con)``.
+
+The extension (``libdggs/duckdb/``, ``make duckdb-extension``) answers the
+``dggs_*`` names in C on DuckDB's own threads; docs/duckdb.md.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import duckdb
+
+__all__ = ["extension_path", "load"]
+
+
+def extension_path() -> Path | None:
+    """The native extension's file, or None if there is none.
+
+    Looked for in order: ``$DGGS_DUCKDB_EXTENSION``, a file shipped beside this module, and
+    ``build/duckdb/dggs.duckdb_extension`` of the source tree (``make duckdb-extension``).
+    """
+    here = Path(__file__).resolve().parent
+    candidates = [here / "dggs.duckdb_extension", here.parent / "build" / "duckdb" / "dggs.duckdb_extension"]
+    if os.environ.get("DGGS_DUCKDB_EXTENSION"):
+        candidates.insert(0, Path(os.environ["DGGS_DUCKDB_EXTENSION"]))
+    for path in candidates:
+        if path.is_file():
+            return path
+    return None
+
+
+def load(con: Any, path: Any = None) -> bool:
+    """Load the native dggs extension into DuckDB connection ``con``; False if no extension file was found.
+
+    The extension is unsigned: the connection must allow it, from its start
+    (``duckdb.connect(config={"allow_unsigned_extensions": "true"})``). Its
+    functions are stored nowhere: a database whose views use them needs
+    ``load`` again after it is reopened. Do not also :func:`register` the
+    Python UDFs on the same connection (the names are the same).
+
+    Raises
+    ------
+    RuntimeError
+        The connection refuses unsigned extensions, or DuckDB cannot load the file (the message says why).
+
+    Examples
+    --------
+    >>> import duckdb
+    >>> con = duckdb.connect(config={"allow_unsigned_extensions": "true"})
+    >>> if load(con):
+    ...     assert con.sql("SELECT dggs_latlng_to_cell_str(51.05, -114.07, 9)").fetchall() == [("F200021102",)]
+    """
+    found = path if path is not None else extension_path()
+    if found is None:
+        return False
+    literal = str(found).replace("'", "''")
+    try:
+        con.execute(f"LOAD '{literal}'")
+    except duckdb.Error as exc:
+        hint = ""
+        if "allow_unsigned_extensions" in str(exc):
+            hint = ' (connect with config={"allow_unsigned_extensions": "true"})'
+        raise RuntimeError(f"dggs.duckdb.load: {exc}{hint}") from exc
+    return True
