@@ -12,12 +12,16 @@ import json
 from collections.abc import Sequence
 from typing import Any
 
+import numpy as np
+
 import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
 
 from .connection import Connection
 from .rollup import add_partials, remembered, streamed
-from .rollup_memo import state
+from .rollup_columns import Rolled, head, roll_up, rolled_from_rows
+from .rollup_columns import order as order_rolled
+from .rollup_memo import MEMO_CELLS, Partials, state
 from .rollup_serve import from_kept
 from .schema import quote
 
@@ -274,6 +278,28 @@ def _rollup_by_ranges(
     return out
 
 
+#: Where coarse cells hold this many stored rows each or more, SQL aggregates as it scans (few groups come
+#: out) faster than the rows can be read out as columns; below it the columns win (many groups).
+COLUMN_ROWS_PER_CELL = 8
+
+
+def _by_columns(store: Connection, level: int, under: list[str] | None, kind: str | None,
+                stats: tuple[str, ...]) -> bool:
+    """Whether a roll-up is computed over columns (:mod:`dggs.storage.rollup_columns`) rather than in SQL.
+
+    Always for sums and means of a REAL column (their rule, the correctly rounded sum, is computed there);
+    else where the groups are small (fewer than :data:`COLUMN_ROWS_PER_CELL` rows a cell).
+    """
+    if kind == "REAL" and {"sum", "mean"} & set(stats):
+        return True
+    if kind == "TEXT":
+        return False
+    roots = under if under is not None else [chr(ord("A") + f) for f in range(20)]
+    cells = sum(dggs.get_num_cells(level) // dggs.get_num_cells(len(c) - 1) for c in roots)
+    rows = int(store.conn.execute("SELECT coalesce(sum(rows_inserted), 0) FROM sources").fetchone()[0])
+    return bool(rows < COLUMN_ROWS_PER_CELL * min(cells, max(rows, 1)))
+
+
 def _stats_of(row: tuple, stats: tuple[str, ...]) -> dict[str, Any]:
     if len(row) == 1:
         return {s: row[0] for s in stats}  # count only
@@ -292,8 +318,11 @@ def aggregate(
     order_by: str | None,
     descending: bool,
     limit: int | None,
-) -> list[dict[str, Any]]:
+    as_table: bool = False,
+) -> Any:
     """Roll the rows up to the cells of ``level`` (the work of :meth:`dggs.storage.CellStore.aggregate`).
+
+    Returns a list of dicts, or with ``as_table`` a pyarrow Table (:func:`table_types` gives its types).
 
     Raises
     ------
@@ -339,38 +368,91 @@ def aggregate(
                     f"cell {c!r} is at level {cell_level}, finer than the roll-up level {level}"
                 )
         if not found:
-            return []
+            return _shaped(Rolled([], {s: ([], None) for s in stats}), store, column, stats, as_table)
         clause, extra = _where(disjoint(found))
         where = f"WHERE {clause}"
         params.update(extra)
     if stored is None:
-        return []
+        return _shaped(Rolled([], {s: ([], None) for s in stats}), store, column, stats, as_table)
     exprs = ", ".join(f"{STATS[s].format(c=quote(column) if column else '')} AS {quote(s)}" for s in stats)
     order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
     out = []
     under = disjoint(found) if cell is not None else None  # partials kept in the file (rollup_keep):
     if (kept := from_kept(store, level, column, stats, under, order_by, descending, limit)) is not None:
-        return kept
-    whole = cell is None and order_by is None  # a whole-store roll-up in cell order: remembered (rollup_memo)
-    before = state(store.conn) if whole else None
-    if before is not None and (answer := remembered(store, before, level, column, stats, limit)) is not None:
-        return answer
+        return _shaped(kept, store, column, stats, as_table)
+    before = state(store.conn) if cell is None else None  # whole-store roll-ups are remembered (rollup_memo)
+    if (before is not None and order_by is None
+            and (answer := remembered(store, before, level, column, stats, limit)) is not None):
+        return _shaped(answer, store, column, stats, as_table)
     with store.snapshot() as table:
+        kind = columns.get(column) if column is not None else None
+        got = None
+        if _by_columns(store, level, under, kind, stats):  # columns, no row in Python (rollup_columns)
+            got = roll_up(store.conn, table, stored, level, column, kind, stats, under)
+        if got is not None:
+            rolled, partials = got
+            if before is not None:
+                _remember(store, before, level, column, rolled, partials)
+            if order_by is not None:
+                rolled = order_rolled(rolled, order_by, descending)
+            return _shaped(head(rolled, limit), store, column, stats, as_table)
         if order_by is None:
             under = found if cell is not None else None
             ranged = _rollup_by_ranges(store, level, under, column, stats, limit, table != "points")
             if ranged is not None:
-                return ranged
-        if before is not None and table == "points":  # stream the groups instead of sorting every row
+                return _shaped(ranged, store, column, stats, as_table)
+        if before is not None and order_by is None and table == "points":  # stream the groups, no sort
             if (answer := streamed(store, before, level, column, stats, limit)) is not None:
-                return answer
+                return _shaped(answer, store, column, stats, as_table)
         sql = f"SELECT substr(cell, 1, :n) AS cell_, {exprs} FROM {table} {where} GROUP BY cell_ ORDER BY {order}"
         if limit is not None:
             sql += " LIMIT :limit"
             params["limit"] = limit
         keys = ("cell", *stats)  # the columns in order: cell_, then one per stat
         out = [dict(zip(keys, row, strict=True)) for row in store.conn.execute(sql, params)]
-    return out
+    return _shaped(out, store, column, stats, as_table)
+
+
+def _shaped(
+    answer: list[dict[str, Any]] | Rolled, store: Connection, column: str | None, stats: tuple[str, ...], as_table: bool
+) -> Any:
+    """The roll-up as the caller asked for it: a list of dicts, or a pyarrow Table."""
+    if not as_table:
+        return answer.rows() if isinstance(answer, Rolled) else answer
+    rolled = answer if isinstance(answer, Rolled) else rolled_from_rows(answer, stats)
+    return rolled.table(table_types(store.columns.get(column) if column else None, stats))
+
+
+def table_types(kind: str | None, stats: Sequence[str]) -> dict[str, Any]:
+    """The pyarrow type of each stat of a roll-up of a column of SQL type ``kind``."""
+    import pyarrow as pa
+
+    value = {"INTEGER": pa.int64(), "REAL": pa.float64(), "TEXT": pa.string()}.get(kind or "", pa.int64())
+    types = {"count": pa.int64(), "sum": value, "min": value, "max": value, "mean": pa.float64()}
+    return {s: types[s] for s in stats}
+
+
+def _remember(store: Connection, before: Any, level: int, column: str | None, rolled: Rolled,
+              partials: dict[str, Any]) -> None:
+    """Keep a whole-store roll-up's partials for later calls (:mod:`dggs.storage.rollup_memo`)."""
+    n = len(rolled)
+    if n > MEMO_CELLS or (column is not None and partials.get("total") is None):
+        return
+    cells = [str(c) for c in rolled.lists()["cell"]] if n else []
+    if column is None:
+        kept = Partials(cells, partials["count"].tolist(), [None] * n, [None] * n, [None] * n, [0] * n)
+    else:
+        some = partials["some"]
+
+        def listed(name: str) -> list[Any]:
+            values: list[Any] = partials[name].tolist()
+            for i in np.flatnonzero(~some).tolist():
+                values[i] = None
+            return values
+
+        kept = Partials(cells, partials["count"].tolist(), listed("total"), listed("low"), listed("high"),
+                        partials["valued"].tolist())
+    store.memo.keep((store.conn, before[1], store.conn.total_changes), column, level, kept)
 
 
 def rows_under(store: Connection, cells: Sequence[str], level: int) -> list[dict[str, Any]]:

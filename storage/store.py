@@ -261,11 +261,17 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         order_by: str | None = None,
         descending: bool = True,
         limit: int | None = None,
-    ) -> list[dict[str, Any]]:
+        as_table: bool = False,
+    ) -> Any:
         """Roll stored rows up to ``level`` (the stored level or coarser).
 
-        Computed in SQL by id-prefix arithmetic:
-        ``GROUP BY substr(cell, 1, level + 1)``.
+        Read from kept roll-ups where the store keeps them, else computed over
+        columns: the rows are read in key order as a few large values (no
+        Python object per row) and grouped by id prefix in numpy
+        (:mod:`dggs.storage.rollup_columns`).  Counts, min, max and integer
+        sums are exact; the sum of a REAL column is the correctly rounded sum
+        of its values (``math.fsum``'s answer, whatever the order of the
+        rows) and its mean that sum over the non-NULL count.
 
         Parameters
         ----------
@@ -284,11 +290,15 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
             Sort ``order_by`` largest first.
         limit : int, optional
             Return at most this many cells.
+        as_table : bool, default False
+            Return a pyarrow Table (columns ``cell`` and the stats, NULLs as
+            nulls; ``count`` int64, ``mean`` float64, the others the column's
+            type) instead of a dict per cell: the cheap form for many cells.
 
         Returns
         -------
-        list of dict
-            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell.
+        list of dict or pyarrow.Table
+            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell, or those as columns.
 
         Raises
         ------
@@ -306,7 +316,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         ...     top[0]["count"], top[0]["sum"]
         (2, 12)
         """
-        return queries.aggregate(self._store, level, column, stats, cell, order_by, descending, limit)
+        return queries.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
 
     @guarded
     def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:

@@ -2,7 +2,8 @@
 
 Oracle: the plain ``GROUP BY substr(cell, 1, level + 1)`` over ``all_points``
 on a separate sqlite3 connection, compared value for value and type for type
-(an int sum is an int, a mean the double ``avg`` gives), after ingests of
+(an int sum is an int, a mean the double ``avg`` gives; a REAL sum the
+correctly rounded one, ``fsum``, and its mean that over the count), after ingests of
 every kind (ordered arrays, a streamed CSV through the pending table,
 records), deletions and bad batches.
 """
@@ -26,15 +27,17 @@ from dggs.errors import DggsError, LevelError, LevelMismatchError, StorageError
 from dggs.storage import CellStore
 from dggs.storage.errors import BadRowError
 
+from .helpers import FSum, stat_sql
+
 STATS = ("count", "sum", "mean", "min", "max")
-SQL = {"count": "count(*)", "sum": "sum({c})", "mean": "avg({c})", "min": "min({c})", "max": "max({c})"}
 
 
 def oracle(path, level, column, stats, cell=None, order_by=None, descending=True, limit=None):
     """The roll-up as plain SQL computes it from the rows."""
     con = sqlite3.connect(path)
+    con.create_aggregate("fsum", 1, FSum)
     try:
-        exprs = ", ".join(f'{SQL[s].format(c=f"{chr(34)}{column}{chr(34)}")} AS "{s}"' for s in stats)
+        exprs = ", ".join(f'{stat_sql(s, column, TYPES.get(column))} AS "{s}"' for s in stats)
         where, params = "", [level + 1]
         if cell is not None:
             where, params = "WHERE cell >= ? AND cell < ? || '~'", [level + 1, cell, cell]
