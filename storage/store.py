@@ -28,7 +28,7 @@ from typing import Any
 import dggs
 from dggs.errors import DggsValueError
 
-from . import queries
+from . import queries, rollup_query
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
 from .projection import ProjectionMethods, settle
@@ -265,13 +265,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
     ) -> Any:
         """Roll stored rows up to ``level`` (the stored level or coarser).
 
-        Read from kept roll-ups where the store keeps them, else computed over
-        columns: the rows are read in key order as a few large values (no
-        Python object per row) and grouped by id prefix in numpy
-        (:mod:`dggs.storage.rollup_columns`).  Counts, min, max and integer
-        sums are exact; the sum of a REAL column is the correctly rounded sum
-        of its values (``math.fsum``'s answer, whatever the order of the
-        rows) and its mean that sum over the non-NULL count.
+        Exact as SQL gives it, but a REAL sum is the correctly rounded sum (``math.fsum``'s), a mean that
+        over the non-NULL count; read from kept roll-ups or columns (:mod:`dggs.storage.rollup_query`).
 
         Parameters
         ----------
@@ -291,14 +286,13 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         limit : int, optional
             Return at most this many cells.
         as_table : bool, default False
-            Return a pyarrow Table (columns ``cell`` and the stats, NULLs as
-            nulls; ``count`` int64, ``mean`` float64, the others the column's
-            type) instead of a dict per cell: the cheap form for many cells.
+            Columns (a pyarrow Table) instead of dicts: cheaper.
 
         Returns
         -------
         list of dict or pyarrow.Table
-            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell, or those as columns.
+            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell, or as columns
+            (``count`` int64, ``mean`` float64, the others the column's type).
 
         Raises
         ------
@@ -316,7 +310,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         ...     top[0]["count"], top[0]["sum"]
         (2, 12)
         """
-        return queries.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
+        return rollup_query.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
 
     @guarded
     def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:

@@ -220,7 +220,7 @@ def test_levels_are_checked_and_dropping_stops_keeping(tmp_path):
                            ("3", LevelError)):
             with pytest.raises(error):
                 store.keep_rollups([bad])
-        assert store.rollup_levels == (7,) and store.meta["schema_version"] == "2"
+        assert store.rollup_levels == (7,) and store.meta["schema_version"] == "3"  # 3: exact REAL sums
         assert store.info()["rollup_levels"] == [7]
         assert store.keep_rollups([]) == ()
         assert store.rollup_levels == () and store.meta["schema_version"] == "1"
@@ -235,6 +235,9 @@ def test_a_newer_dggs_store_is_refused_by_one_that_would_not_keep_its_roll_ups(t
     with CellStore(tmp_path / "v.db") as store:
         store.keep_rollups([3])
     monkeypatch.setattr(schema, "SCHEMA_VERSION", 1)  # a dggs from before kept roll-ups
+    with pytest.raises(StorageError, match="newer than this dggs supports"):
+        CellStore(tmp_path / "v.db")
+    monkeypatch.setattr(schema, "SCHEMA_VERSION", 2)  # one keeping roll-ups but adding REAL sums inexactly
     with pytest.raises(StorageError, match="newer than this dggs supports"):
         CellStore(tmp_path / "v.db")
 
