@@ -62,6 +62,14 @@ class Rolled:
 
     cells: Any
     stats: dict[str, tuple[Any, Any]] = field(default_factory=dict)
+    #: The same as SQL rows ``(cell, *stats)``, where it came as rows: dicts are made from them directly.
+    tuples: list[tuple[Any, ...]] | None = None
+
+    @classmethod
+    def from_tuples(cls, rows: list[tuple[Any, ...]], stats: tuple[str, ...]) -> Rolled:
+        """SQL rows ``(cell, *stats)`` as a roll-up."""
+        columns = list(zip(*rows, strict=True)) if rows else [()] * (1 + len(stats))
+        return cls(list(columns[0]), {s: (list(c), None) for s, c in zip(stats, columns[1:], strict=True)}, rows)
 
     def __len__(self) -> int:
         return len(self.cells)
@@ -75,6 +83,9 @@ class Rolled:
 
     def rows(self) -> list[dict[str, Any]]:
         """One dict per cell, as ``aggregate`` has always returned them."""
+        if self.tuples is not None:
+            keys = ("cell", *self.stats)
+            return list(map(dict, map(zip, itertools.repeat(keys), self.tuples)))  # faster than dict(zip())
         cols = self.lists()
         keys = tuple(cols)
         return list(map(dict, map(zip, itertools.repeat(keys), zip(*cols.values(), strict=True))))
@@ -188,9 +199,14 @@ def _read(
         return None  # a value of another type (raw SQL): SQL answers, as it always has
     if given == n:
         valid = np.ones(n, dtype=bool)
-    else:  # NULLs among the values: where they are
-        flags = conn.execute(f"SELECT group_concat({c} IS NULL, '') FROM {source}", params).fetchone()[0]
-        valid = np.frombuffer(flags.encode("ascii"), dtype=np.uint8) == ord("0")
+    else:  # NULLs among the values: where they are, in one pass with the ids (and the integers) again
+        extra = f", group_concat(ifnull({c}, 0), ',')" if kind == "INTEGER" else ""
+        again = conn.execute(f"SELECT group_concat(cell, ''), group_concat({c} IS NULL, ''){extra} FROM {source}",
+                             params).fetchone()
+        if again[0] != got[1]:
+            return None
+        valid = np.frombuffer(again[1].encode("ascii"), dtype=np.uint8) == ord("0")
+        got = (*got[:4], *again[2:])  # the integers beside their NULL flags
     if kind == "INTEGER":
         with warnings.catch_warnings():
             warnings.simplefilter("error")

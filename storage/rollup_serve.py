@@ -25,6 +25,11 @@ from .schema import quote
 
 __all__ = ["from_kept"]
 
+#: The partials are read only where a kept level has at most one cell for this many stored rows: else the
+#: rows, read as columns (:mod:`dggs.storage.rollup_columns`), are cheaper (1M rows to level 10, 815k cells:
+#: 0.27 s as columns against 1.8 s through the partials).
+KEPT_GAIN = 2
+
 #: Doubles hold integers exactly below this: SQLite's ``avg`` of integers is exact while every running sum is.
 _EXACT = 2**53
 
@@ -49,6 +54,10 @@ def from_kept(
     if not finer:
         return None
     kept = min(finer)
+    partials = int(conn.execute("SELECT count(*) FROM rollups WHERE level = ?", (kept,)).fetchone()[0])
+    stored = int(conn.execute("SELECT coalesce(sum(rows_inserted), 0) FROM sources").fetchone()[0])
+    if partials * KEPT_GAIN > stored:
+        return None  # about a cell a row: reading the rows as columns is cheaper than the partials as rows
     valued = column is not None and set(stats) != {"count"}
     summed = valued and bool({"sum", "mean"} & set(stats))
     kind = numeric(store.columns).get(str(column)) if valued else None
@@ -86,8 +95,7 @@ def from_kept(
             if "overflow" in str(exc):
                 return None  # a regrouped integer sum past int64: SQL on the rows says so
             raise
-    columns = list(zip(*rows, strict=True)) if rows else [()] * (1 + len(stats))  # cell, then the stats in order
-    return Rolled(list(columns[0]), {s: (list(col), None) for s, col in zip(stats, columns[1:], strict=True)})
+    return Rolled.from_tuples(rows, stats)  # the columns selected: cell, then the stats in order
 
 
 def _inexact_reals(conn: sqlite3.Connection, column: str, where: str, params: dict[str, Any]) -> bool:

@@ -26,6 +26,12 @@ from dggs.storage import rollup_exact as rx
 STATS = ("count", "sum", "mean", "min", "max")
 
 
+@pytest.fixture(autouse=True)
+def _always_read_kept(monkeypatch):
+    """Read the kept partials even where the rows, as columns, would be cheaper (small test stores)."""
+    monkeypatch.setattr(rollup_serve, "KEPT_GAIN", 0)
+
+
 def _values(seed: int, n: int):
     rng = np.random.default_rng(seed)
     lat = np.degrees(np.arcsin(rng.uniform(-1, 1, n)))
@@ -39,16 +45,15 @@ def _values(seed: int, n: int):
 
 
 def _unkept(path, level, stats=STATS, **kw):
-    with CellStore(path, readonly=True) as store:
-        saved = rollup_serve.from_kept
-        rollup_serve_off = lambda *a, **k: None  # noqa: E731
-        import dggs.storage.rollup_query as rq
+    """The roll-up from the rows (the kept partials not asked)."""
+    import dggs.storage.rollup_query as rq
 
-        rq.from_kept = rollup_serve_off
-        try:
+    real, rq.from_kept = rq.from_kept, lambda *a, **k: None
+    try:
+        with CellStore(path, readonly=True) as store:
             return store.aggregate(level, "r", stats, **kw)
-        finally:
-            rq.from_kept = saved
+    finally:
+        rq.from_kept = real
 
 
 def _kept_reads(store, level, stats=STATS, **kw):
@@ -156,3 +161,22 @@ def test_a_store_kept_before_exact_sums_opens_unchanged_and_migrates_on_its_firs
         store.check()
         for level in (8, 3):
             assert _kept_reads(store, level) == _unkept(path, level)
+
+
+def test_partials_of_about_a_cell_a_row_are_not_read(tmp_path, monkeypatch):
+    """Where a kept level has about a cell a row, the rows read as columns are cheaper: same answer."""
+
+    monkeypatch.setattr(rollup_serve, "KEPT_GAIN", 2)
+    lat, lng, r = _values(4, 2_000)
+    with CellStore(tmp_path / "g.db") as store:
+        store.keep_rollups([11, 2])
+        store.ingest_points(lat, lng, 12, {"r": r}, types={"r": "REAL"})
+        import dggs.storage.rollup_query as rq
+
+        answered = []
+        real = rq.from_kept
+        monkeypatch.setattr(rq, "from_kept", lambda *a, **k: answered.append(real(*a, **k) is not None) or real(*a, **k))
+        fine, coarse = store.aggregate(11, "r"), store.aggregate(2, "r")
+        assert answered == [False, True]
+        monkeypatch.setattr(rollup_serve, "KEPT_GAIN", 0)
+        assert store.aggregate(11, "r") == fine and store.aggregate(2, "r") == coarse
