@@ -42,6 +42,8 @@ from typing import Any
 
 import numpy as np
 
+from dggs.errors import StorageError
+
 from .schema import quote
 
 __all__ = ["Rolled", "rolled_from_rows", "roll_up", "order", "head"]
@@ -101,8 +103,27 @@ class Rolled:
                 mask = None if valid is None else ~np.asarray(valid, dtype=bool)
                 arrays.append(pa.array(values, type=kind, mask=mask))
             else:
-                arrays.append(pa.array(_with_nulls(_to_list(values), valid), type=kind))
+                listed = _with_nulls(_to_list(values), valid)
+                try:
+                    arrays.append(pa.array(listed, type=kind))
+                except (pa.ArrowInvalid, pa.ArrowTypeError, OverflowError):
+                    odd = next((v for v in listed if v is not None and not _fits(v, kind)), None)
+                    raise StorageError(
+                        f"the roll-up's {name!r} holds {odd!r}, not {kind}: its column holds values of another "
+                        "type (written with raw SQL); ask for dicts (as_table=False)"
+                    ) from None
         return pa.Table.from_arrays(arrays, names=["cell", *self.stats])
+
+
+def _fits(value: Any, kind: Any) -> bool:
+    """Whether ``value`` is of the Python type a pyarrow column of ``kind`` holds."""
+    import pyarrow as pa
+
+    if pa.types.is_integer(kind):
+        return type(value) is int
+    if pa.types.is_floating(kind):
+        return type(value) is float
+    return isinstance(value, str)
 
 
 def _strings(cells: Any) -> Any:

@@ -22,6 +22,7 @@ import pandas as pd
 import pytest
 
 import dggs
+from dggs.errors import DggsError
 from dggs.storage import CellStore
 
 STATS = ("count", "sum", "mean", "min", "max")
@@ -149,10 +150,11 @@ def test_values_of_another_type_fall_back_to_sql(tmp_path):
         before = store.aggregate(2, "i", ("count", "min", "max"))
     con = sqlite3.connect(path)
     with con:
-        con.execute("UPDATE points SET i = 2.5 WHERE rowid IN (SELECT rowid FROM points LIMIT 1)"
-                    if False else "UPDATE points SET i = 'text' WHERE cell = (SELECT min(cell) FROM points)")
+        con.execute("UPDATE points SET i = 'text' WHERE cell = (SELECT min(cell) FROM points)")
     con.close()
     with CellStore(path, readonly=True) as store:
         after = store.aggregate(2, "i", ("count", "min", "max"))
         assert [r["count"] for r in after] == [r["count"] for r in before]
         assert "text" in [r["max"] for r in after]  # SQL's max: text sorts after numbers
+        with pytest.raises(DggsError, match="'max' holds 'text', not int64"):
+            store.aggregate(2, "i", ("count", "min", "max"), as_table=True)
