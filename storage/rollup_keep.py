@@ -46,7 +46,7 @@ import dggs
 from dggs.errors import LevelError, LevelMismatchError, StorageError
 
 from .bulk import insert_many, max_variables
-from .rollup_exact import of_values, rounded
+from .rollup_exact import of_groups
 from .schema import column_types, quote
 
 __all__ = [
@@ -301,10 +301,7 @@ def _reduce(col: Any, starts: np.ndarray) -> list[list[Any]]:
         n = np.add.reduceat(valued.astype(np.int64), starts)
         low, high = np.fmin.reduceat(col, starts), np.fmax.reduceat(col, starts)
         empty = n == 0
-        ends = [*starts[1:].tolist(), col.shape[0]]
-        flat = col.tolist()
-        exact = [of_values(v for v in flat[a:b] if v == v) for a, b in zip(starts.tolist(), ends, strict=True)]
-        total = [rounded(x) for x in exact]
+        exact, total = of_groups(col[valued], n)
         return [n.tolist(), total, *([None if e else v for v, e in zip(a.tolist(), empty.tolist(), strict=True)]
                                      for a in (low, high)), exact]
     if isinstance(col, np.ndarray):

@@ -180,3 +180,24 @@ def test_partials_of_about_a_cell_a_row_are_not_read(tmp_path, monkeypatch):
         assert answered == [False, True]
         monkeypatch.setattr(rollup_serve, "KEPT_GAIN", 0)
         assert store.aggregate(11, "r") == fine and store.aggregate(2, "r") == coarse
+
+
+def test_groups_of_one_two_and_more_are_exact():
+    rng = np.random.default_rng(7)
+    counts = rng.integers(0, 6, 400)
+    values = rng.normal(size=int(counts.sum())) * 10.0 ** rng.integers(-20, 20, int(counts.sum()))
+    values[::17] = -0.0
+    blobs, sums = rx.of_groups(values, counts)
+    at = 0
+    for k, c in enumerate(counts.tolist()):
+        group = values[at : at + c].tolist()
+        at += c
+        if c == 0:
+            assert blobs[k] is None and sums[k] is None
+            continue
+        assert sums[k] == math.fsum(group) and rx.rounded(blobs[k]) == sums[k]
+        assert math.copysign(1, sums[k]) == math.copysign(1, math.fsum(v + 0.0 for v in group))
+        other = rx.of_values(group[::-1])  # any other expansion of the same sum adds up the same
+        assert rx.rounded(rx.add(blobs[k], other)) == math.fsum(group + group)
+    big, _ = rx.of_groups(np.array([1.7e308, 1.7e308, 1.0]), np.array([2, 1]))
+    assert big[0] == rx.INEXACT and rx.rounded(big[1]) == 1.0
