@@ -22,8 +22,9 @@ from dggs.errors import LevelError, LevelMismatchError, StorageError
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
-from .rollup_keep import verify
+from .rollup_exact import register as register_exact_sums
 from .rollup_memo import Memo
+from .rollup_verify import verify
 from .schema import check_meta, check_schema, column_types, create_schema, now, upgrade_layout
 
 __all__ = ["Connection", "translate", "guarded", "DEFAULT_LEVEL", "connect_immutable"]
@@ -73,6 +74,7 @@ class Connection:
             # the signature before the open: a change between the two is then seen as one
             before = signature(Path(path).resolve()) if readonly and path != ":memory:" else None
             self._conn, self.immutable = _connect(path, readonly, timeout, self.check_same_thread)
+            register_exact_sums(self._conn)  # the kept roll-ups' exact REAL sums (rollup_exact)
             self.signature = before
         except (sqlite3.DatabaseError, UnicodeDecodeError, OSError) as exc:
             raise translate(exc, path, timeout) from exc

@@ -16,12 +16,9 @@ import dggs
 from dggs.errors import DggsValueError, InvalidCellError, LevelError, LevelMismatchError
 
 from .connection import Connection
-from .rollup import add_partials, remembered, streamed
-from .rollup_memo import state
-from .rollup_serve import from_kept
 from .schema import quote
 
-__all__ = ["STATS", "normalise_cells", "count", "get", "descendants", "aggregate", "rows_under"]
+__all__ = ["STATS", "normalise_cells", "count", "get", "descendants", "rows_under"]
 
 #: Statistics :meth:`CellStore.aggregate` computes, and their SQL.
 STATS = {
@@ -217,162 +214,6 @@ def descendants(store: Connection, cells: Any) -> list[dict[str, Any]]:
         return list(store.query(sql, params))
 
 
-#: A roll-up reads one id range per possible cell (no sort) when there are at most this many
-#: cells and at least RANGE_ROWS_PER_CELL stored rows a cell; else it groups in one sorted pass.
-RANGE_CELLS = 40_000
-RANGE_ROWS_PER_CELL = 8
-
-
-def _rollup_by_ranges(
-    store: Connection,
-    level: int,
-    under: list[str] | None,
-    column: str | None,
-    stats: tuple[str, ...],
-    limit: int | None,
-    pending: bool,
-) -> list[dict[str, Any]] | None:
-    """The roll-up to ``level`` as one range query per possible cell, or None where grouping is faster.
-
-    ``points`` is clustered by cell, so the rows of a cell and its descendants
-    are one key range (``cell >= id AND cell < id || '~'``): reading the ranges
-    in id order gives the groups in order without the sort that
-    ``GROUP BY substr(cell, ...)`` needs (3-5x faster at levels 0-5 of a
-    million rows).  Rows still pending a merge (no index) are grouped apart, in
-    one pass, and added in: count, sum, min, max and the non-NULL count, from
-    which the mean is ``sum / count(column)``, as SQL's ``avg`` computes it.
-    """
-    roots = disjoint(under) if under is not None else [chr(ord("A") + f) for f in range(20)]
-    cells = sum(dggs.get_num_cells(level) // dggs.get_num_cells(len(c) - 1) for c in roots)
-    if cells > RANGE_CELLS:
-        return None
-    rows = store.conn.execute("SELECT coalesce(sum(rows_inserted), 0) FROM sources").fetchone()[0]
-    if rows < RANGE_ROWS_PER_CELL * cells:
-        return None
-    c = quote(column) if column else ""
-    parts = "count(*)" + (f", sum({c}), min({c}), max({c}), count({c})" if column else "")
-    extra: dict[str, tuple] = {}
-    if pending:
-        clause, params = ("1", {}) if under is None else _where(roots)
-        params["n"] = level + 1
-        sql = f"SELECT substr(cell, 1, :n), {parts} FROM points_pending WHERE {clause} GROUP BY 1"
-        extra = {r[0]: tuple(r[1:]) for r in store.conn.execute(sql, params)}
-    sql = f"SELECT {parts} FROM points WHERE cell >= ?1 AND cell < ?1 || '~'"
-    cursor = store.conn.cursor()
-    out: list[dict[str, Any]] = []
-    for cell in sorted(str(x) for x in dggs.uncompact_cells(roots, level)):
-        if limit is not None and len(out) >= limit:
-            break
-        row = tuple(cursor.execute(sql, (cell,)).fetchone())
-        if cell in extra:
-            try:
-                row = add_partials(row, extra[cell])
-            except TypeError:  # values of unlike types: leave the comparison to SQL
-                return None
-        if row[0]:  # only non-empty cells, as GROUP BY gives
-            out.append({"cell": cell, **_stats_of(row, stats)})
-    return out
-
-
-def _stats_of(row: tuple, stats: tuple[str, ...]) -> dict[str, Any]:
-    if len(row) == 1:
-        return {s: row[0] for s in stats}  # count only
-    n, total, low, high, valued = row
-    values = {"count": n, "sum": total, "min": low, "max": high,
-              "mean": total / valued if valued else None}
-    return {s: values[s] for s in stats}
-
-
-def aggregate(
-    store: Connection,
-    level: int,
-    column: str | None,
-    stats: Sequence[str],
-    cell: Any,
-    order_by: str | None,
-    descending: bool,
-    limit: int | None,
-) -> list[dict[str, Any]]:
-    """Roll the rows up to the cells of ``level`` (the work of :meth:`dggs.storage.CellStore.aggregate`).
-
-    Raises
-    ------
-    LevelError
-        If ``level`` is outside ``0..MAX_LEVEL``.
-    LevelMismatchError
-        If ``level`` is finer than the stored level, or ``cell`` is finer than ``level``.
-    DggsValueError
-        If a stat is unknown, needs a column that is missing or holds text, ``order_by`` is not one of
-        the stats, or ``limit`` is not a whole number >= 0.
-    """
-    stored = check_query_level(store, level)
-    if column is not None and not isinstance(column, str):
-        raise DggsValueError(f"column must be the name of a value column (str), not {column!r}")
-    stats = (stats,) if isinstance(stats, str) else tuple(stats)
-    unknown = [s for s in stats if s not in STATS]
-    if unknown or not stats:
-        raise DggsValueError(f"unknown stat(s) {unknown or stats!r}; choose from {', '.join(STATS)}")
-    columns = store.columns
-    if column is None:
-        if any(s != "count" for s in stats):
-            if stats != ("count", "sum", "mean", "min", "max"):
-                raise DggsValueError("stats other than 'count' need a column")
-            stats = ("count",)
-    else:
-        if column not in columns:
-            raise DggsValueError(
-                f"no value column {column!r} in {store.path}; columns are: {', '.join(columns) or '(none)'}"
-            )
-        if columns[column] == "TEXT" and {"sum", "mean"} & set(stats):
-            raise DggsValueError(f"column {column!r} holds text: sum and mean make no sense")
-    if order_by is not None and order_by not in stats:
-        raise DggsValueError(f"order_by must be one of the stats {stats}, not {order_by!r}")
-    if limit is not None and (isinstance(limit, bool) or not isinstance(limit, int) or limit < 0):
-        raise DggsValueError(f"limit must be a whole number >= 0, not {limit!r}")
-    params: dict[str, Any] = {"n": level + 1}
-    where = ""
-    if cell is not None:
-        found = normalise_cells(cell)
-        for c, cell_level in zip(found, check_cells(store, found), strict=True):
-            if cell_level > level:
-                raise LevelMismatchError(
-                    f"cell {c!r} is at level {cell_level}, finer than the roll-up level {level}"
-                )
-        if not found:
-            return []
-        clause, extra = _where(disjoint(found))
-        where = f"WHERE {clause}"
-        params.update(extra)
-    if stored is None:
-        return []
-    exprs = ", ".join(f"{STATS[s].format(c=quote(column) if column else '')} AS {quote(s)}" for s in stats)
-    order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
-    out = []
-    under = disjoint(found) if cell is not None else None  # partials kept in the file (rollup_keep):
-    if (kept := from_kept(store, level, column, stats, under, order_by, descending, limit)) is not None:
-        return kept
-    whole = cell is None and order_by is None  # a whole-store roll-up in cell order: remembered (rollup_memo)
-    before = state(store.conn) if whole else None
-    if before is not None and (answer := remembered(store, before, level, column, stats, limit)) is not None:
-        return answer
-    with store.snapshot() as table:
-        if order_by is None:
-            under = found if cell is not None else None
-            ranged = _rollup_by_ranges(store, level, under, column, stats, limit, table != "points")
-            if ranged is not None:
-                return ranged
-        if before is not None and table == "points":  # stream the groups instead of sorting every row
-            if (answer := streamed(store, before, level, column, stats, limit)) is not None:
-                return answer
-        sql = f"SELECT substr(cell, 1, :n) AS cell_, {exprs} FROM {table} {where} GROUP BY cell_ ORDER BY {order}"
-        if limit is not None:
-            sql += " LIMIT :limit"
-            params["limit"] = limit
-        keys = ("cell", *stats)  # the columns in order: cell_, then one per stat
-        out = [dict(zip(keys, row, strict=True)) for row in store.conn.execute(sql, params)]
-    return out
-
-
 def rows_under(store: Connection, cells: Sequence[str], level: int) -> list[dict[str, Any]]:
     """Rows under any of ``cells`` (all at ``level``): index range per cell."""
     if not len(cells):
@@ -398,3 +239,4 @@ def export_stats(column: str | None, stats: Sequence[str] | None) -> tuple[str, 
 def stat_columns(rows: list[dict[str, Any]], stats: Sequence[str]) -> dict[str, list[Any]]:
     """Rows of :func:`aggregate` as one list per stat (the columns of an export table)."""
     return {s: [row[s] for row in rows] for s in stats}
+

@@ -19,8 +19,15 @@ the nearest finer kept level's, in SQL (:mod:`dggs.storage.rollup_serve`).
 Only what is exact is read from them: counts, min and max always; sums and
 means of an INTEGER column while every partial sum is an integer and
 ``values x largest |value| < 2**53`` (where SQLite's own ``sum`` and ``avg``
-are exact, as :mod:`dggs.storage.rollup_memo` rules).  A REAL sum summed in
-another order differs from SQL's in its last bits, so those go to the rows.
+are exact, as :mod:`dggs.storage.rollup_memo` rules); sums and means of a
+REAL column always: a REAL column's partials also hold ``c:x``, the exact sum
+as an expansion (:mod:`dggs.storage.rollup_exact`), and ``c:sum`` is its
+correctly rounded value, the sum the rows give (:mod:`dggs.storage.rollup_columns`).
+Stores whose kept roll-ups predate ``c:x`` (no ``meta.rollup_exact_sums``,
+schema version 2) are read as they are, their REAL sums from the rows; their
+first write (an ingest batch, ``keep_rollups``, ``delete_source``) rebuilds
+the partials from the rows and marks them (schema version 3, which older
+dggs do not open: they would add REAL sums inexactly).
 Rows written with raw SQL, not through the store, are not seen: keep the
 levels again (which rebuilds) after such writes; :meth:`CellStore.check`
 compares the kept roll-ups with the rows.
@@ -29,7 +36,7 @@ compares the kept roll-ups with the rows.
 from __future__ import annotations
 
 import sqlite3
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -39,10 +46,14 @@ import dggs
 from dggs.errors import LevelError, LevelMismatchError, StorageError
 
 from .bulk import insert_many, max_variables
+from .rollup_exact import of_groups
 from .schema import column_types, quote
 
 __all__ = [
     "KEPT_KEY",
+    "EXACT_KEY",
+    "exact_name",
+    "exact_sums",
     "BatchPartials",
     "kept_levels",
     "check_levels",
@@ -51,11 +62,16 @@ __all__ = [
     "batch_partials",
     "add_partials",
     "numeric",
-    "verify",
+    "parts_of",
+    "part_names",
 ]
 
 #: The ``meta`` key listing the kept levels, finest first ("10,8").
 KEPT_KEY = "rollup_levels"
+#: The ``meta`` key set ("1") when the REAL partials hold exact sums (``c:x``); absent in older stores.
+EXACT_KEY = "rollup_exact_sums"
+#: The schema version of a store keeping roll-ups with exact REAL sums (2: kept roll-ups without them).
+KEPT_SCHEMA_VERSION = 3
 
 _TABLE = "rollups"
 #: SQLite's INTEGER range: a larger partial sum is stored as REAL (and so never served as exact).
@@ -70,6 +86,21 @@ def numeric(types: Mapping[str, str]) -> dict[str, str]:
 def part_names(column: str) -> tuple[str, str, str, str]:
     """The ``rollups`` columns of value column ``column``: non-NULL count, sum, min, max."""
     return (f"{column}:n", f"{column}:sum", f"{column}:min", f"{column}:max")
+
+
+def exact_name(column: str) -> str:
+    """The ``rollups`` column of a REAL value column's exact sum (an expansion BLOB)."""
+    return f"{column}:x"
+
+
+def parts_of(column: str, kind: str) -> tuple[str, ...]:
+    """Every ``rollups`` column of value column ``column``: n, sum, min, max, and for REAL the exact sum."""
+    return (*part_names(column), exact_name(column)) if kind == "REAL" else part_names(column)
+
+
+def exact_sums(conn: sqlite3.Connection) -> bool:
+    """Whether the kept REAL partials hold exact sums (stores keeping roll-ups before them do not)."""
+    return conn.execute("SELECT 1 FROM meta WHERE key = ? AND value = '1'", (EXACT_KEY,)).fetchone() is not None
 
 
 def kept_levels(conn: sqlite3.Connection) -> tuple[int, ...]:
@@ -113,6 +144,8 @@ def _ensure_table(conn: sqlite3.Connection, types: Mapping[str, str]) -> None:
     have = {row[1] for row in conn.execute(f"PRAGMA table_info({_TABLE})")}
     for column, kind in numeric(types).items():
         n, total, low, high = part_names(column)
+        if kind == "REAL" and exact_name(column) not in have:
+            conn.execute(f"ALTER TABLE {_TABLE} ADD COLUMN {quote(exact_name(column))} BLOB")
         if n in have:
             continue
         # min and max take the column's type, so SQLite stores them as it stores the values
@@ -132,21 +165,23 @@ def keep(conn: sqlite3.Connection, levels: tuple[int, ...]) -> None:
     """
     if not levels:
         conn.execute(f"DROP TABLE IF EXISTS {_TABLE}")
-        conn.execute("DELETE FROM meta WHERE key = ?", (KEPT_KEY,))
+        conn.execute("DELETE FROM meta WHERE key IN (?, ?)", (KEPT_KEY, EXACT_KEY))
         conn.execute("UPDATE meta SET value = '1' WHERE key = 'schema_version'")
         return
     conn.execute("INSERT OR REPLACE INTO meta (key, value) VALUES (?, ?)", (KEPT_KEY, ",".join(map(str, levels))))
-    conn.execute("UPDATE meta SET value = '2' WHERE key = 'schema_version'")
     rebuild(conn)
 
 
 def _from_rows(level: int, table: str, columns: Mapping[str, str], summed: str = "sum") -> str:
     """SELECT of one level's partials from the rows: cell, rows, then n, sum, min, max per column.
 
-    ``summed`` is ``sum``, or ``total`` (a REAL sum) where an integer sum overflows.
+    ``summed`` is ``sum``, or ``total`` (a REAL sum) where an integer sum overflows.  A REAL column's
+    sum is NULL there and its exact sum follows its max (``dggs_xsum``): :func:`_round_sums` fills the sum.
     """
     parts = "".join(
-        f", count({c}), {summed}({c}), min({c}), max({c})" for c in (quote(name) for name in columns)
+        f", count({c}), {summed}({c}), min({c}), max({c})" if kind != "REAL"
+        else f", count({c}), NULL, min({c}), max({c}), dggs_xsum({c})"  # the rounded sum: from the exact one
+        for c, kind in ((quote(name), kind) for name, kind in columns.items())
     )
     return f"SELECT substr(cell, 1, {level + 1}) AS c, count(*){parts} FROM {table} GROUP BY c"
 
@@ -161,7 +196,9 @@ def rebuild(conn: sqlite3.Connection) -> None:
     conn.execute(f"DELETE FROM {_TABLE}")
     pending = conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone() is not None
     table = "all_points" if pending else "points"
-    names = ", ".join(["cell", "rows", *(quote(p) for c in types for p in part_names(c))])
+    names = ", ".join(["cell", "rows", *(quote(p) for c, kind in types.items() for p in parts_of(c, kind))])
+    conn.execute("INSERT OR REPLACE INTO meta (key, value) VALUES (?, '1')", (EXACT_KEY,))
+    conn.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (str(KEPT_SCHEMA_VERSION),))
     for level in levels:
         insert = f"INSERT INTO {_TABLE} (level, {names}) SELECT {level}, * FROM ({{}})"
         try:
@@ -177,6 +214,15 @@ def rebuild(conn: sqlite3.Connection) -> None:
                     except sqlite3.OperationalError as again:
                         if "overflow" not in str(again):
                             raise
+    _round_sums(conn, types)
+
+
+def _round_sums(conn: sqlite3.Connection, types: Mapping[str, str]) -> None:
+    """Set each REAL column's kept sum to the correctly rounded value of its exact sum."""
+    for column, kind in types.items():
+        if kind == "REAL":
+            total, exact = quote(part_names(column)[1]), quote(exact_name(column))
+            conn.execute(f"UPDATE {_TABLE} SET {total} = dggs_xround({exact})")
 
 
 def _exact_sums(conn: sqlite3.Connection, level: int, table: str, column: str) -> None:
@@ -195,11 +241,12 @@ class BatchPartials:
     levels: tuple[int, ...]
     columns: tuple[str, ...]
     params: list[Any]
+    kinds: tuple[str, ...] = ()
 
     @property
     def width(self) -> int:
-        """Parameters a cell."""
-        return 3 + 4 * len(self.columns)
+        """Parameters a cell: level, cell, rows, then n, sum, min, max (and a REAL column's exact sum)."""
+        return 3 + sum(5 if kind == "REAL" else 4 for kind in self.kinds)
 
 
 def batch_partials(
@@ -209,7 +256,7 @@ def batch_partials(
     if not levels:
         return None
     columns = tuple(numeric(types))
-    out = BatchPartials(levels, columns, [])
+    out = BatchPartials(levels, columns, [], tuple(types[c] for c in columns))
     if not values:
         return out
     offset = width - len(types)
@@ -249,14 +296,14 @@ def _sorted_column(raw: list[Any], kind: str, order: np.ndarray | None) -> Any:
 
 def _reduce(col: Any, starts: np.ndarray) -> list[list[Any]]:
     """Non-NULL count, sum, min and max of each group of ``col`` (groups start at ``starts``)."""
-    if isinstance(col, np.ndarray) and col.dtype == np.float64:
+    if isinstance(col, np.ndarray) and col.dtype == np.float64:  # REAL: the sum exact (rollup_exact)
         valued = ~np.isnan(col)
         n = np.add.reduceat(valued.astype(np.int64), starts)
-        total = np.add.reduceat(np.where(valued, col, 0.0), starts)
         low, high = np.fmin.reduceat(col, starts), np.fmax.reduceat(col, starts)
         empty = n == 0
-        return [n.tolist(), *([None if e else v for v, e in zip(a.tolist(), empty.tolist(), strict=True)]
-                              for a in (total, low, high))]
+        exact, total = of_groups(col[valued], n)
+        return [n.tolist(), total, *([None if e else v for v, e in zip(a.tolist(), empty.tolist(), strict=True)]
+                                     for a in (low, high)), exact]
     if isinstance(col, np.ndarray):
         span = float(np.abs(col).max()) * col.shape[0] if col.size else 0.0
         if span < 2.0**62:  # no group's sum can overflow int64
@@ -296,16 +343,26 @@ def add_partials(conn: sqlite3.Connection, partials: BatchPartials | None, types
             f"{path}: the kept roll-up levels changed during this ingest (now {list(levels)}); "
             "run it again: it resumes after the rows already stored"
         )
+    if not exact_sums(conn):  # kept before exact REAL sums: rebuilt from the rows, this batch's included
+        rebuild(conn)
+        return
     _ensure_table(conn, types)
     names = ["level", "cell", "rows"]
     sets = ["rows = rows + excluded.rows"]
-    for column in partials.columns:
-        names += part_names(column)
+    for column, kind in zip(partials.columns, partials.kinds, strict=True):
+        names += parts_of(column, kind)
         n, total, low, high = (quote(p) for p in part_names(column))
+        if kind == "REAL":  # the exact sums added, the kept sum their rounded value
+            exact = quote(exact_name(column))
+            sets += [f"{exact} = dggs_xadd({exact}, excluded.{exact})",
+                     f"{total} = dggs_xround(dggs_xadd({exact}, excluded.{exact}))"]
+        else:
+            sets.append(
+                f"{total} = CASE WHEN excluded.{total} IS NULL THEN {total} WHEN {total} IS NULL "
+                f"THEN excluded.{total} ELSE {total} + excluded.{total} END"  # + past int64 gives a REAL
+            )
         sets += [
             f"{n} = {n} + excluded.{n}",
-            f"{total} = CASE WHEN excluded.{total} IS NULL THEN {total} WHEN {total} IS NULL "
-            f"THEN excluded.{total} ELSE {total} + excluded.{total} END",  # + past int64 gives a REAL
             f"{low} = coalesce(min({low}, excluded.{low}), {low}, excluded.{low})",
             f"{high} = coalesce(max({high}, excluded.{high}), {high}, excluded.{high})",
         ]
@@ -313,48 +370,3 @@ def add_partials(conn: sqlite3.Connection, partials: BatchPartials | None, types
     one = "(" + ", ".join("?" * len(names)) + ")"
     tail = " ON CONFLICT (level, cell) DO UPDATE SET " + ", ".join(sets)
     insert_many(conn, head, one, partials.params, partials.width, max_variables(conn), tail)
-
-
-def verify(conn: sqlite3.Connection, path: str) -> None:
-    """Raise StorageError unless every kept partial equals the one computed from the rows (REAL sums aside).
-
-    Raises
-    ------
-    StorageError
-        Naming the level, cell and values of the first difference.
-    """
-    levels = kept_levels(conn)
-    if not levels:
-        return
-    types = numeric(column_types(conn))
-    pending = conn.execute("SELECT 1 FROM points_pending LIMIT 1").fetchone() is not None
-    table = "all_points" if pending else "points"
-    names = ", ".join(["cell", "rows", *(quote(p) for c in types for p in part_names(c))])
-    for level in levels:
-        kept = conn.execute(f"SELECT {names} FROM {_TABLE} WHERE level = ? ORDER BY cell", (level,)).fetchall()
-        try:
-            fresh = conn.execute(_from_rows(level, table, types) + " ORDER BY c").fetchall()
-        except sqlite3.OperationalError as exc:  # an integer sum past int64: compare all but the sums
-            if "overflow" not in str(exc):
-                raise
-            fresh = conn.execute(_from_rows(level, table, types, "total") + " ORDER BY c").fetchall()
-            types = dict.fromkeys(types, "REAL")
-        sums = [2 + 4 * k + 1 for k, kind in enumerate(types.values()) if kind == "REAL"]
-        _compare(path, level, [_comparable(r, sums) for r in kept], [_comparable(r, sums) for r in fresh])
-
-
-def _comparable(row: Sequence[Any], sums: list[int]) -> tuple[Any, ...]:
-    """A row with its REAL sums left out (they depend on the order of addition)."""
-    return tuple(None if k in sums else v for k, v in enumerate(row))
-
-
-def _compare(path: str, level: int, kept: list[tuple], rows: list[tuple]) -> None:
-    if kept == rows:
-        return
-    first = next((k for k, (a, b) in enumerate(zip(kept, rows, strict=False)) if a != b), min(len(kept), len(rows)))
-    a = kept[first] if first < len(kept) else None
-    b = rows[first] if first < len(rows) else None
-    raise StorageError(
-        f"{path}: the kept roll-up of level {level} differs from the rows (kept {a}, from the rows {b}); "
-        "rows were changed outside the store: keep_rollups() again rebuilds it"
-    )

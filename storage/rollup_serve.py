@@ -5,7 +5,8 @@ coarser one regroups the nearest finer kept level's in SQL (``GROUP BY`` the
 id prefix over a few hundred thousand partials instead of every row).  The
 stats are SQL's own: ``count`` the rows, ``sum``/``min``/``max`` of the
 partials, ``mean`` as SQLite's ``avg`` computes it (the sum as a double over
-the non-NULL count).  Only exact answers are given (see the rules in
+the non-NULL count; a REAL column's sum the correctly rounded value of the
+kept exact sums, added exactly where regrouped).  Only exact answers are given (see the rules in
 :mod:`dggs.storage.rollup_keep`); anything else returns None and the caller
 reads the rows.
 """
@@ -14,14 +15,20 @@ from __future__ import annotations
 
 import json
 import sqlite3
-from itertools import repeat
 from typing import Any
 
 from .connection import Connection
-from .rollup_keep import kept_levels, numeric, part_names
+from .rollup_columns import Rolled
+from .rollup_exact import INEXACT
+from .rollup_keep import exact_name, exact_sums, kept_levels, numeric, part_names
 from .schema import quote
 
 __all__ = ["from_kept"]
+
+#: The partials are read only where a kept level has at most one cell for this many stored rows: else the
+#: rows, read as columns (:mod:`dggs.storage.rollup_columns`), are cheaper (1M rows to level 10, 815k cells:
+#: 0.27 s as columns against 1.8 s through the partials).
+KEPT_GAIN = 2
 
 #: Doubles hold integers exactly below this: SQLite's ``avg`` of integers is exact while every running sum is.
 _EXACT = 2**53
@@ -36,22 +43,27 @@ def from_kept(
     order_by: str | None,
     descending: bool,
     limit: int | None,
-) -> list[dict[str, Any]] | None:
-    """The roll-up to ``level`` from the kept partials, or None where they cannot give it exactly.
+) -> Rolled | None:
+    """The roll-up to ``level`` from the kept partials (as columns), or None where they cannot give it exactly.
 
     ``cells`` (disjoint, none finer than ``level``), ``order_by``, ``descending`` and
-    ``limit`` as :func:`dggs.storage.queries.aggregate` takes them.
+    ``limit`` as :func:`dggs.storage.rollup_query.aggregate` takes them.
     """
     conn = store.conn
     finer = [k for k in kept_levels(conn) if k >= level]
     if not finer:
         return None
     kept = min(finer)
+    partials = int(conn.execute("SELECT count(*) FROM rollups WHERE level = ?", (kept,)).fetchone()[0])
+    stored = int(conn.execute("SELECT coalesce(sum(rows_inserted), 0) FROM sources").fetchone()[0])
+    if partials * KEPT_GAIN > stored:
+        return None  # about a cell a row: reading the rows as columns is cheaper than the partials as rows
     valued = column is not None and set(stats) != {"count"}
+    summed = valued and bool({"sum", "mean"} & set(stats))
+    kind = numeric(store.columns).get(str(column)) if valued else None
     if valued:
-        kind = numeric(store.columns).get(str(column))
-        if kind is None or (kind == "REAL" and {"sum", "mean"} & set(stats)):
-            return None  # text min/max, and REAL sums: from the rows
+        if kind is None or (kind == "REAL" and summed and not exact_sums(conn)):
+            return None  # text min/max, and REAL sums of partials kept before exact sums: from the rows
     params: dict[str, Any] = {"kept": kept, "n": level + 1}
     where = "level = :kept"
     if cells is not None:
@@ -62,7 +74,9 @@ def from_kept(
     if valued:
         n, total, low, high = (quote(p) for p in part_names(str(column)))
         if grouped:
-            n, total, low, high = f"sum({n})", f"sum({total})", f"min({low})", f"max({high})"
+            exact = quote(exact_name(str(column)))  # REAL: the exact sums added, then rounded once
+            summed_sql = f"dggs_xround(dggs_xmerge({exact}))" if kind == "REAL" else f"sum({total})"
+            n, total, low, high = f"sum({n})", summed_sql, f"min({low})", f"max({high})"
         exprs.update({"sum": total, "mean": f"CAST({total} AS REAL) / {n}", "min": low, "max": high})
     picked = ", ".join(f"{exprs[s]} AS {quote(s)}" for s in stats)
     order = "1" if order_by is None else f"{quote(order_by)} {'DESC' if descending else 'ASC'}, 1"
@@ -71,7 +85,9 @@ def from_kept(
     if limit is not None:
         sql += f" LIMIT {int(limit)}"
     with store.snapshot():
-        if valued and {"sum", "mean"} & set(stats) and not _exact(conn, str(column), where, params):
+        if summed and kind == "INTEGER" and not _exact(conn, str(column), where, params):
+            return None
+        if summed and kind == "REAL" and _inexact_reals(conn, str(column), where, params):
             return None
         try:
             rows = conn.execute(sql, params).fetchall()
@@ -79,8 +95,16 @@ def from_kept(
             if "overflow" in str(exc):
                 return None  # a regrouped integer sum past int64: SQL on the rows says so
             raise
-    keys = ("cell", *stats)  # the columns selected, in order
-    return list(map(dict, map(zip, repeat(keys), rows)))  # a third faster than a comprehension of dict(zip())
+    return Rolled.from_tuples(rows, stats)  # the columns selected: cell, then the stats in order
+
+
+def _inexact_reals(conn: sqlite3.Connection, column: str, where: str, params: dict[str, Any]) -> bool:
+    """Whether a REAL column's kept exact sums include one past the double range (:data:`INEXACT`)."""
+    exact = quote(exact_name(column))
+    row = conn.execute(
+        f"SELECT 1 FROM rollups WHERE {where} AND {exact} = :inexact LIMIT 1", {**params, "inexact": INEXACT}
+    ).fetchone()
+    return row is not None
 
 
 def _exact(conn: sqlite3.Connection, column: str, where: str, params: dict[str, Any]) -> bool:

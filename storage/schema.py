@@ -54,8 +54,8 @@ __all__ = [
     "now",
 ]
 
-#: The newest layout this dggs reads; 2 keeps roll-ups (:mod:`dggs.storage.rollup_keep`), which older ones refuse.
-SCHEMA_VERSION = 2
+#: The newest layout this dggs reads: 2 keeps roll-ups, 3 with exact REAL sums (rollup_keep); older dggs refuse them.
+SCHEMA_VERSION = 3
 BASE_SCHEMA_VERSION = 1  # a new store's: readable by any dggs
 
 #: Coordinate reference system of the stored ``lat``/``lng`` columns.

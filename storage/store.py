@@ -28,7 +28,7 @@ from typing import Any
 import dggs
 from dggs.errors import DggsValueError
 
-from . import queries
+from . import queries, rollup_query
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
 from .projection import ProjectionMethods, settle
@@ -265,11 +265,12 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         order_by: str | None = None,
         descending: bool = True,
         limit: int | None = None,
-    ) -> list[dict[str, Any]]:
+        as_table: bool = False,
+    ) -> Any:
         """Roll stored rows up to ``level`` (the stored level or coarser).
 
-        Computed in SQL by id-prefix arithmetic:
-        ``GROUP BY substr(cell, 1, level + 1)``.
+        Exact as SQL gives it, but a REAL sum is the correctly rounded sum (``math.fsum``'s), a mean that
+        over the non-NULL count; read from kept roll-ups or columns (:mod:`dggs.storage.rollup_query`).
 
         Parameters
         ----------
@@ -288,11 +289,14 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
             Sort ``order_by`` largest first.
         limit : int, optional
             Return at most this many cells.
+        as_table : bool, default False
+            Columns (a pyarrow Table) instead of dicts: cheaper.
 
         Returns
         -------
-        list of dict
-            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell.
+        list of dict or pyarrow.Table
+            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell, or as columns
+            (``count`` int64, ``mean`` float64, the others the column's type).
 
         Raises
         ------
@@ -310,7 +314,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         ...     top[0]["count"], top[0]["sum"]
         (2, 12)
         """
-        return queries.aggregate(self._store, level, column, stats, cell, order_by, descending, limit)
+        return rollup_query.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
 
     @guarded
     def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:

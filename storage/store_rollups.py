@@ -33,20 +33,20 @@ class RollupMethods:
 
         A roll-up reads every row of the store (about 1 s a million rows).  A
         store keeping a level holds, per non-empty cell of it, the row count
-        and each numeric column's non-NULL count, sum, min and max, written
-        with each ingest batch in its transaction.  :meth:`aggregate`,
-        :meth:`export` and the server then read those: a kept level's cells,
-        or a coarser level regrouped from the nearest finer kept one.  Answers
-        are exactly what SQL gives from the rows; what the partials cannot give
-        exactly (sums and means of REAL columns, integer sums reaching 2**53)
-        is still read from the rows.
+        and each numeric column's non-NULL count, sum, min and max (a REAL
+        column's sum kept exactly), written with each ingest batch in its
+        transaction.  :meth:`aggregate`, :meth:`export` and the server then
+        read those: a kept level's cells, or a coarser level regrouped from the
+        nearest finer kept one.  Answers are exactly what the rows give (a REAL
+        sum the correctly rounded one); what the partials cannot give exactly
+        (integer sums reaching 2**53) is still read from the rows.
 
         The levels replace those kept before; the partials are built from the
         stored rows now (one pass a level), in one transaction.  ``[]`` stops
         keeping any.  Rows written with raw SQL (``store.db``) are not seen by
         the partials: call this again after such writes (:meth:`check` finds
-        the difference).  A store keeping roll-ups is schema version 2, which
-        a dggs older than 0.4 does not open.
+        the difference).  A store keeping roll-ups is schema version 3, which
+        a dggs that does not keep exact REAL sums does not open.
 
         Parameters
         ----------

@@ -77,3 +77,29 @@ def under(rows: list[dict], cells, level: int) -> list[dict]:
 
 def key(row: dict, columns=("cell", "row")) -> tuple:
     return tuple(row[c] for c in columns)
+
+
+class FSum:
+    """A SQLite aggregate: the correctly rounded sum of the non-NULL values (``math.fsum``), NULL if none.
+
+    The rule of a REAL column's sum (:mod:`dggs.storage.rollup_columns`), for oracles written in SQL:
+    ``fsum(c)`` for its sum and ``fsum(c) / count(c)`` for its mean.
+    """
+
+    def __init__(self) -> None:
+        self.values: list[float] = []
+
+    def step(self, value: Any) -> None:
+        if value is not None:
+            self.values.append(value)
+
+    def finalize(self) -> float | None:
+        return math.fsum(self.values) if self.values else None
+
+
+def stat_sql(stat: str, column: str | None, kind: str | None) -> str:
+    """The SQL of ``stat`` over ``column`` as the store's roll-ups define it (REAL sums: correctly rounded)."""
+    c = f'"{column}"'
+    if kind == "REAL" and stat in ("sum", "mean"):
+        return f"fsum({c})" if stat == "sum" else f"fsum({c}) / count({c})"
+    return {"count": "count(*)", "sum": f"sum({c})", "mean": f"avg({c})", "min": f"min({c})", "max": f"max({c})"}[stat]

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from shapely.geometry import Polygon, box
 
 import dggs
-from dggs.storage import CellStore, queries
+from dggs.storage import CellStore, rollup_query
 
 from .helpers import brute_aggregate, clustered_points, expected_rows, under
 
@@ -86,8 +86,8 @@ def test_queries_match_brute_force(case, data):
         # roll-up at every level up to the stored one, by either plan: one range query per cell
         # (forced here; chosen for many rows a cell) or one GROUP BY
         ranged = data.draw(st.booleans())
-        saved = queries.RANGE_ROWS_PER_CELL
-        queries.RANGE_ROWS_PER_CELL = 0 if ranged else 10**12
+        saved = rollup_query.RANGE_ROWS_PER_CELL
+        rollup_query.RANGE_ROWS_PER_CELL = 0 if ranged else 10**12
         try:
             for agg_level in sorted({0, level, data.draw(st.integers(0, level))}):
                 for column in ("v", "w"):
@@ -109,7 +109,7 @@ def test_queries_match_brute_force(case, data):
                     limit = data.draw(st.integers(0, 4))
                     assert store.aggregate(agg_level, column, limit=limit) == got[:limit]
         finally:
-            queries.RANGE_ROWS_PER_CELL = saved
+            rollup_query.RANGE_ROWS_PER_CELL = saved
 
         # within: rows under the cells of a polygon
         lat0, lng0 = data.draw(st.floats(-60, 60)), data.draw(st.floats(-170, 150))
@@ -254,9 +254,9 @@ def test_range_plan_equals_the_group_by_plan(tmp_path, monkeypatch, pending):
                 for cell in (None, ["C", "D4"]):
                     if cell is not None and level == 0:
                         continue
-                    monkeypatch.setattr(queries, "RANGE_CELLS", 40_000)
+                    monkeypatch.setattr(rollup_query, "RANGE_CELLS", 40_000)
                     ranged = store.aggregate(level, column, stats, cell=cell)
-                    monkeypatch.setattr(queries, "RANGE_CELLS", -1)
+                    monkeypatch.setattr(rollup_query, "RANGE_CELLS", -1)
                     grouped = store.aggregate(level, column, stats, cell=cell)
                     assert [r["cell"] for r in ranged] == [r["cell"] for r in grouped]
                     for a, b in zip(ranged, grouped, strict=True):

@@ -1,7 +1,7 @@
 """Roll-ups streamed by group starts and remembered per file state give what SQL's GROUP BY gives (issue 18).
 
 Oracle: the plain ``GROUP BY substr(cell, 1, level + 1)`` query on a separate
-sqlite3 connection, compared value for value (floats exactly), whatever
+sqlite3 connection (REAL sums correctly rounded: ``fsum``), compared value for value (floats exactly), whatever
 roll-ups came before on the store's own connection.
 """
 
@@ -17,14 +17,16 @@ from hypothesis import strategies as st
 from dggs.errors import DggsError
 from dggs.storage import CellStore
 
+from .helpers import FSum, stat_sql
+
 STATS = ("count", "sum", "mean", "min", "max")
-SQL = {"count": "count(*)", "sum": "sum({c})", "mean": "avg({c})", "min": "min({c})", "max": "max({c})"}
 
 
 def _oracle(path, level, column, stats):
     con = sqlite3.connect(path)
+    con.create_aggregate("fsum", 1, FSum)
     try:
-        exprs = ", ".join(SQL[s].format(c=f'"{column}"') for s in stats)
+        exprs = ", ".join(stat_sql(s, column, "REAL" if column == "r" else None) for s in stats)
         sql = f"SELECT substr(cell, 1, ?), {exprs} FROM all_points GROUP BY 1 ORDER BY 1"
         return [dict(zip(("cell", *stats), row, strict=True)) for row in con.execute(sql, (level + 1,))]
     finally:

@@ -14,7 +14,7 @@ def test_new_store_schema_and_metadata(db_path):
     with CellStore(db_path) as store:
         meta = store.meta
         assert meta["schema_version"] == "1"  # a new store: readable by a dggs that knows version 1 only
-        assert SCHEMA_VERSION == 2  # what this dggs reads: 2 is a store keeping roll-ups
+        assert SCHEMA_VERSION == 3  # what this dggs reads: 2 is a store keeping roll-ups, 3 with exact REAL sums
         assert meta["crs"] == "EPSG:4326"
         assert meta["created"] and meta["updated"] and meta["dggs_version"]
         assert store.level is None
