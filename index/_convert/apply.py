@@ -26,19 +26,19 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from dggs.errors import DggsValueError
 
+from .._kernel.scalar import Lone, lone, lone_point
 from . import strings
 from .cells_in import cells_in
 from .cells_out import cells_out, cells_out_flat
 from .coords import coords_in
 from .kind import Kind, as_form
-from .strings import valid_id
 from .values import values_out
 
 __all__ = [
@@ -65,7 +65,9 @@ class Entry:
     """A compiled single-id entry point of the core (:mod:`dggs._core`), called as it is.
 
     The binding's functions take the lone ``str``, ``int`` or float point themselves (no type dispatch, no
-    array), so ``entry.call`` is the function itself; the class names the role in an :class:`Op`.
+    array), so ``entry.call`` is the function itself; the class names the role in an :class:`Op`, which binds
+    its entries once into a compiled :class:`~dggs.index._kernel.scalar.Lone` (the core's own entries are then
+    run by :func:`~dggs.index._kernel.scalar.lone` without a Python call between).
 
     Parameters
     ----------
@@ -105,6 +107,14 @@ class Op:
     nulls: bool = False
     one_str: Entry | None = None
     one_int: Entry | None = None
+    #: The entries bound for the compiled lone-id dispatch (None without entries).
+    lone: Lone | None = field(init=False, default=None, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if self.one_str is not None or self.one_int is not None:
+            lone = Lone(None if self.one_str is None else self.one_str.call,
+                        None if self.one_int is None else self.one_int.call)
+            object.__setattr__(self, "lone", lone)
 
 
 def lone_id(obj: Any) -> int:
@@ -171,17 +181,17 @@ def apply(op: Op, cells: Any, *args: Any) -> Any:
     InvalidCellError
         An id is malformed (the message names it and its index).
     """
-    t = type(cells)
-    e = op.one_str if t is str else op.one_int if t is int and 0 < cells < _INT64_END else None
-    if e is not None:  # a compiled entry: no codec, no dispatch; a miss is "", 0 or NaNs
-        r0 = e.call(cells, *args)
-        if (r0[0] == r0[0]) if type(r0) is tuple else r0:
+    d = op.lone
+    if d is not None:  # the compiled entries, one C call: no codec, no dispatch here; None is a miss
+        r0 = lone(d, cells, args)
+        if r0 is not None:
             return r0
     one = op.one
     if one is not None:  # the single-id fast path, written out (each extra Python call costs 60-100 ns here)
+        t = type(cells)
         v = strings.parse_str(cells) if t is str else cells if t is int and 0 < cells < _INT64_END else 0
         if v:
-            r: Any = v if one is valid_id and t is str else one(v, *args)  # a parsed string is valid already
+            r: Any = one(v, *args)
             out = op.out
             as_str = t is str if op.form is None else op.form == "str"
             if out is CELL:
@@ -272,10 +282,10 @@ def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
         Coordinates that are not numbers, or shapes that do not broadcast
         (``op.many`` names points off the globe).
     """
-    e = op.one_str or op.one_int
-    if e is not None and type(lat) is float and type(lng) is float:  # a compiled entry, the answer in its form
-        r = e.call(lat, lng, *args)
-        if r:
+    d = op.lone
+    if d is not None:  # a compiled entry, one C call, the answer in its form (None: a miss)
+        r = lone_point(d, lat, lng, args)
+        if r is not None:
             return r
     one = op.one
     if one is not None and type(lat) in _PLAIN_NUMBERS and type(lng) in _PLAIN_NUMBERS:
