@@ -7,7 +7,9 @@ value.  Each is the int kernel between that parser and :func:`format_one`.
 
 The verbs name these in an :class:`dggs.index._convert.apply.Op`'s entries; :class:`Lone` binds an op's two
 entries once, and :func:`lone` (:func:`lone_point` for a point) runs the one that fits a lone ``str`` or ``int``
-as one C call, the core's functions called directly, answering None for a miss.
+as one C call, the core's functions called directly, answering None for a miss; :func:`lone_apply` and
+:func:`lone_apply_points` are apply's and apply_points' whole fast path (the Op's entries, else the general path
+they are given), and :func:`plain_level` check_level's (a plain int level, else the check it is given).
 
 Examples
 --------
@@ -29,14 +31,17 @@ from dggs._core import (
     format_one,
     int_if_valid,
     lone,
+    lone_apply,
+    lone_apply_points,
     lone_point,
     parent_str,
     parse_one,
+    plain_level,
     point_str,
     str_if_valid,
 )
 
 __all__ = [
-    "Lone", "centre_str", "format_one", "int_if_valid", "lone", "lone_point", "parent_str", "parse_one", "point_str",
-    "str_if_valid",
+    "Lone", "centre_str", "format_one", "int_if_valid", "lone", "lone_apply", "lone_apply_points", "lone_point",
+    "parent_str", "parse_one", "plain_level", "point_str", "str_if_valid",
 ]  # fmt: skip

@@ -8,6 +8,9 @@
 from cpython.long cimport PyLong_AsLongLongAndOverflow
 from libc.math cimport isnan
 
+cdef extern from "bits.h" nogil:
+    int DGGS_MAX_LEVEL
+
 cdef enum:
     LONE_NONE = 0       # no entry for this type
     LONE_CALL = 1       # a Python function: called as it is
@@ -72,6 +75,10 @@ cdef object _lone_call(object f, object obj, tuple args):
 
 def lone(Lone d not None, obj, tuple args not None):
     """The answer of ``d``'s entry for a lone plain ``str`` or positive int64 ``obj``, or None for a miss."""
+    return _lone(d, obj, args)
+
+
+cdef object _lone(Lone d, object obj, tuple args):
     cdef type t = type(obj)
     cdef int code, overflow = 0
     cdef long long v = 0
@@ -130,6 +137,10 @@ def lone(Lone d not None, obj, tuple args not None):
 
 def lone_point(Lone d not None, lat, lng, tuple args not None):
     """The id of the cell holding a point of two plain floats, in the form of ``d``'s one entry, or None."""
+    return _lone_point(d, lat, lng, args)
+
+
+cdef object _lone_point(Lone d, object lat, object lng, tuple args):
     cdef uint64_t c
     cdef int code = d.str_code if d.str_code != LONE_NONE else d.int_code
     if type(lat) is not float or type(lng) is not float or code == LONE_NONE:
@@ -142,3 +153,39 @@ def lone_point(Lone d not None, lat, lng, tuple args not None):
     f = d.one_str if d.str_code != LONE_NONE else d.one_int
     r = f(lat, lng, *args)
     return r if r else None
+
+
+
+def lone_apply(general, op, cells, *args):
+    """``op``'s compiled entries for a lone id (:func:`lone`), else ``general(op, cells, *args)``.
+
+    apply's fast path as one C call (index/_convert/apply.py binds ``general``, its general path): ``op.lone``
+    is the op's :class:`Lone`, or None for an op without entries.
+    """
+    d = op.lone
+    if d is not None:
+        r = _lone(<Lone?>d, cells, args)
+        if r is not None:
+            return r
+    return general(op, cells, *args)
+
+
+def lone_apply_points(general, op, lat, lng, *args):
+    """As :func:`lone_apply` for a point (:func:`lone_point`), else ``general(op, lat, lng, *args)``."""
+    d = op.lone
+    if d is not None:
+        r = _lone_point(<Lone?>d, lat, lng, args)
+        if r is not None:
+            return r
+    return general(op, lat, lng, *args)
+
+
+def plain_level(general, level, name="level"):
+    """``level`` itself if it is a plain int 0..28 (MAX_LEVEL), else ``general(level, name)``, which checks it."""
+    cdef int overflow = 0
+    cdef long long v
+    if type(level) is int:
+        v = PyLong_AsLongLongAndOverflow(level, &overflow)
+        if not overflow and 0 <= v <= DGGS_MAX_LEVEL:
+            return level
+    return general(level, name)
