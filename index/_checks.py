@@ -7,7 +7,8 @@ verbs call them before any work, on every path.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -15,6 +16,7 @@ import numpy as np
 from dggs.errors import DggsValueError, LevelError, TooManyCellsError
 
 from ._kernel.bits import MAX_LEVEL
+from ._kernel.scalar import plain_level
 
 __all__ = ["MAX_CELLS", "MAX_POINTS", "K_LIMIT", "check_point_count", "check_densify", "check_k", "check_level", "check_max_cells", "check_radius", "check_size", "property_rows",
            "check_projection", "is_choice"]
@@ -34,8 +36,8 @@ def _is_int(value: Any) -> bool:
     return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
 
 
-def check_level(level: Any, name: str = "level") -> int:
-    """Return ``level`` as an int, or raise :class:`LevelError` naming it.
+def _check_level(level: Any, name: str = "level") -> int:
+    """Return ``level`` as an int, or raise :class:`LevelError` naming it (:func:`check_level`'s whole check).
 
     Python and numpy integers are accepted; bools, floats and strings are not.
 
@@ -56,6 +58,12 @@ def check_level(level: Any, name: str = "level") -> int:
     if not 0 <= level <= MAX_LEVEL:
         raise LevelError(f"{name} {level!r} is out of range 0..{MAX_LEVEL}")
     return int(level)
+
+
+#: Return ``level`` as an int, or raise :class:`LevelError` naming it: a plain int 0..MAX_LEVEL in one C call
+#: (the verbs' common case), anything else through :func:`_check_level`.
+check_level: Callable[..., int] = partial(plain_level, _check_level)
+check_level.__doc__ = _check_level.__doc__
 
 
 def check_max_cells(max_cells: Any) -> int:

@@ -19,8 +19,8 @@ from typing import Any
 import numpy as np
 
 from ._checks import check_level
-from ._convert import CELL, Op, apply
-from ._convert.strings import valid_id
+from ._convert import CELL, Entry, Op, apply
+from ._kernel import scalar as ks
 from ._kernel.bits import MAX_LEVEL
 
 __all__ = ["MAX_LEVEL", "FACE_LETTERS", "check_level", "int_to_str", "str_to_int"]
@@ -33,8 +33,11 @@ def _same(ids: np.ndarray) -> np.ndarray:
     return ids
 
 
-_TO_INT = Op(many=_same, out=CELL, one=valid_id, form="int")
-_TO_STR = Op(many=_same, out=CELL, one=valid_id, form="str", nulls=True)
+# a lone id goes through the core's codec (a valid id is its answer unchanged, or its other form); a miss takes
+# the general path, which raises naming it
+_TO_INT = Op(many=_same, out=CELL, form="int", one_str=Entry(ks.parse_one), one_int=Entry(ks.int_if_valid))
+_TO_STR = Op(many=_same, out=CELL, form="str", nulls=True, one_str=Entry(ks.str_if_valid),
+             one_int=Entry(ks.format_one))
 
 
 def str_to_int(ids: Any) -> Any:

@@ -26,19 +26,20 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from dggs.errors import DggsValueError
 
+from .._kernel.scalar import Lone, lone_apply, lone_apply_points
 from . import strings
 from .cells_in import cells_in
 from .cells_out import cells_out, cells_out_flat
 from .coords import coords_in
 from .kind import Kind, as_form
-from .strings import valid_id
 from .values import values_out
 
 __all__ = [
@@ -65,7 +66,9 @@ class Entry:
     """A compiled single-id entry point of the core (:mod:`dggs._core`), called as it is.
 
     The binding's functions take the lone ``str``, ``int`` or float point themselves (no type dispatch, no
-    array), so ``entry.call`` is the function itself; the class names the role in an :class:`Op`.
+    array), so ``entry.call`` is the function itself; the class names the role in an :class:`Op`, which binds
+    its entries once into a compiled :class:`~dggs.index._kernel.scalar.Lone` (the core's own entries are then
+    run by :func:`~dggs.index._kernel.scalar.lone` without a Python call between).
 
     Parameters
     ----------
@@ -105,6 +108,14 @@ class Op:
     nulls: bool = False
     one_str: Entry | None = None
     one_int: Entry | None = None
+    #: The entries bound for the compiled lone-id dispatch (None without entries).
+    lone: Lone | None = field(init=False, default=None, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if self.one_str is not None or self.one_int is not None:
+            lone = Lone(None if self.one_str is None else self.one_str.call,
+                        None if self.one_int is None else self.one_int.call)
+            object.__setattr__(self, "lone", lone)
 
 
 def lone_id(obj: Any) -> int:
@@ -149,8 +160,32 @@ def _out(res: Any, kind: Kind, out: str) -> Any:
     return values_out(res, kind, res.shape[1:], rows=out == VALUES)
 
 
-def apply(op: Op, cells: Any, *args: Any) -> Any:
-    """Run ``op`` over ids in any container, giving back the same kind.
+def _apply(op: Op, cells: Any, *args: Any) -> Any:
+    """:func:`apply` past the compiled entries, which missed or are none: ``op.one``, then the containers."""
+    one = op.one
+    if one is not None:  # the single-id fast path, written out (each extra Python call costs 60-100 ns here)
+        t = type(cells)
+        v = strings.parse_str(cells) if t is str else cells if t is int and 0 < cells < _INT64_END else 0
+        if v:
+            r: Any = one(v, *args)
+            out = op.out
+            as_str = t is str if op.form is None else op.form == "str"
+            if out is CELL:
+                if r:
+                    return strings.format_int(r) if as_str else int(r)
+            elif out is ROWS or out is FLAT:
+                if r.size:
+                    return [strings.format_int(c) for c in r.tolist()] if as_str else r.tolist()
+            elif r is not None and (r[0] == r[0] if type(r) is tuple else r == r):
+                return r  # a value (a number, a pair of floats); None or NaN is a miss (a tuple equals itself)
+    ids, kind = cells_in(cells, nulls=op.nulls)
+    return _out(op.many(ids, *args), as_form(kind, op.form) if op.form else kind, op.out)
+
+
+#: Run ``op`` over ids in any container, giving back the same kind (the compiled entries first, as one C call,
+#: then :func:`_apply`).
+apply: Callable[..., Any] = partial(lone_apply, _apply)
+apply.__doc__ = """Run ``op`` over ids in any container, giving back the same kind.
 
     Parameters
     ----------
@@ -171,29 +206,6 @@ def apply(op: Op, cells: Any, *args: Any) -> Any:
     InvalidCellError
         An id is malformed (the message names it and its index).
     """
-    t = type(cells)
-    e = op.one_str if t is str else op.one_int if t is int and 0 < cells < _INT64_END else None
-    if e is not None:  # a compiled entry: no codec, no dispatch; a miss is "", 0 or NaNs
-        r0 = e.call(cells, *args)
-        if (r0[0] == r0[0]) if type(r0) is tuple else r0:
-            return r0
-    one = op.one
-    if one is not None:  # the single-id fast path, written out (each extra Python call costs 60-100 ns here)
-        v = strings.parse_str(cells) if t is str else cells if t is int and 0 < cells < _INT64_END else 0
-        if v:
-            r: Any = v if one is valid_id and t is str else one(v, *args)  # a parsed string is valid already
-            out = op.out
-            as_str = t is str if op.form is None else op.form == "str"
-            if out is CELL:
-                if r:
-                    return strings.format_int(r) if as_str else int(r)
-            elif out is ROWS or out is FLAT:
-                if r.size:
-                    return [strings.format_int(c) for c in r.tolist()] if as_str else r.tolist()
-            elif r is not None and (r[0] == r[0] if type(r) is tuple else r == r):
-                return r  # a value (a number, a pair of floats); None or NaN is a miss (a tuple equals itself)
-    ids, kind = cells_in(cells, nulls=op.nulls)
-    return _out(op.many(ids, *args), as_form(kind, op.form) if op.form else kind, op.out)
 
 
 def pair_kind(ka: Kind, kb: Kind, shape: tuple[int, ...]) -> Kind:
@@ -259,8 +271,23 @@ def apply_pair(op: Op, a: Any, b: Any, *args: Any) -> Any:
     return _out(op.many(ia, ib, *args), kind, op.out)
 
 
-def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
-    """Run ``op`` over points, giving back ids (or values) in the container the coordinates came in.
+def _apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
+    """:func:`apply_points` past the compiled entry, which missed or is none: ``op.one``, then the containers."""
+    one = op.one
+    if one is not None and type(lat) in _PLAIN_NUMBERS and type(lng) in _PLAIN_NUMBERS:
+        try:
+            r = one(float(lat), float(lng), *args)  # an id (0: a point the general path explains)
+        except OverflowError:  # an int too large for a float: the general path names it
+            r = 0
+        if r:
+            return int(r) if op.form == "int" else strings.format_int(r)
+    lat_f, lng_f, kind = coords_in(lat, lng)
+    return _out(op.many(lat_f, lng_f, *args), as_form(kind, op.form or "str"), op.out)
+
+
+#: Run ``op`` over points (the compiled entry first, as one C call, then :func:`_apply_points`).
+apply_points: Callable[..., Any] = partial(lone_apply_points, _apply_points)
+apply_points.__doc__ = """Run ``op`` over points, giving back ids (or values) in the container the coordinates came in.
 
     ``op.one_str`` or ``op.one_int`` (if any) takes a point of two Python floats and gives the
     id in that form; ``op.one`` (if any) takes one (lat, lng) pair of Python floats and gives an
@@ -272,18 +299,3 @@ def apply_points(op: Op, lat: Any, lng: Any, *args: Any) -> Any:
         Coordinates that are not numbers, or shapes that do not broadcast
         (``op.many`` names points off the globe).
     """
-    e = op.one_str or op.one_int
-    if e is not None and type(lat) is float and type(lng) is float:  # a compiled entry, the answer in its form
-        r = e.call(lat, lng, *args)
-        if r:
-            return r
-    one = op.one
-    if one is not None and type(lat) in _PLAIN_NUMBERS and type(lng) in _PLAIN_NUMBERS:
-        try:
-            r = one(float(lat), float(lng), *args)  # an id (0: a point the general path explains)
-        except OverflowError:  # an int too large for a float: the general path names it
-            r = 0
-        if r:
-            return int(r) if op.form == "int" else strings.format_int(r)
-    lat_f, lng_f, kind = coords_in(lat, lng)
-    return _out(op.many(lat_f, lng_f, *args), as_form(kind, op.form or "str"), op.out)
