@@ -101,7 +101,7 @@ def cells(ctx: Context, level: int, bbox_raw: str | None, column: str | None, st
             return Response(np.zeros(1, dtype="<u8").tobytes(), media_type=UINT64)
         return Response(feature_collection([], [], [], {"numberReturned": 0}), media_type=GEOJSON)
     data = ctx.reader.level_data(level, column, stat)
-    if fmt == "uint64" and covers_world(bbox) and len(data) <= ctx.max_features:
+    if fmt == "uint64" and (bbox is None or covers_world(bbox)) and len(data) <= ctx.max_features:
         # the whole world as ids: no polygon to build (the page draws them)
         return Response(ids_body(data.ids, data.counts, list(data.values)), media_type=UINT64)
     found = cells_meeting_bbox(ctx.reader, data, bbox, ctx.max_features)
