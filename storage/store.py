@@ -260,11 +260,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         level: int,
         column: str | None = None,
         stats: Sequence[str] = ("count", "sum", "mean", "min", "max"),
-        *,
-        cell: Any = None,
-        order_by: str | None = None,
-        descending: bool = True,
-        limit: int | None = None,
+        *, cell: Any = None, order_by: str | None = None, descending: bool = True, limit: int | None = None,
         as_table: bool = False,
     ) -> Any:
         """Roll stored rows up to ``level`` (the stored level or coarser).
