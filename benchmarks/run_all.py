@@ -31,7 +31,7 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-TIMEOUT = {"bench_core.py": 1200, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_ingest.py": 400, "bench_serve.py": 300,
+TIMEOUT = {"bench_core.py": 1200, "bench_point_stages.py": 300, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_ingest.py": 400, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
            "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600,
            "bench_dissolve.py": 900, "bench_scale.py": 2400,
@@ -80,6 +80,7 @@ def main() -> None:
         runs = [
             # the compiled core's targets (issue 31): a fresh install's first calls, single calls, point location
             ("bench_core.py", ["--quick"] if args.quick else [], thread_env(False)),
+            ("bench_point_stages.py", ["--quick"] if args.quick else [], thread_env(True)),
             # bench_kernel sets the thread variables itself, per worker
             ("bench_kernel.py", ["--json", str(kjson)] + (["--quick"] if args.quick else []), thread_env(False)),
             # one core for both sides (bench_snyder's own thread options are off here)
