@@ -238,12 +238,19 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
 
 
 
+#: Cells per Parquet row group of :func:`write_geoparquet`: cells in id order are near each other, so each row
+#: group's ``bbox`` statistics cover a small area and a reader filtering by bbox skips the others (GeoParquet 1.1
+#: "Bounding Box Columns"); one group per file would let nothing be skipped.
+ROW_GROUP_CELLS = 8192
+
+
 def write_geoparquet(table: pa.Table, path: str | os.PathLike[str], **kwargs: Any) -> None:
     """Write a table of :func:`cells_to_table` to a GeoParquet file, whole or not at all.
 
     The file is written under a temporary name in the same folder and
     renamed over ``path`` when complete.  ``kwargs`` go to
-    ``pyarrow.parquet.write_table`` (default compression zstd).
+    ``pyarrow.parquet.write_table`` (default compression zstd, and row groups
+    of :data:`ROW_GROUP_CELLS` cells so that the bbox covering's statistics can prune).
 
     Raises
     ------
@@ -257,6 +264,7 @@ def write_geoparquet(table: pa.Table, path: str | os.PathLike[str], **kwargs: An
     from dggs.storage.atomic import atomic_path
 
     kwargs.setdefault("compression", "zstd")
+    kwargs.setdefault("row_group_size", ROW_GROUP_CELLS)
     with atomic_path(path, keep_name=True) as tmp:
         pq.write_table(table, tmp, **kwargs)
 

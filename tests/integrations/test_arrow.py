@@ -172,6 +172,47 @@ def test_duckdb_reads_it_back_identically(parquet_file):
     assert n == int((bounds[:, 2] < -170).sum())
 
 
+def test_row_groups_let_a_bbox_filter_skip_most_of_the_file(tmp_path):
+    """Issue 36: a file under a million cells was one row group, so the bbox covering's statistics pruned nothing.
+    pyarrow is the referee: each row group's bbox statistics bound its cells, and a dataset filter on the bbox
+    columns reads only the groups that can hold a match, the same rows as filtering every row."""
+    import pyarrow.compute as pc
+    import pyarrow.dataset as ds
+    import pyarrow.parquet as pq
+
+    from dggs.arrow import ROW_GROUP_CELLS
+
+    cells = dggs.uncompact_cells(dggs.get_base_cells(), 5)  # 29,160 cells in id order, every face
+    path = tmp_path / "cells.parquet"
+    write_geoparquet(cells_to_table(cells), path)
+    meta = pq.ParquetFile(path).metadata
+    assert meta.num_row_groups == -(-len(cells) // ROW_GROUP_CELLS) > 1
+    names = [meta.schema.column(i).path for i in range(meta.num_columns)]
+    xmin, xmax = names.index("bbox.xmin"), names.index("bbox.xmax")
+    table = pq.read_table(path)
+    start = 0
+    for g in range(meta.num_row_groups):
+        group = meta.row_group(g)
+        rows = table.slice(start, group.num_rows)
+        lo, hi = group.column(xmin).statistics, group.column(xmax).statistics
+        assert lo.has_min_max and hi.has_min_max
+        assert lo.min == pc.min(rows["bbox"].combine_chunks().field("xmin")).as_py()
+        assert hi.max == pc.max(rows["bbox"].combine_chunks().field("xmax")).as_py()
+        start += group.num_rows
+    where = (ds.field("bbox", "xmax") >= 10.0) & (ds.field("bbox", "xmin") <= 20.0) & \
+        (ds.field("bbox", "ymax") >= 10.0) & (ds.field("bbox", "ymin") <= 20.0)
+    fragment = next(ds.dataset(path).get_fragments())
+    kept = fragment.split_by_row_group(filter=where)
+    assert 0 < len(kept) < meta.num_row_groups  # the statistics skip groups
+    got = ds.dataset(path).to_table(filter=where)["cell"].to_pylist()
+    box = table["bbox"].combine_chunks()
+    mask = (pc.greater_equal(box.field("xmax"), 10.0).to_numpy(zero_copy_only=False)
+            & pc.less_equal(box.field("xmin"), 20.0).to_numpy(zero_copy_only=False)
+            & pc.greater_equal(box.field("ymax"), 10.0).to_numpy(zero_copy_only=False)
+            & pc.less_equal(box.field("ymin"), 20.0).to_numpy(zero_copy_only=False))
+    assert got == [c for c, m in zip(table["cell"].to_pylist(), mask, strict=True) if m] and got
+
+
 def test_write_is_atomic(tmp_path, monkeypatch):
     path = tmp_path / "cells.parquet"
     write_geoparquet(cells_to_table(["C4"]), path)
