@@ -34,7 +34,15 @@ cdef extern from "codec.h" nogil:
     void dggs_fill_codes_u8(const uint64_t *ids, int64_t n, uint8_t *out, int64_t width)
     void dggs_fill_codes_u32(const uint64_t *ids, int64_t n, uint32_t *out, int64_t width)
     int dggs_format_one(uint64_t cell, char *buf)
-    int64_t dggs_codec_parent_of(int64_t cell, int64_t level)
+
+cdef extern from "hierarchy.h" nogil:
+    int64_t dggs_parent_of(int64_t cell, int level)
+
+
+cdef inline int _codec_level(int64_t level) noexcept nogil:
+    """A parent level for dggs_parent_of, with the same answers for every int64: negative is one level up, and
+    past the deepest level (29 or more) no cell has a parent there."""
+    return -1 if level < 0 else (<int>level if level <= 29 else 29)
 
 
 cdef object _codec_codes(codes, int ndim):
@@ -245,7 +253,7 @@ def format_one(cell):
 
 def parent_str(str s not None, int64_t level):
     """The ancestor of string id ``s`` at ``level`` (-1: one level up), or "" where there is none."""
-    return _codec_format(<uint64_t>dggs_codec_parent_of(<int64_t>_codec_parse_str(s), level))
+    return _codec_format(<uint64_t>dggs_parent_of(<int64_t>_codec_parse_str(s), _codec_level(level)))
 
 
 def point_str(double lat, double lng, int level):

@@ -96,7 +96,7 @@ cdef object _lone(Lone d, object obj, tuple args):
             return None
         if code == LONE_PARENT:
             level = _lone_level(args)
-            s = _codec_format(<uint64_t>dggs_codec_parent_of(<int64_t>c, level))
+            s = _codec_format(<uint64_t>dggs_parent_of(<int64_t>c, _codec_level(level)))
             return s if s else None
         if code == LONE_CENTRE:
             dggs_centre_of(POINTS_ISEA, <int64_t>c, &lat, &lng)

@@ -180,15 +180,6 @@ int dggs_format_one(uint64_t cell, char *buf) {
     return level + 1;
 }
 
-int64_t dggs_codec_parent_of(int64_t cell, int64_t level) {
-    uint64_t c = (uint64_t)cell;
-    if (!dggs_is_valid(c)) return 0;
-    int64_t lv = dggs_level_of(c);
-    if (level < 0) level = lv - 1;
-    if (level < 0 || level > lv) return 0;
-    return (int64_t)dggs_parent_at(c, (int)level);
-}
-
 /* ---- public API (dggs.h, "ids and strings") ---- */
 
 dggs_error dggs_string_to_cell(const char *s, dggs_cell *out) {

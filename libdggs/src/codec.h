@@ -74,8 +74,5 @@ void dggs_fill_codes_u32(const uint64_t *ids, int64_t n, uint32_t *out, int64_t 
  * return their count, or 0 (the empty string) if `cell` is not an id. */
 int dggs_format_one(uint64_t cell, char *buf);
 
-/* hierarchy.parent_of, for scalar.parent_str: the ancestor of one id (int64) at `level` (-1: one level up);
- * 0 where there is none or `cell` is no id. */
-int64_t dggs_codec_parent_of(int64_t cell, int64_t level);
 
 #endif

@@ -5,6 +5,7 @@
 #include "check.h"
 #include "codec.h"
 #include "dggs.h"
+#include "hierarchy.h"
 
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
@@ -234,13 +235,13 @@ static void check_round_trips(void) {
             for (int k = 0; k < DGGS_MAX_CHARS; k++) CHECK(row[k] == (k <= level ? (uint8_t)s[k] : 0));
             /* parent_of is the prefix */
             if (level > 0) {
-                int64_t p = dggs_codec_parent_of((int64_t)c, -1);
+                int64_t p = dggs_parent_of((int64_t)c, -1);
                 char ps[DGGS_MAX_CHARS + 1];
                 CHECK(dggs_cell_to_string((uint64_t)p, ps, sizeof ps) == DGGS_OK);
                 CHECK(strncmp(ps, s, (size_t)level) == 0 && (int)strlen(ps) == level);
             }
-            CHECK(dggs_codec_parent_of((int64_t)c, level + 1) == 0);
-            CHECK(dggs_codec_parent_of((int64_t)c, 0) == (int64_t)dggs_base_cell(s[0] - 'A'));
+            CHECK(dggs_parent_of((int64_t)c, level + 1) == 0);
+            CHECK(dggs_parent_of((int64_t)c, 0) == (int64_t)dggs_base_cell(s[0] - 'A'));
             /* a buffer one byte short is refused */
             CHECK(dggs_cell_to_string(c, s, (size_t)level + 1) == DGGS_E_BUFFER);
         }
