@@ -1,6 +1,6 @@
 """dggs.spark: Arrow UDFs on a local[2] SparkSession equal the Python API; SQL and column forms agree.
 
-The batch functions (dggs._spark_udfs) are checked without a JVM, with hypothesis, for both id forms. The
+The batch functions (dggs.spark.udfs) are checked without a JVM, with hypothesis, for both id forms. The
 Spark tests share one module-scoped session (the JVM starts once) and are marked ``spark``-slow: they run in
 ``make test-all``.
 """
@@ -26,7 +26,7 @@ pq = pytest.importorskip("pyarrow.parquet")
 shapely = pytest.importorskip("shapely")
 pytest.importorskip("pyspark")
 
-from dggs._spark_udfs import FUNCTIONS, batch_function  # noqa: E402
+from dggs.spark.udfs import FUNCTIONS, batch_function  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 SPECIAL = special_points()
@@ -357,7 +357,7 @@ def test_function_table_is_complete():
 
 # ------------------------------------------------------------------ corrupt columns (issue 32 item 9), no JVM
 
-from dggs._spark_udfs import ColumnTypeError  # noqa: E402
+from dggs.spark.udfs import ColumnTypeError  # noqa: E402
 
 _CORRUPT = {
     "strings": pa.array(["n/a", "C401", "", "1e400"]),

@@ -114,7 +114,7 @@ def rollup(df: Any, level: int, cell: str = "cell", values: Sequence[str] = (),
     """
     from pyspark.sql import functions as F
 
-    from dggs.spark import cell_to_parent, cell_to_parent_str
+    from dggs.spark.columns import cell_to_parent, cell_to_parent_str
 
     level = check_level(level)
     bad = [s for s in stats if s not in _STATS]
@@ -153,7 +153,7 @@ def write_geoparquet(df: Any, path: str, level: int = 1, cell: str = "cell", den
         If the ``cell`` column is missing, or a column is named ``cell_id``, ``bbox``, ``geometry``,
         ``face`` or ``parent``.
     """
-    from dggs.spark import cell_to_parent_str
+    from dggs.spark.columns import cell_to_parent_str
 
     level = check_level(level)
     if cell not in df.columns:
