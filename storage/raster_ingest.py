@@ -256,7 +256,7 @@ def _rows(source_id: int, cells: np.ndarray, shared: list[np.ndarray], per_band:
 
 def _read_partials(conn: sqlite3.Connection, source_id: int, bands: int, mode: str) -> Any:
     """The partials committed, added up over the blocks, as ``raster_to_cells`` holds them before finishing."""
-    from dggs._raster_stats import Partials
+    from dggs.raster.stats import Partials
 
     rows = conn.execute("SELECT cell, covered, count, total, low, high FROM raster_partials WHERE source_id = ? "
                         "ORDER BY cell, band", (source_id,)).fetchall()

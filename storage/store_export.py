@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
-from dggs._formats import export_format
+from dggs.arrow.formats import export_format
 
 from . import queries
 from .atomic import atomic_write, refuse_store
@@ -204,7 +204,7 @@ def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
     import pyarrow as pa
     import shapely
 
-    from dggs._geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata
+    from dggs.arrow.geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata
 
     cells = np.asarray(table.column("cell").to_pylist(), dtype=str)
     polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if len(cells) else np.empty(0, object)

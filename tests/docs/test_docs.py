@@ -31,12 +31,12 @@ MODULES = [
     "dggs.index._convert.apply",
     "dggs.index._kernel.scalar",
     "dggs.storage.store_export",
-    "dggs._formats",
+    "dggs.arrow.formats",
 ]
 try:  # the optional arrow extra
     import pyarrow  # noqa: F401
 
-    MODULES += ["dggs.arrow", "dggs._geoparquet"]
+    MODULES += ["dggs.arrow", "dggs.arrow.geoparquet"]
 except ImportError:
     pass
 try:  # the optional dask extra
@@ -48,8 +48,8 @@ except ImportError:
 try:  # the optional raster extra
     import rasterio  # noqa: F401
 
-    MODULES += ["dggs.raster", "dggs._raster_blocks", "dggs._raster_frames", "dggs._raster_burn", "dggs._raster_parquet",
-                "dggs._raster_grid", "dggs._raster_pieces", "dggs._raster_center", "dggs.index._pixels", "dggs.storage.raster_ingest",
+    MODULES += ["dggs.raster", "dggs.raster.blocks", "dggs.raster.frames", "dggs.raster.burn", "dggs.raster.parquet",
+                "dggs.raster.grid", "dggs.raster.pieces", "dggs.raster.center", "dggs.index._pixels", "dggs.storage.raster_ingest",
                 "dggs.storage.store_raster"]
 except ImportError:
     pass

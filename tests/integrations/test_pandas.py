@@ -63,9 +63,9 @@ def test_import_dggs_does_not_import_pandas_and_dggs_pandas_registers_the_access
 
 
 def test_doctests():
-    import dggs._pandas_join
+    import dggs.pandas.join
 
-    for module in (dggs.pandas, dggs._pandas_join):
+    for module in (dggs.pandas, dggs.pandas.join):
         result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
         assert result.attempted > 5 and result.failed == 0, module.__name__
 

@@ -12,9 +12,9 @@ pytest.importorskip("rasterio")
 from click.testing import CliRunner  # noqa: E402
 
 import dggs  # noqa: E402
-from dggs._raster_cli import CLI_MODES  # noqa: E402
 from dggs.cli import main  # noqa: E402
 from dggs.raster import MODES, raster_to_cells  # noqa: E402
+from dggs.raster.cli import CLI_MODES  # noqa: E402
 from dggs.storage import CellStore  # noqa: E402
 
 from .helpers import field, same_rows, write  # noqa: E402
@@ -89,7 +89,7 @@ def test_the_command_is_documented_and_its_modes_are_the_librarys():
     assert CLI_MODES == MODES
     text = DOC.read_text()
     assert "dggs bin-raster" in text and "--parquet" in text and "--db" in text
-    from dggs._raster_frames import GRID_NAME
+    from dggs.raster.frames import GRID_NAME
 
     xdggs = pytest.importorskip("dggs.xdggs")
     assert GRID_NAME == xdggs.GRID_NAME

@@ -24,8 +24,8 @@ import pytest
 
 pytest.importorskip("rasterio")
 
-from dggs._raster_stats import combine  # noqa: E402
 from dggs.raster import block_results, open_checked, raster_to_cells  # noqa: E402
+from dggs.raster.stats import combine  # noqa: E402
 from dggs.storage import CellStore  # noqa: E402
 
 from .helpers import field, same_rows, write  # noqa: E402

@@ -8,7 +8,7 @@ rasterio = pytest.importorskip("rasterio")
 
 from rasterio.env import getenv, hasenv  # noqa: E402
 
-from dggs import _raster_source  # noqa: E402
+from dggs.raster import source as _raster_source  # noqa: E402
 
 
 def _cache_while_reading():

@@ -15,8 +15,8 @@ import pytest
 import shapely
 
 import dggs
-from dggs._geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent
 from dggs.arrow import cells_to_table, to_geodataframe, write_cells, write_geoparquet
+from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent
 
 from .geoparquet_rules import violations
 
@@ -88,7 +88,7 @@ def _dask(tmp_path):
 def _raster(tmp_path):
     import pandas as pd
 
-    from dggs._raster_parquet import write_partitioned
+    from dggs.raster.parquet import write_partitioned
 
     ids = np.asarray(dggs.str_to_int(CELLS))
     write_partitioned(pd.DataFrame({"cell_id": ids, "value": np.arange(ids.size, dtype=float)}), tmp_path / "raster",

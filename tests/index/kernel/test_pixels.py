@@ -22,8 +22,8 @@ from hypothesis import strategies as st
 from shapely.geometry import Polygon
 
 import dggs
-from dggs._raster_grid import TOLERANCE, chord_error, points_per_edge
 from dggs.index._pixels import pixel_pieces
+from dggs.raster.grid import TOLERANCE, chord_error, points_per_edge
 
 from ...strategies import examples, special_points
 

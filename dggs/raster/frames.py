@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from dggs._raster_stats import Partials
 from dggs.index.ids import int_to_str
 from dggs.index.measure import cell_area
+from dggs.raster.stats import Partials
 
 __all__ = ["value_names", "weighted_frame", "center_frame", "to_xarray", "GRID_NAME"]
 

@@ -13,7 +13,7 @@ keeps the frame's index and returns a new frame:
 * :meth:`DggsAccessor.aggregate` rolls rows up to a coarser level;
 * :meth:`DggsAccessor.polyfill` gives the cells of each polygon feature;
 * :meth:`DggsAccessor.sjoin_cells` joins points to polygon features through
-  their cells (:mod:`dggs._pandas_join`).
+  their cells (:mod:`dggs.pandas.join`).
 
 Methods that read cells take ``column=None`` to mean: the only column named
 ``cell_<level>`` if there is exactly one, else the index.  Bad input raises
@@ -49,8 +49,8 @@ try:  # the optional extra
 except ImportError as exc:  # pragma: no cover - exercised only without the extra
     raise ImportError("dggs.pandas needs the 'pandas' extra: pip install 'dggs[pandas]'") from exc
 
-from . import _pandas_join as _join  # noqa: E402 - after the extra's check
-from ._pandas_frames import (  # noqa: E402
+from dggs.pandas import join as _join  # noqa: E402 - after the extra's check
+from dggs.pandas.frames import (  # noqa: E402
     Cells,
     ColumnError,
     CrsError,
@@ -379,5 +379,5 @@ class DggsAccessor:
         )
         return out.assign(**{name: values})
 
-    #: :func:`dggs._pandas_join.sjoin_cells`, written and tested in its own module
+    #: :func:`dggs.pandas.join.sjoin_cells`, written and tested in its own module
     sjoin_cells = _join.sjoin_cells

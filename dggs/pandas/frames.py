@@ -1,6 +1,6 @@
 """The frame side of the ``df.dggs`` accessor: where its cells and coordinates come from, and errors naming rows.
 
-Shared by :mod:`dggs.pandas` (the accessor) and :mod:`dggs._pandas_join`.
+Shared by :mod:`dggs.pandas` (the accessor) and :mod:`dggs.pandas.join`.
 """
 
 from __future__ import annotations
@@ -51,6 +51,7 @@ def in_wgs84(geoms: Any) -> Any:
 
 
 def geopandas_module() -> Any:
+    """geopandas, imported on first use (the 'pandas' extra), or an ImportError naming the extra."""
     try:
         import geopandas
     except ImportError as exc:  # pragma: no cover - exercised only without geopandas
@@ -155,6 +156,7 @@ def row_label(frame_or_index: Any, i: int) -> str:
 
 
 def first_true(mask: np.ndarray) -> int | None:
+    """The position of the first ``True`` of ``mask``, or ``None``."""
     hits = np.flatnonzero(mask)
     return int(hits[0]) if hits.size else None
 

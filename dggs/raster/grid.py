@@ -128,7 +128,7 @@ def to_wgs84(crs: Any) -> Any:
     from pyproj import CRS, Transformer
     from pyproj.exceptions import CRSError, ProjError
 
-    from dggs._raster_source import RasterError
+    from dggs.raster.source import RasterError
 
     wgs84 = CRS.from_epsg(4326)
     try:

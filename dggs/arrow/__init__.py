@@ -14,7 +14,7 @@ module adds the geometry side without a Python loop per cell:
   and a WKB ``geometry`` column, with the ``geo`` schema metadata.  Both the
   ``bbox`` group and ``geometry`` are ``required``, and a cell split at the
   antimeridian has ``xmin > xmax`` (RFC 7946 §5.2), as GeoParquet 1.1
-  §"Bounding Box Columns" asks (:mod:`dggs._geoparquet`).
+  §"Bounding Box Columns" asks (:mod:`dggs.arrow.geoparquet`).
 * :func:`write_geoparquet` writes such a table whole or not at all.
 * :func:`bbox_filter` (pyarrow) and :func:`bbox_sql` (DuckDB) select the rows
   whose ``bbox`` meets a box, honouring ``xmin > xmax``.
@@ -46,8 +46,8 @@ from typing import Any
 
 import numpy as np
 
-from dggs._formats import EXPORT_FORMATS, export_format
-from dggs._geoparquet import (
+from dggs.arrow.formats import EXPORT_FORMATS, export_format
+from dggs.arrow.geoparquet import (
     BBOX_TYPE,
     GEOPARQUET_VERSION,
     bbox_filter,

@@ -18,15 +18,15 @@ from typing import Any
 
 import numpy as np
 
-from dggs._raster_blocks import each_block, tidy_classes, windows
-from dggs._raster_burn import cells_to_raster
-from dggs._raster_frames import center_frame, to_xarray, weighted_frame
-from dggs._raster_grid import to_wgs84
-from dggs._raster_pieces import block_pieces
-from dggs._raster_source import RasterError, RasterSource, open_raster
-from dggs._raster_stats import Partials, block_partials, combine, shared
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_level, is_choice
+from dggs.raster.blocks import each_block, tidy_classes, windows
+from dggs.raster.burn import cells_to_raster
+from dggs.raster.frames import center_frame, to_xarray, weighted_frame
+from dggs.raster.grid import to_wgs84
+from dggs.raster.pieces import block_pieces
+from dggs.raster.source import RasterError, RasterSource, open_raster
+from dggs.raster.stats import Partials, block_partials, combine, shared
 
 __all__ = ["raster_to_cells", "cells_to_raster", "MODES", "OUTPUTS", "RasterError"]
 
@@ -201,6 +201,6 @@ def _cell_m2(level: int) -> float:
 
 
 def _center_block(src: RasterSource, transformer: Any, block: Any, level: int, mode: str, density: bool) -> Any:
-    from dggs._raster_center import centre_values
+    from dggs.raster.center import centre_values
 
     return centre_values(src, transformer, block, level)

@@ -16,14 +16,14 @@ from typing import Any
 
 import numpy as np
 
-from dggs._raster_blocks import each_block
-from dggs._raster_grid import to_wgs84
-from dggs._raster_source import RasterError, RasterSource, open_raster
 from dggs.errors import DggsValueError, LevelMismatchError
 from dggs.index._checks import is_choice
 from dggs.index._convert import cells_in, id_name
 from dggs.index.hierarchy import get_level
 from dggs.index.points import latlng_to_cell
+from dggs.raster.blocks import each_block
+from dggs.raster.grid import to_wgs84
+from dggs.raster.source import RasterError, RasterSource, open_raster
 
 __all__ = ["cells_to_raster", "BURN_MODES", "MAX_PIXELS"]
 
@@ -214,7 +214,7 @@ def _centres(grid: RasterSource, transformer: Any, block: Any, ids: np.ndarray, 
 
 def _areas(grid: RasterSource, transformer: Any, block: Any, ids: np.ndarray, vals: np.ndarray,
            level: int) -> tuple[int, int, np.ndarray]:
-    from dggs._raster_pieces import block_pieces  # the pieces raster_to_cells cuts
+    from dggs.raster.pieces import block_pieces  # the pieces raster_to_cells cuts
 
     rows, cols = block.shape
     pixel, cell, area, _ = block_pieces(grid, transformer, block, level)

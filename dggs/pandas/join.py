@@ -24,11 +24,11 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from dggs._pandas_frames import Cells
 from dggs.errors import DggsValueError
 from dggs.index._checks import is_choice
 from dggs.index.hierarchy import cell_to_parent
 from dggs.index.ids import check_level, int_to_str, str_to_int
+from dggs.pandas.frames import Cells
 
 __all__ = ["sjoin_cells"]
 

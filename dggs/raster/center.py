@@ -18,8 +18,7 @@ import numpy as np
 from shapely.geometry import box
 
 import dggs
-
-from ._raster_grid import arc_degrees, lnglat
+from dggs.raster.grid import arc_degrees, lnglat
 
 __all__ = ["centre_values", "outline_box"]
 

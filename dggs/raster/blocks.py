@@ -4,7 +4,7 @@
 gathers its results in memory, ``CellStore.ingest_raster`` commits them one
 block a transaction and resumes after the blocks committed (``skip``), so
 the blocks are numbered the same way in both: row by row, ``size`` pixels a
-side, as :meth:`RasterSource.blocks <dggs._raster_source.RasterSource.blocks>`
+side, as :meth:`RasterSource.blocks <dggs.raster.source.RasterSource.blocks>`
 reads them.  :func:`tidy_classes` sums a block's class areas per cell and
 class, so that a block's partials are a few numbers a cell, whoever adds them
 up afterwards (numpy here, SQLite in the store) and in the same order.
@@ -18,9 +18,9 @@ from typing import Any
 
 import numpy as np
 
-from dggs._raster_source import Block, RasterSource
-from dggs._raster_stats import Partials
 from dggs.geometry._parallel import default_threads
+from dggs.raster.source import Block, RasterSource
+from dggs.raster.stats import Partials
 
 __all__ = ["windows", "each_block", "tidy_classes"]
 

@@ -2,7 +2,7 @@
 
 Pixels bend most near the poles and near the faces' centres, so a block is
 measured in tiles of :data:`TILE` pixels a side, each with the points per
-edge its own pixels need (:func:`dggs._raster_grid.points_per_edge`); the
+edge its own pixels need (:func:`dggs.raster.grid.points_per_edge`); the
 tiles wanting the same number are then cut together, one kernel call over
 the smallest window holding them (most blocks: one call), so Python's cost is
 a block's, not a tile's.  Pixels wider than the kernel takes are cut into
@@ -15,9 +15,9 @@ from typing import Any
 
 import numpy as np
 
-from dggs._raster_grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, tile_chord_errors
-from dggs._raster_source import Block, RasterSource
 from dggs.index._pixels import pixel_pieces
+from dggs.raster.grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, tile_chord_errors
+from dggs.raster.source import Block, RasterSource
 
 __all__ = ["TILE", "MOST_POINTS", "block_pieces", "grid_window", "scale"]
 

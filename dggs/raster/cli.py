@@ -77,8 +77,8 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
             raise
         click.echo(f"{result.summary()} -> {db} (level {level})")
         return
-    from dggs._raster_parquet import write_partitioned
     from dggs.raster import raster_to_cells
+    from dggs.raster.parquet import write_partitioned
 
     table = raster_to_cells(raster, level, mode=mode, band=band, nodata=nodata, density=density,
                             block_size=block_size, progress=show)
