@@ -108,6 +108,11 @@ static duckdb_logical_type type_of(char code, id_kind kind) {
         t = duckdb_create_list_type(inner);
         duckdb_destroy_logical_type(&inner);
         return t;
+    case 'W':
+        inner = duckdb_create_logical_type(DUCKDB_TYPE_VARCHAR);
+        t = duckdb_create_list_type(inner);
+        duckdb_destroy_logical_type(&inner);
+        return t;
     case 'D':
         return duckdb_create_logical_type(DUCKDB_TYPE_DOUBLE);
     case 'B':
@@ -181,5 +186,6 @@ DUCKDB_EXTENSION_ENTRYPOINT(duckdb_connection connection, duckdb_extension_info 
     register_edges(connection);
     register_fill(connection);
     register_levels(connection);
+    register_vertex(connection);
     return true;
 }

@@ -146,6 +146,24 @@ dggs_error dggs_cell_to_polygon(dggs_cell cell, int densify, dggs_projection pro
 
 
 
+/* ---- vertices (vertex.c) ------------------------------------------------------------------------ */
+
+/* A vertex (a cell corner) is named by the smallest cell id round it (the owner) and the corner's index (0-2)
+ * there, in dggs_cell_to_boundary's order: the Python package's vertex id "<owner>:<index>" (index/vertex.py).
+ * Every cell round a corner gives the same name. */
+
+/* The vertices of `cell`'s three corners, in dggs_cell_to_boundary's order: owners[i] and index[i]. Errors:
+ * DGGS_E_CELL, DGGS_E_FAILED (a walk round a corner that does not close: never for valid ids). */
+dggs_error dggs_cell_to_vertexes(dggs_cell cell, dggs_cell owners[3], int index[3]);
+/* 1 if (owner, index) is the name of a corner (owner a cell, index 0-2, and owner the smallest cell round its
+ * corner `index`), else 0. */
+int dggs_is_valid_vertex(dggs_cell owner, int index);
+/* The (lat, lng) of a vertex: corner `index` of dggs_cell_to_boundary(owner). DGGS_E_CELL for a (owner, index)
+ * that names no vertex (dggs_is_valid_vertex), DGGS_E_PROJECTION. */
+dggs_error dggs_vertex_to_latlng(dggs_cell owner, int index, dggs_projection proj, double *lat, double *lng);
+
+/* ---- end vertices ---- */
+
 /* ---- hierarchy and compaction (hierarchy.c, compact.c) ---------------------------------------- */
 
 /* The ancestor of `cell` at `parent_level` (0 .. the cell's level; the cell's own level gives the cell).

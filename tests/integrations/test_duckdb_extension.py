@@ -421,6 +421,8 @@ CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (d
     "dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', least(n, 8), 'inside')",
     "dggs_cell_to_boundary_wkt(i, n)", "dggs_cell_to_boundary_wkb(i, n, 'IVEA')", "dggs_cell_to_boundary_geometry(i, n)",
     "dggs_polygon_to_cells(dggs_cell_to_boundary_geometry(i), least(n, 7), 'contains')",
+    "dggs_cell_to_vertexes(i)", "dggs_vertex_to_latlng(i::VARCHAR || ':' || n::VARCHAR)",
+    "dggs_is_valid_vertex(i::VARCHAR || ':' || n::VARCHAR)", "dggs_vertex_to_latlng(i::VARCHAR || ':1', 'IVEA')",
 ]  # fmt: skip
 
 
@@ -615,3 +617,29 @@ def test_geometry_in_and_out_as_wkb(ext: Path) -> None:
     shapely = pytest.importorskip("shapely")
     assert got["n"] == len(dggs.polygon_to_cells(shapely.from_wkt(poly), 5, mode="overlaps"))
     assert got["t"] == "GEOMETRY" and got["g"] == got["w"]
+
+
+@pytest.mark.parametrize("kind", ["BIGINT", "VARCHAR"])
+def test_vertices_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None:
+    """dggs_cell_to_vertexes / dggs_vertex_to_latlng / dggs_is_valid_vertex as dggs's, on every cell of levels 0-3
+    (every icosahedron vertex among their corners), cells at the poles and across the antimeridian, all levels."""
+    ids = _shape_ids()
+    src = table(tmp_path / "c.csv", {"u": ids})
+    cell = "u::BIGINT" if kind == "BIGINT" else "dggs_int_to_str(u)"
+    got = rows(ext, f"SELECT dggs_cell_to_vertexes({cell}) AS v FROM {src} ORDER BY i")
+    want = np.asarray(dggs.cell_to_vertexes(ids)).tolist()
+    assert [r["v"] for r in got] == want
+    names = sorted({v for row in want for v in row})
+    bad = ["C401:0", "C401:3", "C401:", ":1", "C401:1x", "C401::1", "", "Z0:1", "C401 :1", "c401:1"]
+    with open(tmp_path / "v.csv", "w", newline="") as f:
+        csv.writer(f).writerows([["v"], *([v] for v in [*names, *bad]), ["NULL"]])
+    got = rows(ext, f"SELECT v, dggs_vertex_to_latlng(v) AS ll, dggs_is_valid_vertex(v) AS ok, "
+                    f"dggs_vertex_to_latlng(v, 'IVEA') AS ivea FROM read_csv('{tmp_path / 'v.csv'}', header=true, "
+                    "columns={'v': 'VARCHAR'}, nullstr='NULL', quote='\"')")  # fmt: skip
+    by = {r["v"]: r for r in got}
+    lat, lng = dggs.vertex_to_latlng(names)
+    ilat, ilng = dggs.Grid("IVEA").vertex_to_latlng(names)
+    assert [(by[v]["ll"]["lat"], by[v]["ll"]["lng"]) for v in names] == list(zip(lat, lng, strict=True))
+    assert [(by[v]["ivea"]["lat"], by[v]["ivea"]["lng"]) for v in names] == list(zip(ilat, ilng, strict=True))
+    assert [by[v]["ok"] for v in [*names, *bad]] == list(dggs.is_valid_vertex([*names, *bad]))
+    assert all(by[v]["ll"] is None for v in bad) and by[None]["ok"] is None and by[None]["ll"] is None
