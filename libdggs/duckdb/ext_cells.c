@@ -226,8 +226,9 @@ static size_t polygon_wkb(const double *pts, const size_t *sizes, int parts, uin
 
 /* The boundary: dggs_cell_to_boundary -> list of STRUCT(lat, lng) (variant 0, dggs.cell_to_boundary: the 3
  * corners counter-clockwise, `densify` points along each edge), _wkt -> VARCHAR (1), _wkb -> BLOB and _geometry
- * -> GEOMETRY (2): the polygon of dggs.cell_to_polygon(cell, densify) (dggs_cell_to_polygon: lng/lat, a MultiPolygon split at +-180
- * for a cell across the antimeridian, closed along a pole). densify is the second argument, default 0. */
+ * -> GEOMETRY (2): the polygon of dggs.cell_to_polygon(cell, densify) (dggs_cell_to_polygon: lng/lat, a
+ * MultiPolygon split at +-180 for a cell across the antimeridian, closed along a pole). densify is the second
+ * argument, default 0. */
 #define MAX_SQL_DENSIFY 1000
 static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);

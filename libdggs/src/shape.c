@@ -25,7 +25,8 @@ int64_t dggs_cell_ring(dggs_projection proj, uint64_t cell, int densify, double 
     int m = dggs_special_ring(proj, cell, densify, tmp, dggs_special_ring_rows(densify)); /* (lat, lng) rows */
     /* _pole_pairs: every point at a pole given as two, arriving and leaving longitude */
     int64_t k = 0;
-    double *xs = ring, *ys = ring + dggs_cell_ring_room(densify); /* the second half of ring, as scratch for latitudes */
+    /* the second half of ring, as scratch for latitudes */
+    double *xs = ring, *ys = ring + dggs_cell_ring_room(densify);
     for (int i = 0; i < m;) {
         double lat = tmp[2 * i], lng = tmp[2 * i + 1];
         if (fabs(fabs(lat) - 90.0) < DGGS_POLE_TOL) {
@@ -50,7 +51,8 @@ int64_t dggs_cell_ring(dggs_projection proj, uint64_t cell, int densify, double 
         int64_t j = (i + 1) % k;
         double raw = xs[j] - xs[i];
         double step = dggs_pymod(raw + 180.0, 360.0) - 180.0;
-        if (fabs(ys[i]) == 90.0 && ys[j] == ys[i]) step = ys[i] > 0.0 ? -dggs_pymod(-raw, 360.0) : dggs_pymod(raw, 360.0);
+        if (fabs(ys[i]) == 90.0 && ys[j] == ys[i])
+            step = ys[i] > 0.0 ? -dggs_pymod(-raw, 360.0) : dggs_pymod(raw, 360.0);
         tmp[i] = step;
         winding += step;
         ysum += ys[i];
