@@ -571,16 +571,17 @@ def _shape_ids() -> np.ndarray:
     return np.unique(np.concatenate([*every, *edge, _ids(11)]))
 
 
-@pytest.mark.parametrize("densify", [0, 1, 5])
-def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path: Path, densify: int) -> None:
+@pytest.mark.parametrize(("densify", "projection"), [(0, "ISEA"), (1, "ISEA"), (5, "ISEA"), (1, "IVEA")])
+def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path: Path, densify: int, projection: str) -> None:
     """dggs_cell_to_boundary_wkb/_wkt(c, d) give dggs.cell_to_polygon(c, densify=d): split at +-180, closed
     along the poles, counter-clockwise; ordinary cells byte for byte (shapely's WKB of the Python polygon)."""
     shapely = pytest.importorskip("shapely")
     ids = _shape_ids()
     src = table(tmp_path / "c.csv", {"u": ids})
-    got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb(u, {densify})) AS wkb, "
-                    f"dggs_cell_to_boundary_wkt(dggs_int_to_str(u), {densify}) AS wkt FROM {src} ORDER BY i")  # fmt: skip
-    want = dggs.cell_to_polygon(ids, densify=densify)
+    got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb(u, {densify}, '{projection}')) AS wkb, "
+                    f"dggs_cell_to_boundary_wkt(dggs_int_to_str(u), {densify}, '{projection}') AS wkt "
+                    f"FROM {src} ORDER BY i")  # fmt: skip
+    want = dggs.Grid(projection).cell_to_polygon(ids, densify=densify)
     assert len(got) == len(want) == ids.size
     multi = 0
     for r, c, w in zip(got, ids, want, strict=True):
