@@ -139,16 +139,21 @@ void list_empty(list_out_t *l, idx_t row);
 int list_ids_get(const col_t *c, id_kind kind, idx_t row, dggs_cell **out, idx_t *n);
 
 /* Registration (ext_main.c): one overload per id kind unless per_kind is 0 (then kind is `kind`). Parameter and
- * return codes: I an id, L a list of ids, E a list of ids (same kind) as output, D DOUBLE, B BIGINT, N INTEGER,
- * V VARCHAR, X BLOB, O BOOLEAN, S STRUCT(lat, lng), P a list of STRUCT(lat, lng), J STRUCT(i, j); overloads with
- * other parameters are separated by '|' ("I|IB"). */
+ * return codes: I an id, L a list of ids, E a list of ids (same kind) as output, W a list of VARCHAR, D DOUBLE,
+ * B BIGINT, N INTEGER, V VARCHAR, X BLOB, G GEOMETRY (WKB, DuckDB 1.5 on: geometry_type_exists), O BOOLEAN,
+ * S STRUCT(lat, lng), P a list of STRUCT(lat, lng), J STRUCT(i, j); overloads with other parameters are separated
+ * by '|' ("I|IB"). */
 void reg(duckdb_connection con, const char *name, const char *params, char ret, duckdb_scalar_function_t fn,
          int per_kind, id_kind kind, int variant);
+
+/* Whether this DuckDB has the GEOMETRY type in its core (1.5 on; duckdb.h's DUCKDB_TYPE_GEOMETRY, a WKB blob). */
+bool geometry_type_exists(void);
 
 void register_cells(duckdb_connection con);
 void register_grid(duckdb_connection con);
 void register_edges(duckdb_connection con);
 void register_fill(duckdb_connection con);
 void register_levels(duckdb_connection con);
+void register_vertex(duckdb_connection con);
 
 #endif

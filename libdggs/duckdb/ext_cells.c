@@ -164,9 +164,71 @@ static void convert_id(duckdb_function_info info, duckdb_data_chunk in, duckdb_v
     }
 }
 
-/* The boundary: dggs_cell_to_boundary -> list of STRUCT(lat, lng) (variant 0), _wkt -> VARCHAR (1), _wkb -> BLOB
- * (2): the 3 corners counter-clockwise, `densify` points along each edge (second argument, default 0), in (lng,
- * lat) for WKT and WKB, closed. */
+/* Room for one row's boundary: `pts` (doubles) and `text` (bytes), grown to the densify a row asks. */
+typedef struct {
+    double *pts;
+    char *text;
+    size_t points; /* pts holds 2 points doubles */
+} shape_buf;
+
+static bool shape_room(shape_buf *b, int densify) {
+    size_t points;
+    if (dggs_cell_to_polygon_size(densify, &points) != DGGS_OK) return false;
+    if (points <= b->points) return true;
+    double *pts = (double *)realloc(b->pts, 2 * points * sizeof(double));
+    if (pts) b->pts = pts;
+    /* WKT: under 52 bytes a point ("%.17g %.17g, "), the parts' brackets; WKB: 16 bytes a point, 9 a part */
+    char *text = (char *)realloc(b->text, points * 52 + 64 * DGGS_MAX_POLYGON_PARTS + 32);
+    if (text) b->text = text;
+    if (!pts || !text) return false;
+    b->points = points;
+    return true;
+}
+
+/* The WKT of parts (pts: (lng, lat), one part after another, not closed) into text; its length. */
+static size_t polygon_wkt(const double *pts, const size_t *sizes, int parts, char *text) {
+    size_t len = (size_t)sprintf(text, parts == 1 ? "POLYGON (" : "MULTIPOLYGON (");
+    for (int p = 0; p < parts; p++) {
+        len += (size_t)sprintf(text + len, "%s%s", p ? ", " : "", parts == 1 ? "(" : "((");
+        for (size_t i = 0; i <= sizes[p]; i++) {
+            const double *q = pts + 2 * (i % sizes[p]);
+            len += (size_t)sprintf(text + len, "%s%.17g %.17g", i ? ", " : "", q[0], q[1]);
+        }
+        len += (size_t)sprintf(text + len, parts == 1 ? ")" : "))");
+        pts += 2 * sizes[p];
+    }
+    return len + (size_t)sprintf(text + len, ")");
+}
+
+/* Little-endian WKB: a Polygon (type 3) of one ring, or a MultiPolygon (6) of such Polygons; its length. */
+static size_t put_u32(uint8_t *b, size_t at, uint32_t v) {
+    memcpy(b + at, &v, 4);
+    return at + 4;
+}
+
+static size_t polygon_wkb(const double *pts, const size_t *sizes, int parts, uint8_t *b) {
+    size_t len = 0;
+    if (parts > 1) {
+        b[len++] = 1;
+        len = put_u32(b, len, 6);
+        len = put_u32(b, len, (uint32_t)parts);
+    }
+    for (int p = 0; p < parts; p++) {
+        b[len++] = 1;
+        len = put_u32(b, len, 3);
+        len = put_u32(b, len, 1);
+        len = put_u32(b, len, (uint32_t)sizes[p] + 1);
+        for (size_t i = 0; i <= sizes[p]; i++, len += 16) memcpy(b + len, pts + 2 * (i % sizes[p]), 16);
+        pts += 2 * sizes[p];
+    }
+    return len;
+}
+
+/* The boundary: dggs_cell_to_boundary -> list of STRUCT(lat, lng) (variant 0, dggs.cell_to_boundary: the 3
+ * corners counter-clockwise, `densify` points along each edge), _wkt -> VARCHAR (1), _wkb -> BLOB and _geometry
+ * -> GEOMETRY (2): the polygon of dggs.cell_to_polygon(cell, densify) (dggs_cell_to_polygon: lng/lat, a
+ * MultiPolygon split at +-180 for a cell across the antimeridian, closed along a pole). densify is the second
+ * argument, default 0. */
 #define MAX_SQL_DENSIFY 1000
 static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
@@ -177,18 +239,11 @@ static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vec
     out_t o = out_of(outv);
     list_out_t l;
     if (x->variant == 0) l = list_of(outv);
-    size_t cap = 3 * (MAX_SQL_DENSIFY + 1);
-    double *pts = (double *)malloc(2 * cap * sizeof(double));
-    char *text = (char *)malloc(cap * 52 + 32);
-    if (!pts || !text) {
-        free(pts);
-        free(text);
-        duckdb_scalar_function_set_error(info, "dggs_cell_to_boundary: out of memory");
-        return;
-    }
+    shape_buf b = {NULL, NULL, 0};
     ROWS(n) {
         dggs_cell cell;
-        size_t count;
+        size_t count, sizes[DGGS_MAX_POLYGON_PARTS];
+        int parts;
         int64_t densify = has_densify && !is_null(&d, r) ? ((int64_t *)d.data)[r] : 0;
         if (x->variant == 0) list_empty(&l, r);
         if (has_proj && !is_null(&pc, r) && !proj_get(info, x->name, &pc, r, &proj)) break;
@@ -203,44 +258,30 @@ static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vec
             duckdb_scalar_function_set_error(info, msg);
             break;
         }
+        if (!shape_room(&b, (int)densify)) {
+            duckdb_scalar_function_set_error(info, "dggs_cell_to_boundary: out of memory");
+            break;
+        }
         if (!id_get(&c, x->kind, r, &cell) ||
-            dggs_cell_to_boundary(cell, (int)densify, proj, pts, cap, &count) != DGGS_OK) {
+            (x->variant == 0 ? dggs_cell_to_boundary(cell, (int)densify, proj, b.pts, b.points, &count)
+                             : dggs_cell_to_polygon(cell, (int)densify, proj, b.pts, b.points, sizes, &parts)) !=
+                DGGS_OK) {
             out_null(&o, r);
             continue;
         }
         if (x->variant == 0) {
-            if (!list_push_latlng(&l, r, pts, count)) {
+            if (!list_push_latlng(&l, r, b.pts, count)) {
                 duckdb_scalar_function_set_error(info, "dggs_cell_to_boundary: too many points for one list");
                 break;
             }
-        } else if (x->variant == 1) {
-            size_t len = (size_t)sprintf(text, "POLYGON ((");
-            for (size_t i = 0; i <= count; i++) {
-                size_t k = i % count;
-                len += (size_t)sprintf(text + len, "%s%.17g %.17g", i ? ", " : "", pts[2 * k + 1], pts[2 * k]);
-            }
-            len += (size_t)sprintf(text + len, "))");
-            duckdb_vector_assign_string_element_len(outv, r, text, len);
-        } else {
-            /* WKB Polygon, little-endian: byte order, type 3, one ring of count + 1 points (x = lng, y = lat) */
-            uint8_t *b = (uint8_t *)text;
-            uint32_t type = 3, rings = 1, points = (uint32_t)count + 1;
-            b[0] = 1;
-            memcpy(b + 1, &type, 4);
-            memcpy(b + 5, &rings, 4);
-            memcpy(b + 9, &points, 4);
-            size_t len = 13;
-            for (size_t i = 0; i <= count; i++) {
-                size_t k = i % count;
-                memcpy(b + len, &pts[2 * k + 1], 8);
-                memcpy(b + len + 8, &pts[2 * k], 8);
-                len += 16;
-            }
-            duckdb_vector_assign_string_element_len(outv, r, text, len);
+            continue;
         }
+        size_t len = x->variant == 1 ? polygon_wkt(b.pts, sizes, parts, b.text)
+                                     : polygon_wkb(b.pts, sizes, parts, (uint8_t *)b.text);
+        duckdb_vector_assign_string_element_len(outv, r, b.text, len);
     }
-    free(pts);
-    free(text);
+    free(b.pts);
+    free(b.text);
 }
 
 /* dggs_cell_to_child_pos(cell, parent_level) -> BIGINT. */
@@ -303,6 +344,7 @@ void register_cells(duckdb_connection con) {
     reg(con, "dggs_cell_to_boundary", "I|IB|IBV", 'P', boundary, 1, K_NONE, 0);
     reg(con, "dggs_cell_to_boundary_wkt", "I|IB|IBV", 'V', boundary, 1, K_NONE, 1);
     reg(con, "dggs_cell_to_boundary_wkb", "I|IB|IBV", 'X', boundary, 1, K_NONE, 2);
+    if (geometry_type_exists()) reg(con, "dggs_cell_to_boundary_geometry", "I|IB|IBV", 'G', boundary, 1, K_NONE, 2);
     reg(con, "dggs_cell_to_child_pos", "IB", 'B', cell_to_child_pos, 1, K_NONE, 0);
     reg(con, "dggs_child_pos_to_cell", "BIB", 'I', child_pos_to_cell, 1, K_NONE, 0);
 }

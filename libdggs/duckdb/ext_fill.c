@@ -388,8 +388,10 @@ void register_fill(duckdb_connection con) {
     reg_rows(con, "dggs_polygon_to_cells_str", 0, K_VARCHAR);
     reg_rows(con, "dggs_polygon_wkt_to_cells", 1, K_BIGINT);
     reg_rows(con, "dggs_polygon_wkt_to_cells_str", 1, K_VARCHAR);
-    reg(con, "dggs_polygon_to_cells", "XBV|XBVV", 'E', polygon_to_cells, 0, K_BIGINT, 0);
-    reg(con, "dggs_polygon_to_cells_str", "XBV|XBVV", 'E', polygon_to_cells, 0, K_VARCHAR, 0);
+    /* GEOMETRY is WKB in a string vector: the BLOB code reads it as it is */
+    const char *wkb_in = geometry_type_exists() ? "XBV|XBVV|GBV|GBVV" : "XBV|XBVV";
+    reg(con, "dggs_polygon_to_cells", wkb_in, 'E', polygon_to_cells, 0, K_BIGINT, 0);
+    reg(con, "dggs_polygon_to_cells_str", wkb_in, 'E', polygon_to_cells, 0, K_VARCHAR, 0);
     reg(con, "dggs_polygon_wkt_to_cells", "VBV|VBVV", 'E', polygon_to_cells, 0, K_BIGINT, 1);
     reg(con, "dggs_polygon_wkt_to_cells_str", "VBV|VBVV", 'E', polygon_to_cells, 0, K_VARCHAR, 1);
 }

@@ -86,6 +86,16 @@ bool proj_get(duckdb_function_info info, const char *name, const col_t *c, idx_t
 
 /* ---- registration ---- */
 
+/* duckdb.h (1.5 on): DUCKDB_TYPE_GEOMETRY = 40, stored as WKB; the v1.2.0 headers do not name it. */
+#define TYPE_GEOMETRY ((duckdb_type)40)
+
+bool geometry_type_exists(void) {
+    duckdb_logical_type t = duckdb_create_logical_type(TYPE_GEOMETRY);
+    bool ok = t && duckdb_get_type_id(t) == TYPE_GEOMETRY;
+    if (t) duckdb_destroy_logical_type(&t);
+    return ok;
+}
+
 static duckdb_logical_type type_of(char code, id_kind kind) {
     static const duckdb_type ids[] = {DUCKDB_TYPE_BIGINT, DUCKDB_TYPE_UBIGINT, DUCKDB_TYPE_VARCHAR, DUCKDB_TYPE_BIGINT};
     duckdb_logical_type t, inner;
@@ -98,6 +108,11 @@ static duckdb_logical_type type_of(char code, id_kind kind) {
         t = duckdb_create_list_type(inner);
         duckdb_destroy_logical_type(&inner);
         return t;
+    case 'W':
+        inner = duckdb_create_logical_type(DUCKDB_TYPE_VARCHAR);
+        t = duckdb_create_list_type(inner);
+        duckdb_destroy_logical_type(&inner);
+        return t;
     case 'D':
         return duckdb_create_logical_type(DUCKDB_TYPE_DOUBLE);
     case 'B':
@@ -106,6 +121,8 @@ static duckdb_logical_type type_of(char code, id_kind kind) {
         return duckdb_create_logical_type(DUCKDB_TYPE_INTEGER);
     case 'V':
         return duckdb_create_logical_type(DUCKDB_TYPE_VARCHAR);
+    case 'G':
+        return duckdb_create_logical_type(TYPE_GEOMETRY);
     case 'X':
         return duckdb_create_logical_type(DUCKDB_TYPE_BLOB);
     case 'O':
@@ -169,5 +186,6 @@ DUCKDB_EXTENSION_ENTRYPOINT(duckdb_connection connection, duckdb_extension_info 
     register_edges(connection);
     register_fill(connection);
     register_levels(connection);
+    register_vertex(connection);
     return true;
 }

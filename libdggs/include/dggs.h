@@ -124,9 +124,45 @@ dggs_error dggs_cell_to_boundary_size(int densify, size_t *points);
 dggs_error dggs_cell_to_boundary(dggs_cell cell, int densify, dggs_projection proj, double *lat_lng, size_t size,
                                  size_t *count);
 
+/* The most parts of a cell's polygon (dggs_cell_to_polygon): two for a cell across the antimeridian. */
+#define DGGS_MAX_POLYGON_PARTS 4
+
+/* The room (in points) dggs_cell_to_polygon needs for `densify` into *points: its output and its scratch.
+ * DGGS_E_DOMAIN for a densify outside 0..DGGS_MAX_DENSIFY. */
+dggs_error dggs_cell_to_polygon_size(int densify, size_t *points);
+
+/* `cell` as the Python package's dggs.cell_to_polygon(cell, densify) draws it (index/_shapes.py): the boundary
+ * (dggs_cell_to_boundary) as a polygon in (lng, lat) degrees, where a cell crosses the antimeridian or touches a
+ * pole the exact ring unwrapped, closed along the pole where it goes round one, and split at +-180 into parts
+ * (a MultiPolygon's), each counter-clockwise. The parts' points, one after another and not closed (the first
+ * point is not repeated), are written as (lng, lat) pairs at the start of `lng_lat` (room for `size` points,
+ * from dggs_cell_to_polygon_size; all of it is scratch); the points of each part into part_sizes[0 ..
+ * *num_parts - 1]. Errors: DGGS_E_CELL, DGGS_E_DOMAIN (densify), DGGS_E_PROJECTION, DGGS_E_BUFFER (`size`
+ * under dggs_cell_to_polygon_size's; nothing written then). */
+dggs_error dggs_cell_to_polygon(dggs_cell cell, int densify, dggs_projection proj, double *lng_lat, size_t size,
+                                size_t part_sizes[DGGS_MAX_POLYGON_PARTS], int *num_parts);
+
 /* ---- end points ---- */
 
 
+
+/* ---- vertices (vertex.c) ------------------------------------------------------------------------ */
+
+/* A vertex (a cell corner) is named by the smallest cell id round it (the owner) and the corner's index (0-2)
+ * there, in dggs_cell_to_boundary's order: the Python package's vertex id "<owner>:<index>" (index/vertex.py).
+ * Every cell round a corner gives the same name. */
+
+/* The vertices of `cell`'s three corners, in dggs_cell_to_boundary's order: owners[i] and index[i]. Errors:
+ * DGGS_E_CELL, DGGS_E_FAILED (a walk round a corner that does not close: never for valid ids). */
+dggs_error dggs_cell_to_vertexes(dggs_cell cell, dggs_cell owners[3], int index[3]);
+/* 1 if (owner, index) is the name of a corner (owner a cell, index 0-2, and owner the smallest cell round its
+ * corner `index`), else 0. */
+int dggs_is_valid_vertex(dggs_cell owner, int index);
+/* The (lat, lng) of a vertex: corner `index` of dggs_cell_to_boundary(owner). DGGS_E_CELL for a (owner, index)
+ * that names no vertex (dggs_is_valid_vertex), DGGS_E_PROJECTION. */
+dggs_error dggs_vertex_to_latlng(dggs_cell owner, int index, dggs_projection proj, double *lat, double *lng);
+
+/* ---- end vertices ---- */
 
 /* ---- hierarchy and compaction (hierarchy.c, compact.c) ---------------------------------------- */
 

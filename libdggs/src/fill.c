@@ -243,14 +243,13 @@ int64_t dggs_first_over(const int64_t *cand, const int64_t *insides, int64_t tes
 #include <stdlib.h>
 
 #include "points.h"
+#include "shape.h"
 
 /* polyfill._DIRECT: levels above the target whose boundary cells have every descendant's centre tested. */
 #define FILL_DIRECT 1
 /* The overlapping_bbox descent's ellipse scale: a cell's lng/lat box lies in its ellipse's box, which lies in the
  * ellipse sqrt(2) times as large; 1.5 for margin. */
 #define FILL_BBOX_INFLATE 1.5
-/* _shapes._POLE_TOL: a ring point this close (degrees) to a pole is at it. */
-#define FILL_POLE_TOL 1e-9
 
 /* A polygon's edges and their bucket grid (polyfill._edge_index, _bucketed), malloc'ed. */
 typedef struct {
@@ -264,13 +263,6 @@ typedef struct {
 static void polygon_free(fill_polygon *p) {
     free(p->x0), free(p->y0), free(p->x1), free(p->y1), free(p->frame), free(p->scratch);
     free(p->start), free(p->items), free(p->empty);
-}
-
-/* Python's float a % b for b > 0 (the result in [0, b)). */
-static double pymod(double a, double b) {
-    double r = fmod(a, b);
-    if (r < 0.0) r += b;
-    return r;
 }
 
 static dggs_error polygon_check(const double *lat_lng, const int64_t *ring_sizes, int64_t num_rings, int level,
@@ -358,77 +350,6 @@ static dggs_error run_descent(dggs_projection proj, const fill_polygon *p, int l
         if (more_flags) *flags = more_flags;
         if (!more_ids || !more_flags) return DGGS_E_FAILED;
     }
-}
-
-/* The lng/lat ring of a cell as dggs.cell_to_polygon draws it with `densify` points per edge (index/_shapes.py
- * geometries): the plain boundary, or for a cell that crosses the antimeridian or comes within a degree of a pole
- * (_shapes.special_rings) the exact ring (points.c dggs_special_ring) unwrapped as ring_to_geometry does it:
- * pole points in pairs, longitudes stepping under 180 degrees (along a pole westward at the North Pole, eastward
- * at the South), and closed over the pole where it goes round one. Not split at +-180: the caller tests it against
- * the polygon shifted by whole turns. Writes (lng, lat) points into ring (its room: ring_room(densify)); tmp takes
- * as many. Returns the count of points (the ring is closed implicitly). */
-static int64_t ring_room(int densify) { return 2 * (3 * (int64_t)(densify + 1) + DGGS_SPECIAL_EXTRA) + 8; }
-
-static int64_t cell_ring(dggs_projection proj, uint64_t cell, int densify, double *ring, double *tmp) {
-    int64_t rows = dggs_boundary_rows(densify, 1);
-    if (rows < 2) return 0; /* cannot happen: 3 (densify + 1) + 1 rows */
-    dggs_one_boundary(proj, cell, densify, tmp, 1);
-    bool special = false;
-    for (int64_t i = 0; i < rows && !special; i++) {
-        if (fabs(tmp[2 * i + 1]) > 89.0) special = true;
-        if (i + 1 < rows && fabs(tmp[2 * i + 2] - tmp[2 * i]) > 90.0) special = true;
-    }
-    if (!special) {
-        memcpy(ring, tmp, (size_t)(rows - 1) * 2 * sizeof(double));
-        return rows - 1;
-    }
-    int m = dggs_special_ring(proj, cell, densify, tmp, dggs_special_ring_rows(densify)); /* (lat, lng) rows */
-    /* _pole_pairs: every point at a pole given as two, arriving and leaving longitude */
-    int64_t k = 0;
-    double *xs = ring, *ys = ring + ring_room(densify); /* the second half of ring, as scratch for latitudes */
-    for (int i = 0; i < m;) {
-        double lat = tmp[2 * i], lng = tmp[2 * i + 1];
-        if (fabs(fabs(lat) - 90.0) < FILL_POLE_TOL) {
-            double pole = copysign(90.0, lat);
-            if (i + 1 < m && fabs(fabs(tmp[2 * i + 2]) - 90.0) < FILL_POLE_TOL) {
-                xs[k] = lng, ys[k++] = pole;
-                xs[k] = tmp[2 * i + 3], ys[k++] = pole;
-                i += 2;
-            } else {
-                xs[k] = tmp[2 * (i > 0 ? i - 1 : m - 1) + 1], ys[k++] = pole;
-                xs[k] = tmp[2 * ((i + 1) % m) + 1], ys[k++] = pole;
-                i += 1;
-            }
-        } else {
-            xs[k] = lng, ys[k++] = lat;
-            i += 1;
-        }
-    }
-    /* ring_to_geometry: steps under 180 degrees, west along the North Pole and east along the South */
-    double x0 = xs[0], sum = 0.0, winding = 0.0, ysum = 0.0;
-    for (int64_t i = 0; i < k; i++) {
-        int64_t j = (i + 1) % k;
-        double raw = xs[j] - xs[i];
-        double step = pymod(raw + 180.0, 360.0) - 180.0;
-        if (fabs(ys[i]) == 90.0 && ys[j] == ys[i]) step = ys[i] > 0.0 ? -pymod(-raw, 360.0) : pymod(raw, 360.0);
-        tmp[i] = step;
-        winding += step;
-        ysum += ys[i];
-    }
-    for (int64_t i = 0; i < k; i++) { /* xs[0] + cumsum of the steps before */
-        double x = x0 + sum;
-        sum += tmp[i];
-        tmp[k + 2 * i] = x, tmp[k + 2 * i + 1] = ys[i];
-    }
-    memcpy(ring, tmp + k, (size_t)k * 2 * sizeof(double));
-    if (fabs(winding) > 180.0) { /* round a pole: close it over the pole */
-        double pole = ysum / (double)k > 0.0 ? 90.0 : -90.0, y0 = ring[1];
-        ring[2 * k] = ring[2 * (k - 1)], ring[2 * k + 1] = pole;
-        ring[2 * k + 2] = x0 + winding, ring[2 * k + 3] = pole;
-        ring[2 * k + 4] = x0 + winding, ring[2 * k + 5] = y0;
-        k += 3;
-    }
-    return k;
 }
 
 /* Whether a point lies in the polygon, its boundary included. */
@@ -595,14 +516,14 @@ static dggs_error fill_cells(const double *lat_lng, const int64_t *ring_sizes, i
             (*keep)[i] = dggs_locate_exact(lng, lat, p->x0, p->y0, p->x1, p->y1, p->n) == 1;
         } else {
             if (!ring) {
-                ring = malloc((size_t)ring_room(densify) * 2 * 2 * sizeof(double));
-                tmp = malloc((size_t)ring_room(densify) * 2 * 2 * sizeof(double));
+                ring = malloc((size_t)dggs_cell_ring_room(densify) * 2 * 2 * sizeof(double));
+                tmp = malloc((size_t)dggs_cell_ring_room(densify) * 2 * 2 * sizeof(double));
                 if (!ring || !tmp) {
                     free(ring), free(tmp);
                     return DGGS_E_FAILED;
                 }
             }
-            int64_t m = cell_ring(proj, (*ids)[i], densify, ring, tmp);
+            int64_t m = dggs_cell_ring(proj, (*ids)[i], densify, ring, tmp, NULL);
             (*keep)[i] = ring_test(p, ring, m, mode);
         }
     }

@@ -419,6 +419,10 @@ CALLS = [  # (expression over i (an id of any kind), n, m (integers) and x, y (d
     "dggs_polygon_to_cells(dggs_cell_to_boundary_wkb(i), least(n, 7), 'overlaps')",
     "dggs_polygon_wkt_to_cells_str(dggs_cell_to_boundary_wkt(i), least(n, 7), 'center', 'IVEA')",
     "dggs_polygon_wkt_to_cells('POLYGON ((0 0, 1 0, 1 1, 0 0))', least(n, 8), 'inside')",
+    "dggs_cell_to_boundary_wkt(i, n)", "dggs_cell_to_boundary_wkb(i, n, 'IVEA')", "dggs_cell_to_boundary_geometry(i, n)",
+    "dggs_polygon_to_cells(dggs_cell_to_boundary_geometry(i), least(n, 7), 'contains')",
+    "dggs_cell_to_vertexes(i)", "dggs_vertex_to_latlng(i::VARCHAR || ':' || n::VARCHAR)",
+    "dggs_is_valid_vertex(i::VARCHAR || ':' || n::VARCHAR)", "dggs_vertex_to_latlng(i::VARCHAR || ':1', 'IVEA')",
 ]  # fmt: skip
 
 
@@ -549,3 +553,142 @@ def test_mangled_wkb_and_wkt_never_crash(ext: Path) -> None:
                     f"count(try(dggs_polygon_wkt_to_cells(t, 4, 'center'))) AS c FROM (VALUES {values}) v(b, t)")  # fmt: skip
     assert proc.returncode == 0, proc.stderr
     assert "INTERNAL" not in proc.stdout + proc.stderr
+
+
+def _shape_ids() -> np.ndarray:
+    """Every cell of levels 0..3, the cells at and round the poles and across the antimeridian at levels 8 and
+    28, and the random and edge cells of every level (:func:`_ids`)."""
+    faces = [chr(ord("A") + f) for f in range(20)]
+    every = [np.asarray(dggs.str_to_int(np.asarray(dggs.cell_to_children(f, lv)).ravel().tolist()), np.uint64)
+             for f in faces for lv in range(4)]  # fmt: skip
+    pts = np.array([(90.0, 0.0), (-90.0, 0.0), (89.99999, 100.0), (-89.99999, -80.0), (0.0, 180.0), (30.0, -180.0),
+                    (-60.0, 179.999999999), (75.0, 180.0)])  # fmt: skip
+    edge = []
+    for level in (8, 28):
+        cells = np.asarray(dggs.latlng_to_cell(pts[:, 0], pts[:, 1], level, as_int=True), np.uint64)
+        disk = np.asarray(dggs.grid_disk(cells, 2), np.uint64).ravel()
+        edge.append(disk[disk != 0])
+    return np.unique(np.concatenate([*every, *edge, _ids(11)]))
+
+
+@pytest.mark.parametrize(("densify", "projection"), [(0, "ISEA"), (1, "ISEA"), (5, "ISEA"), (1, "IVEA")])
+def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path: Path, densify: int, projection: str) -> None:
+    """dggs_cell_to_boundary_wkb/_wkt(c, d) give dggs.cell_to_polygon(c, densify=d): split at +-180, closed
+    along the poles, counter-clockwise; ordinary cells byte for byte (shapely's WKB of the Python polygon)."""
+    shapely = pytest.importorskip("shapely")
+    ids = _shape_ids()
+    src = table(tmp_path / "c.csv", {"u": ids})
+    got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb(u, {densify}, '{projection}')) AS wkb, "
+                    f"dggs_cell_to_boundary_wkt(dggs_int_to_str(u), {densify}, '{projection}') AS wkt "
+                    f"FROM {src} ORDER BY i")  # fmt: skip
+    want = dggs.Grid(projection).cell_to_polygon(ids, densify=densify)
+    assert len(got) == len(want) == ids.size
+    multi = 0
+    for r, c, w in zip(got, ids, want, strict=True):
+        blob = bytes.fromhex(r["wkb"])
+        g, t = shapely.from_wkb(blob), shapely.from_wkt(r["wkt"])
+        name = dggs.int_to_str(int(c))
+        assert g.geom_type == w.geom_type, name
+        assert shapely.equals_exact(t, g, tolerance=0), name  # the WKT's %.17g round-trips the doubles
+        if blob == shapely.to_wkb(w, byte_order=1):
+            continue
+        multi += w.geom_type == "MultiPolygon"
+        parts_g, parts_w = list(getattr(g, "geoms", [g])), list(getattr(w, "geoms", [w]))
+        assert len(parts_g) == len(parts_w), name
+        for a, b in zip(parts_g, parts_w, strict=True):
+            assert a.exterior.is_ccw, name
+            assert shapely.hausdorff_distance(a, b) < 1e-11, name
+            assert abs(a.area - b.area) <= 1e-12 * max(b.area, 1e-300), name
+    assert multi > 0  # the split cells were compared (the others byte for byte)
+
+
+def test_geometry_in_and_out_as_wkb(ext: Path) -> None:
+    """DuckDB's GEOMETRY (core from 1.5, the spatial extension's before): polygon fill takes it as it takes its WKB,
+    and dggs_cell_to_boundary_geometry is dggs_cell_to_boundary_wkb's polygon (ST_AsWKB gives the same bytes)."""
+    poly = "POLYGON((170 -10, -170 -10, -170 10, 170 10, 170 -10))"
+    got = rows(ext, f"""
+        SELECT dggs_polygon_to_cells('{poly}'::GEOMETRY, 5, 'overlaps') = dggs_polygon_to_cells(ST_AsWKB('{poly}'::GEOMETRY), 5, 'overlaps') AS same_fill,
+               len(dggs_polygon_to_cells_str('{poly}'::GEOMETRY, 5, 'overlaps')) AS n,
+               dggs_polygon_to_cells(NULL::GEOMETRY, 5, 'center') AS null_fill,
+               hex(ST_AsWKB(dggs_cell_to_boundary_geometry('O321222221000', 2))) AS g,
+               hex(dggs_cell_to_boundary_wkb('O321222221000', 2)) AS w,
+               typeof(dggs_cell_to_boundary_geometry('O321222221000')) AS t,
+               dggs_cell_to_boundary_geometry('nope') AS bad""")[0]  # fmt: skip
+    assert got["same_fill"] is True and got["null_fill"] is None and got["bad"] is None
+    shapely = pytest.importorskip("shapely")
+    assert got["n"] == len(dggs.polygon_to_cells(shapely.from_wkt(poly), 5, mode="overlaps"))
+    assert got["t"] == "GEOMETRY" and got["g"] == got["w"]
+
+
+@pytest.mark.parametrize("kind", ["BIGINT", "VARCHAR"])
+def test_vertices_row_by_row(ext: Path, tmp_path: Path, kind: str) -> None:
+    """dggs_cell_to_vertexes / dggs_vertex_to_latlng / dggs_is_valid_vertex as dggs's, on every cell of levels 0-3
+    (every icosahedron vertex among their corners), cells at the poles and across the antimeridian, all levels."""
+    ids = _shape_ids()
+    src = table(tmp_path / "c.csv", {"u": ids})
+    cell = "u::BIGINT" if kind == "BIGINT" else "dggs_int_to_str(u)"
+    got = rows(ext, f"SELECT dggs_cell_to_vertexes({cell}) AS v FROM {src} ORDER BY i")
+    want = np.asarray(dggs.cell_to_vertexes(ids)).tolist()
+    assert [r["v"] for r in got] == want
+    names = sorted({v for row in want for v in row})
+    bad = ["C401:0", "C401:3", "C401:", ":1", "C401:1x", "C401::1", "", "Z0:1", "C401 :1", "c401:1"]
+    with open(tmp_path / "v.csv", "w", newline="") as f:
+        csv.writer(f).writerows([["v"], *([v] for v in [*names, *bad]), ["NULL"]])
+    got = rows(ext, f"SELECT v, dggs_vertex_to_latlng(v) AS ll, dggs_is_valid_vertex(v) AS ok, "
+                    f"dggs_vertex_to_latlng(v, 'IVEA') AS ivea FROM read_csv('{tmp_path / 'v.csv'}', header=true, "
+                    "columns={'v': 'VARCHAR'}, nullstr='NULL', quote='\"')")  # fmt: skip
+    by = {r["v"]: r for r in got}
+    lat, lng = dggs.vertex_to_latlng(names)
+    ilat, ilng = dggs.Grid("IVEA").vertex_to_latlng(names)
+    assert [(by[v]["ll"]["lat"], by[v]["ll"]["lng"]) for v in names] == list(zip(lat, lng, strict=True))
+    assert [(by[v]["ivea"]["lat"], by[v]["ivea"]["lng"]) for v in names] == list(zip(ilat, ilng, strict=True))
+    assert [by[v]["ok"] for v in [*names, *bad]] == list(dggs.is_valid_vertex([*names, *bad]))
+    assert all(by[v]["ll"] is None for v in bad) and by[None]["ok"] is None and by[None]["ll"] is None
+
+
+#: DuckDB's spatial extension comes from pip (``duckdb-extension-spatial``) for one DuckDB release only, with the
+#: CLI of that release beside it; 1.5.5 is the latest such pair (docs/duckdb.md, "GEOMETRY").
+SPATIAL_VERSION = "1.5.5"
+
+
+@pytest.fixture(scope="module")
+def spatial(ext: Path) -> tuple[Path, Path]:
+    """(CLI, spatial extension file) of DuckDB SPATIAL_VERSION, installed by pip into build/duckdb-spatial/."""
+    target = ROOT / "build" / "duckdb-spatial" / SPATIAL_VERSION
+    cli, found = target / "duckdb_cli" / "duckdb", list(target.glob("duckdb_extension_spatial/extensions/*/spatial.duckdb_extension"))
+    if not cli.is_file() or not found:
+        proc = subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", "--no-deps", "--target", str(target),
+                               f"duckdb-cli=={SPATIAL_VERSION}", f"duckdb-extension-spatial=={SPATIAL_VERSION}"],
+                              capture_output=True, text=True)  # fmt: skip
+        assert proc.returncode == 0, proc.stderr
+        found = list(target.glob("duckdb_extension_spatial/extensions/*/spatial.duckdb_extension"))
+    cli.chmod(0o755)
+    return cli, found[0]
+
+
+def test_spatial_extension_reads_the_polygons(ext: Path, spatial: tuple[Path, Path]) -> None:
+    """The spatial extension as the referee: every boundary polygon of the pole, antimeridian and level 0-3 cells
+    is valid for GEOS (ST_IsValid) with the area shapely gives dggs.cell_to_polygon's, and the fill takes its
+    GEOMETRY as the WKB of it."""
+    shapely = pytest.importorskip("shapely")
+    cli, spatial_ext = spatial
+    ids = _shape_ids()[:4000]
+    values = ", ".join(f"({int(c)})" for c in ids)
+    sql = (f"LOAD '{spatial_ext}'; LOAD '{ext}'; SELECT ST_IsValid(g) AS ok, ST_Area(g) AS area FROM (SELECT i, "
+           f"ST_GeomFromWKB(dggs_cell_to_boundary_wkb(u::UBIGINT, 1)) AS g FROM (SELECT row_number() OVER () AS i, u "
+           f"FROM (VALUES {values}) t(u))) ORDER BY i")  # fmt: skip
+    with open(ROOT / "build" / "duckdb-spatial" / "q.sql", "w") as f:
+        f.write(sql)
+    proc = subprocess.run([str(cli), "-unsigned", "-json", "-f", str(ROOT / "build" / "duckdb-spatial" / "q.sql")],
+                          capture_output=True, text=True, timeout=600)  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    got = json.loads(proc.stdout)
+    want = shapely.area(dggs.cell_to_polygon(ids, densify=1))
+    assert all(r["ok"] is True for r in got)
+    assert np.allclose([r["area"] for r in got], want, rtol=1e-12, atol=0)
+    poly = "POLYGON((170 -10, -170 -10, -170 10, -170 10, 170 10, 170 -10))"
+    proc = subprocess.run([str(cli), "-unsigned", "-json", "-c", f"LOAD '{spatial_ext}'; LOAD '{ext}'; SELECT "
+                           f"dggs_polygon_to_cells(ST_GeomFromText('{poly}'), 4, 'overlaps') = "
+                           f"dggs_polygon_to_cells(ST_AsWKB(ST_GeomFromText('{poly}')), 4, 'overlaps') AS same"],
+                          capture_output=True, text=True, timeout=600)  # fmt: skip
+    assert proc.returncode == 0 and json.loads(proc.stdout) == [{"same": True}], proc.stderr
