@@ -58,12 +58,12 @@ class BuildExt(build_ext):
             self._duckdb_extension()
 
     def _duckdb_extension(self) -> None:
-        """Build the DuckDB extension (libdggs/duckdb/build.py) into the wheel, beside dggs/duckdb.py.
+        """Build the DuckDB extension (libdggs/duckdb/build.py) into the wheel, in the dggs.duckdb package.
 
         ``dggs.duckdb.load`` looks there first. Built only when asked (``DGGS_WITH_DUCKDB_EXTENSION=1 pip wheel .``),
         as it downloads DuckDB's headers (the duckdb sdist, by pip) and compiles the core once more.
         """
-        out = os.path.join(os.path.abspath(self.build_lib), "dggs", "dggs.duckdb_extension")
+        out = os.path.join(os.path.abspath(self.build_lib), "dggs", "duckdb", "dggs.duckdb_extension")
         subprocess.run([sys.executable, os.path.join(HERE, "libdggs", "duckdb", "build.py"), "--out", out], check=True)
 
 

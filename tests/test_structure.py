@@ -20,7 +20,7 @@ The rules:
     single-id fast path lives in ``dggs.index._convert``.
 (c) Only ``dggs.index`` modules import the kernel: ``dggs.index._kernel``,
     any ``dggs.index._k*`` module, ``dggs.index._bits`` and
-    ``dggs.index._codec``.  ``dggs/arrow.py``, ``dggs/server/*``,
+    ``dggs.index._codec``.  ``dggs/arrow/__init__.py``, ``dggs/server/*``,
     ``storage/*`` and the rest go through the verbs or the converter and
     shape modules (``dggs.index._convert``, ``dggs.index._shapes``).
 (d) The geometry floor: ``dggs/geometry/*`` imports nothing from ``dggs``
@@ -28,6 +28,10 @@ The rules:
 (f) Only the kernel floors bind the compiled core: ``dggs._core`` is imported
     by ``dggs.geometry`` and ``dggs.index._kernel`` modules alone.
 (e) Every module is at most 400 lines.
+(g) No import circle anywhere: the graph of module -> imported module (every import, at any depth of the
+    file, a module's own enclosing packages left out since Python loads them anyway) has no cycle.
+(h) The geometry floor loads nothing above it: importing every ``dggs.geometry`` module in a fresh
+    interpreter leaves ``dggs.index``, ``dggs.storage`` and the integrations unloaded.
 
 Each check lists every offence as ``file:line: what``.
 """
@@ -35,6 +39,8 @@ Each check lists every offence as ``file:line: what``.
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -207,6 +213,88 @@ def test_modules_are_at_most_400_lines(folder):
             if n > MAX_LINES:
                 offences.append(f"{path.relative_to(ROOT)}:{n}: {n} lines, over {MAX_LINES}")
     _report(offences)
+
+
+def _import_graph() -> dict[str, set[str]]:
+    """module -> the modules it imports (the deepest known module an import names)."""
+
+    def known(name: str) -> str:
+        while name and name not in MODULES:
+            name = name.rpartition(".")[0]
+        return name
+
+    graph: dict[str, set[str]] = {module: set() for module in MODULES}
+    for module in MODULES:
+        for _, name, _ in _imports(module):
+            target = known(name)
+            if target and target != module and not module.startswith(target + "."):
+                graph[module].add(target)
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components of more than one module (iterative Tarjan)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found = []
+    for root in sorted(graph):
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph[root])))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            node, edges = work[-1]
+            for nxt in edges:
+                if nxt not in index:
+                    index[nxt] = low[nxt] = len(index)
+                    stack.append(nxt)
+                    on_stack.add(nxt)
+                    work.append((nxt, iter(sorted(graph[nxt]))))
+                    break
+                if nxt in on_stack:
+                    low[node] = min(low[node], index[nxt])
+            else:
+                work.pop()
+                if work:
+                    low[work[-1][0]] = min(low[work[-1][0]], low[node])
+                if low[node] == index[node]:
+                    component = []
+                    while True:
+                        member = stack.pop()
+                        on_stack.discard(member)
+                        component.append(member)
+                        if member == node:
+                            break
+                    if len(component) > 1:
+                        found.append(sorted(component))
+    return found
+
+
+def test_cycle_finder_finds_a_planted_circle():
+    """The finder is able to fail: a planted three-module circle is reported, a chain is not."""
+    assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+    assert _cycles({"a": {"b"}, "b": {"c"}, "c": set()}) == []
+
+
+def test_no_import_circle():
+    _report([" -> ".join(component) for component in _cycles(_import_graph())])
+
+
+def test_geometry_floor_loads_nothing_above_it_in_a_fresh_process():
+    geometry = sorted(m for m in MODULES if m == "dggs.geometry" or m.startswith("dggs.geometry."))
+    code = (
+        "import importlib, sys\n"
+        f"for m in {geometry!r}: importlib.import_module(m)\n"
+        "print('\\n'.join(sorted(m for m in sys.modules if m.startswith('dggs'))))"
+    )
+    loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert "dggs.geometry.kernel" in loaded
+    above = [m for m in loaded if not (m in ("dggs", "dggs.errors", "dggs._core") or m.startswith("dggs.geometry"))]
+    assert not above, f"importing the geometry floor loaded {above}"
 
 
 def test_the_checks_see_the_package():

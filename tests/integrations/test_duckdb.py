@@ -305,7 +305,7 @@ def test_docs_examples_run(tmp_path, monkeypatch):
 def test_module_docstring_examples():
     import doctest
 
-    import dggs.duckdb
+    import dggs.duckdb.udfs  # register's examples
 
-    result = doctest.testmod(dggs.duckdb, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    result = doctest.testmod(dggs.duckdb.udfs, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0 and result.attempted > 0

@@ -9,8 +9,8 @@ duckdb = pytest.importorskip("duckdb")
 pa = pytest.importorskip("pyarrow")
 
 import dggs  # noqa: E402
-from dggs._duckdb_edges import EDGE_FUNCTIONS  # noqa: E402
 from dggs.duckdb import register  # noqa: E402
+from dggs.duckdb.edges import EDGE_FUNCTIONS  # noqa: E402
 
 from ..strategies import special_points  # noqa: E402
 

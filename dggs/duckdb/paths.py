@@ -23,8 +23,8 @@ import numpy as np
 import pyarrow as pa
 import shapely
 
-from dggs._duckdb_more import _id_lists, typed_macro
-from dggs.duckdb import _create, _ids, _numbers, _sql_errors, _valid
+from dggs.duckdb.batches import _create, _ids, _numbers, _sql_errors, _valid
+from dggs.duckdb.more import _id_lists, typed_macro
 from dggs.errors import DggsValueError
 from dggs.index.circles import circle_to_cells
 from dggs.index.paths import grid_path_cells, line_to_cells

@@ -20,8 +20,8 @@ from typing import Any
 import numpy as np
 import pyarrow as pa
 
-from dggs._duckdb_more import _lists, typed_macro
-from dggs.duckdb import _ID_KINDS, _LATLNG_ARROW, _numbers, _out, _sql_errors, _valid
+from dggs.duckdb.batches import _ID_KINDS, _LATLNG_ARROW, _numbers, _out, _sql_errors, _valid
+from dggs.duckdb.more import _lists, typed_macro
 from dggs.index.edges import (
     cells_to_directed_edge,
     directed_edge_to_boundary,

@@ -23,10 +23,9 @@ import numpy as np
 import pyarrow as pa
 import shapely
 
-from dggs.duckdb import (
+from dggs.duckdb.batches import (
     _ID_KINDS,
     _LATLNG_ARROW,
-    _MORE_FUNCTIONS,
     _cell_at_level,
     _create,
     _ids,
@@ -45,6 +44,22 @@ from dggs.index.polyfill import polygon_to_cells
 from dggs.index.vertex import cell_to_vertexes
 
 __all__ = ["register_more"]
+
+# the hierarchy, grid, region and vertex functions: name -> (SQL signature, return type, description)
+_MORE_FUNCTIONS: dict[str, tuple[str, str, str]] = {
+    "dggs_cell_to_children": ("(cell ID, level BIGINT)", "ID[]", "descendants at level, in id order"),
+    "dggs_cell_to_center_child": ("(cell ID, level BIGINT)", "ID", "descendant at level holding the centre"),
+    "dggs_grid_disk": ("(cell ID, k BIGINT)", "ID[]", "cells within k edge steps, sorted"),
+    "dggs_grid_ring": ("(cell ID, k BIGINT)", "ID[]", "cells exactly k edge steps away, sorted"),
+    "dggs_grid_distance": ("(a ID, b ID)", "BIGINT", "edge steps between cells of one level"),
+    "dggs_compact_cells": ("(cells ID[])", "ID[]", "fewest cells covering the same area, sorted"),
+    "dggs_uncompact_cells": ("(cells ID[], level BIGINT)", "ID[]", "descendants at level, sorted"),
+    "dggs_cell_to_vertexes": ("(cell ID)", "VARCHAR[]", "ids of the 3 corners"),
+    "dggs_cell_to_boundary": ("(cell ID)", "STRUCT(lat DOUBLE, lng DOUBLE)[]", "the 3 corners"),
+    "dggs_cells_to_polygon_wkb": ("(cells ID[])", "BLOB", "WKB of the cells' union, lng/lat"),
+    "dggs_polygon_to_cells": ("(wkb BLOB, level BIGINT, mode VARCHAR)", "BIGINT[]", "polygon fill"),
+    "dggs_polygon_to_cells_str": ("(wkb BLOB, level BIGINT, mode VARCHAR)", "VARCHAR[]", "the same as string ids"),
+}
 
 
 # ---------------------------------------------------------------------------------------------- ragged results

@@ -21,8 +21,8 @@ def extension_path() -> Path | None:
     Looked for in order: ``$DGGS_DUCKDB_EXTENSION``, a file shipped beside this module, and
     ``build/duckdb/dggs.duckdb_extension`` of the source tree (``make duckdb-extension``).
     """
-    here = Path(__file__).resolve().parent
-    candidates = [here / "dggs.duckdb_extension", here.parent / "build" / "duckdb" / "dggs.duckdb_extension"]
+    here = Path(__file__).resolve().parent  # dggs/duckdb/ (the source tree's root is two folders up)
+    candidates = [here / "dggs.duckdb_extension", here.parents[1] / "build" / "duckdb" / "dggs.duckdb_extension"]
     if os.environ.get("DGGS_DUCKDB_EXTENSION"):
         candidates.insert(0, Path(os.environ["DGGS_DUCKDB_EXTENSION"]))
     for path in candidates:
