@@ -19,6 +19,7 @@ import numpy as np
 
 from .._kernel import codec
 from . import strings
+from .frames import is_polars_series, series_to_arrow
 from .kind import OBJECT, SCALAR_INT, SCALAR_STR, U64, Kind, fail, value_id
 from .values import values_out
 
@@ -188,6 +189,10 @@ def _parse_any(obj: Any) -> _Parsed:
         return p
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _parse_arrow(obj, pa)
+    if is_polars_series(obj):  # read as Arrow, answered as a Series of the same name (.frames)
+        p = _parse_arrow(series_to_arrow(obj), sys.modules["pyarrow"])
+        p.kind = replace(p.kind, container="polars", name=obj.name)
+        return p
     if pd is not None and isinstance(obj, pd.api.extensions.ExtensionArray) and obj.isna().any():
         # numpy reads pd.array([id, <NA>], dtype="Int64") as float64 (NaN, and every id a float): keep the NA, as a Series does
         objs = obj.to_numpy(dtype=object)
@@ -205,7 +210,7 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
 
     Parameters
     ----------
-    obj : str, int, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
+    obj : str, int, sequence, numpy array, pandas Series, pyarrow (Chunked)Array or polars Series
         String ids or 64-bit integer ids (not a mix).
     nulls : bool
         Accept the null id 0 in a numpy array of integer ids (it stays 0): the
