@@ -187,12 +187,13 @@ def _parse_any(obj: Any) -> _Parsed:
         p = _parse_pandas(pd.Series(obj, index=None, name=obj.name), pd)
         p.kind = replace(p.kind, container="pandas-index", index=None)
         return p
-    if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
-        return _parse_arrow(obj, pa)
     if is_polars_series(obj):  # read as Arrow, answered as a Series of the same name (.frames)
-        p = _parse_arrow(series_to_arrow(obj), sys.modules["pyarrow"])
+        arr = series_to_arrow(obj)
+        p = _parse_arrow(arr, sys.modules["pyarrow"])
         p.kind = replace(p.kind, container="polars", name=obj.name)
         return p
+    if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
+        return _parse_arrow(obj, pa)
     if pd is not None and isinstance(obj, pd.api.extensions.ExtensionArray) and obj.isna().any():
         # numpy reads pd.array([id, <NA>], dtype="Int64") as float64 (NaN, and every id a float): keep the NA, as a Series does
         objs = obj.to_numpy(dtype=object)
