@@ -14,9 +14,7 @@ input's type.
 
 Examples
 --------
->>> import numpy as np
-import numpy as np
-import polars as pl
+>>> import polars as pl
 >>> import dggs.polars
 >>> df = pl.DataFrame({"cell": ["C401", "B100"]})
 >>> df.select(pl.col("cell").dggs.cell_to_parent().alias("parent"), pl.col("cell").dggs.get_level())["parent"].to_list()
@@ -180,7 +178,8 @@ class DggsSeries:
             raise AttributeError(f"polars Series have no dggs verb {verb!r}; the verbs are {', '.join(VERBS)}")
 
         def call(*args: Any) -> pl.Series:
-            return pl.select(getattr(pl.lit(self._series).dggs, verb)(*args)).to_series()
+            expr = DggsExpr(pl.lit(self._series))
+            return pl.select(getattr(expr, verb)(*args)).to_series()
 
         return call
 
