@@ -8,16 +8,20 @@ the expected filter answers from those bounds and from geopandas' and DuckDB's r
 
 from __future__ import annotations
 
+import functools
 import json
 
 import numpy as np
 import pytest
 import shapely
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
 
 import dggs
 from dggs._geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent, split_box
 from dggs.arrow import cells_to_table, to_geodataframe, write_cells, write_geoparquet
 
+from ..strategies import examples
 from .geoparquet_rules import violations
 
 pa = pytest.importorskip("pyarrow")
@@ -335,3 +339,41 @@ def test_bad_filter_boxes_raise(box):
 def test_lng_extent_needs_a_range():
     with pytest.raises(dggs.DggsValueError, match="at least one"):
         lng_extent(np.empty(0), np.empty(0))
+
+
+_LEVEL4 = np.asarray(dggs.uncompact_cells(dggs.get_base_cells(), 4))  # 3,240 cells: poles and +-180 included
+_POLYS4 = dggs.cell_to_polygon(_LEVEL4, DENSIFY)
+
+
+@st.composite
+def _plain_boxes(draw):
+    """Plain query boxes (xmin <= xmax), often touching +-180 or a pole."""
+    x = sorted([draw(st.one_of(st.floats(-180.0, 180.0), st.sampled_from([-180.0, 180.0, -179.9, 179.9]))) for _ in range(2)])
+    y = sorted([draw(st.one_of(st.floats(-90.0, 90.0), st.sampled_from([-90.0, 90.0, 89.5, -89.5]))) for _ in range(2)])
+    return (x[0], y[0], x[1], y[1])
+
+
+@settings(max_examples=examples(60), deadline=None)
+@given(box=_plain_boxes())
+@example(box=(170.0, -20.0, 180.0, 20.0))
+@example(box=(-180.0, 80.0, -179.0, 90.0))
+@example(box=(179.999, -90.0, 180.0, 90.0))
+def test_comparing_the_bbox_fields_as_they_are_loses_no_cell(box):
+    """Any plain box: the rows whose ``bbox`` fields meet it, compared as they are (what generic readers do),
+    hold every cell whose polygon meets it (shapely, brute force)."""
+    import pyarrow.compute as pc
+
+    table = _TABLE4()
+    x0, y0, x1, y1 = box
+    f = {k: pc.field(("bbox", k)) for k in ("xmin", "ymin", "xmax", "ymax")}
+    expr = (f["xmin"] <= x1) & (f["xmax"] >= x0) & (f["ymin"] <= y1) & (f["ymax"] >= y0)
+    import pyarrow.dataset as ds
+
+    got = set(ds.dataset(table).to_table(columns=["cell"], filter=expr).column("cell").to_pylist())
+    truth = set(_LEVEL4[shapely.intersects(_POLYS4, shapely.box(*box))])
+    assert truth <= got, sorted(truth - got)[:5]
+
+
+@functools.lru_cache(maxsize=1)
+def _TABLE4():  # noqa: N802
+    return cells_to_table(_LEVEL4, densify=DENSIFY)
