@@ -70,3 +70,26 @@ def test_lonboard_draws_it_directly(table):
     lonboard = pytest.importorskip("lonboard")
     layer = lonboard.viz(table).layers[0]
     assert type(layer).__name__ == "PolygonLayer" and len(layer.table) == CELLS.size
+
+
+class _ArrayOnly:
+    """An Arrow producer that is not pyarrow: only ``__arrow_c_array__``."""
+
+    def __init__(self, arr):
+        self._arr = arr
+
+    def __arrow_c_array__(self, requested_schema=None):
+        return self._arr.__arrow_c_array__(requested_schema)
+
+
+@pytest.mark.parametrize("wrap", [_ArrayOnly, _StreamOnly], ids=["array-capsule", "stream-capsule"])
+@pytest.mark.parametrize("ids", [["C401", "O311", "A0"], [int(i) for i in dggs.str_to_int(["C401", "O311", "A0"])]],
+                         ids=["str", "int"])
+def test_any_arrow_producer_goes_in_and_pyarrow_comes_out(wrap, ids):
+    source = pa.array(ids, type=pa.uint64() if isinstance(ids[0], int) else pa.string())
+    given = wrap(source if wrap is _ArrayOnly else pa.chunked_array([source]))
+    parents = dggs.cell_to_parent(given)
+    assert isinstance(parents, (pa.Array, pa.ChunkedArray))
+    assert parents.to_pylist() == [dggs.cell_to_parent(c) for c in ids]  # each id alone, the referee
+    table = cells_to_table(given, densify=0)
+    assert table.column("cell").to_pylist() == ["C401", "O311", "A0"]
