@@ -22,6 +22,7 @@ import numpy as np
 from dggs.errors import InvalidCellError
 
 from ._convert import Kind, cells_in, cells_out, values_out
+from ._convert.frames import is_polars_series, polars_out, series_to_arrow
 from ._convert.kind import SCALAR_INT, SCALAR_STR
 from ._convert.strings import format_int, parse_str, valid_int
 
@@ -140,6 +141,8 @@ def _map(obj: Any, back: bool) -> Any:
         return pd.Series(new, index=obj.index, name=obj.name, dtype=dtype)
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _arrow(obj, back, pa)
+    if is_polars_series(obj):
+        return polars_out(_arrow(series_to_arrow(obj), back, sys.modules["pyarrow"]), obj.name)
     return _leaf(obj, back)
 
 
@@ -167,6 +170,8 @@ def _leaves(obj: Any) -> list[Any]:
         return obj.reshape(-1).tolist()
     if hasattr(obj, "to_pylist"):
         return list(obj.to_pylist())
+    if is_polars_series(obj):
+        return list(obj.to_list())
     if hasattr(obj, "tolist"):
         return list(obj.tolist())
     return [obj]

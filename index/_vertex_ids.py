@@ -15,6 +15,7 @@ import numpy as np
 
 from dggs.errors import DggsValueError
 
+from ._convert.frames import is_polars_series
 from ._convert.kind import Kind
 from ._corners import check_canonical, parse_vertex, vertex_keys
 
@@ -26,7 +27,7 @@ def _container(obj: Any) -> tuple[list[Any], Kind] | None:
 
     A container is what :func:`cell_to_vertexes` gives and what the cell verbs take: a list or
     tuple (nested lists of one shape), a numpy array (``U``, ``S`` or object), a pandas Series or
-    Index, a pyarrow (Chunked)Array.  Anything else is one vertex id (checked by the verb).
+    Index, a pyarrow (Chunked)Array, a polars Series.  Anything else is one vertex id (checked by the verb).
     """
     mod = type(obj).__module__
     if mod.startswith("pandas"):
@@ -43,6 +44,8 @@ def _container(obj: Any) -> tuple[list[Any], Kind] | None:
         if isinstance(obj, (pa.Array, pa.ChunkedArray)):
             return obj.to_pylist(), Kind("arrow", "str", (len(obj),), chunked=isinstance(obj, pa.ChunkedArray))
         return None
+    if is_polars_series(obj):
+        return obj.to_list(), Kind("polars", "str", (len(obj),), name=obj.name)
     if isinstance(obj, np.ndarray):
         if obj.ndim == 0:
             return None

@@ -19,6 +19,7 @@ from dggs.errors import CoordinateError, DggsValueError
 from ._checks import check_level, check_projection, is_choice
 from ._convert import VALUE, Op, apply_pair, as_float_scalar, coords_in, pair_kind, values_out
 from ._convert.coords import _container
+from ._convert.frames import polars_out
 from ._kernel import points as kp
 
 __all__ = ["great_circle_distance", "cell_centers_distance", "geodesic_to_cells", "DISTANCE_UNITS"]
@@ -253,9 +254,11 @@ def _geodesics(
         except DggsValueError as e:
             raise type(e)(f"{e} (line at index {i})" if a_lat.size > 1 else str(e)) from None
     kind = pair_kind(ka, kb, shape)
-    if kind.container == "arrow":
+    if kind.container in ("arrow", "polars"):
         import pyarrow as pa
 
         arr = pa.array([line.tolist() for line in lines])
+        if kind.container == "polars":
+            return polars_out(arr, kind.name)
         return pa.chunked_array([arr], type=arr.type) if kind.chunked else arr
     return values_out(lines, kind)

@@ -271,7 +271,7 @@ def vertex_to_cells(vertex: Any) -> Any:
         for i in range(owners.size):
             names = sorted(format_int(int(c)) or "" for c in fan[i, : size[i]])
             rows[i, : len(names)] = names
-    return values_out(rows.astype(str) if kind.container in ("numpy", "arrow") else rows, kind, (MAX_FAN,), rows=True)
+    return values_out(rows.astype(str) if kind.container in ("numpy", "arrow", "polars") else rows, kind, (MAX_FAN,), rows=True)
 
 
 def vertex_neighbors(cell: Any) -> Any:

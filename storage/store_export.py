@@ -195,7 +195,7 @@ def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]]
 def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
     """``table`` (of :func:`dggs.arrow.cells_to_table`) with its cells drawn on ``Grid(projection)``.
 
-    Its ``geometry`` (counter-clockwise WKB), ``bbox`` (antimeridian bounds as GeoParquet 1.1 has them)
+    Its ``geometry`` (counter-clockwise WKB), ``bbox`` (split cells -180..180, as dggs.arrow writes them)
     and ``geo`` metadata are replaced.
     """
     import json
@@ -204,14 +204,14 @@ def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
     import pyarrow as pa
     import shapely
 
-    from dggs.arrow.geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata
+    from dggs.arrow.geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata, widen_wrapped
 
     cells = np.asarray(table.column("cell").to_pylist(), dtype=str)
     polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if len(cells) else np.empty(0, object)
     polys = shapely.orient_polygons(polys, exterior_cw=False)
     geometry = pa.array(shapely.to_wkb(polys, byte_order=1, output_dimension=2).tolist(), type=pa.binary())
     bounds = covering_bounds(geometry, shapely.bounds(polys).reshape(-1, 4))
-    bbox = pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(BBOX_TYPE))
+    bbox = pa.StructArray.from_arrays([pa.array(widen_wrapped(bounds)[:, i]) for i in range(4)], fields=list(BBOX_TYPE))
     names = table.column_names
     table = table.set_column(names.index("bbox"), table.schema.field("bbox"), bbox)
     table = table.set_column(names.index("geometry"), table.schema.field("geometry"), geometry)

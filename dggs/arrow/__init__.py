@@ -13,8 +13,8 @@ module adds the geometry side without a Python loop per cell:
   ``cell_id`` (int64 id), any property columns, a ``bbox`` covering struct
   and a WKB ``geometry`` column, with the ``geo`` schema metadata.  Both the
   ``bbox`` group and ``geometry`` are ``required``, and a cell split at the
-  antimeridian has ``xmin > xmax`` (RFC 7946 §5.2), as GeoParquet 1.1
-  §"Bounding Box Columns" asks (:mod:`dggs.arrow.geoparquet`).
+  antimeridian has ``xmin=-180, xmax=180``, so that readers comparing the
+  fields as they are lose no row (:mod:`dggs.arrow.geoparquet`).
 * :func:`write_geoparquet` writes such a table whole or not at all.
 * :func:`bbox_filter` (pyarrow) and :func:`bbox_sql` (DuckDB) select the rows
   whose ``bbox`` meets a box, honouring ``xmin > xmax``.
@@ -38,6 +38,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import re
@@ -55,6 +56,8 @@ from dggs.arrow.geoparquet import (
     covering_bounds,
     file_bbox,
     geo_metadata,
+    split_box,
+    widen_wrapped,
 )
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_densify
@@ -80,6 +83,7 @@ __all__ = [
     "GEOPARQUET_VERSION",
     "bbox_filter",
     "bbox_sql",
+    "split_box",
 ]
 
 _ENCODINGS = ("wkb", "geoarrow")
@@ -155,14 +159,30 @@ def geoarrow_field(name: str = "geometry", encoding: str = "wkb", cells: Any = N
         A malformed id among the ``cells``.
     """
     _check_encoding(encoding)
-    meta = {b"ARROW:extension:metadata": json.dumps({"crs": "OGC:CRS84", "crs_type": "authority_code"}).encode()}
     if encoding == "wkb":
-        return pa.field(name, pa.binary(), nullable=False, metadata={b"ARROW:extension:name": b"geoarrow.wkb", **meta})
+        return pa.field(name, pa.binary(), nullable=False, metadata=_geoarrow_metadata("geoarrow.wkb"))
     if cells is None:
         raise DggsValueError('geoarrow_field(encoding="geoarrow") needs the cells, to tell polygon from multipolygon')
     ids, _ = cells_in(cells)
     arr, ext = geoarrow(ids.reshape(-1), densify if densify is None else check_densify(densify))
-    return pa.field(name, arr.type, nullable=False, metadata={b"ARROW:extension:name": ext.encode(), **meta})
+    return pa.field(name, arr.type, nullable=False, metadata=_geoarrow_metadata(ext))
+
+
+@functools.lru_cache(maxsize=1)
+def _crs84_projjson() -> dict[str, Any]:
+    import pyproj
+
+    return pyproj.CRS.from_user_input("OGC:CRS84").to_json_dict()
+
+
+def _geoarrow_metadata(extension: str) -> dict[bytes, bytes]:
+    """A GeoArrow field's metadata: the extension name and the CRS as PROJJSON.
+
+    The GeoArrow spec's "Extension metadata": ``crs`` a PROJJSON object with ``crs_type`` ``"projjson"``
+    (here OGC:CRS84, lng/lat on WGS84); ``edges`` left out means planar, as the WKB's are.
+    """
+    meta = {"crs": _crs84_projjson(), "crs_type": "projjson"}
+    return {b"ARROW:extension:name": extension.encode(), b"ARROW:extension:metadata": json.dumps(meta).encode()}
 
 
 def _bbox_array(bounds: np.ndarray) -> pa.StructArray:
@@ -225,14 +245,16 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
                 raise DggsValueError(f"property {name!r} has {len(arr)} values for {n} cells")
             columns[name] = arr
     bounds = covering_bounds(geometry, bounds)  # RFC 7946 §5: xmin > xmax across the antimeridian
-    columns["bbox"] = _bbox_array(bounds)
+    columns["bbox"] = _bbox_array(widen_wrapped(bounds))  # ... and -180..180 in the rows (dggs._geoparquet)
     columns["geometry"] = geometry
     table = pa.table(columns)
     fields = [table.schema.field(i) for i in range(table.num_columns)]
     # GeoParquet 1.1 §"Bounding Box Columns": "The repetition of a bounding box column MUST match the
     # geometry column's repetition": both required, as no cell lacks either.
     fields[-2] = pa.field("bbox", BBOX_TYPE, nullable=False)
-    fields[-1] = pa.field("geometry", geometry.type, nullable=False)
+    # Tagged as GeoArrow too (geoarrow.wkb with the CRS as PROJJSON), so GeoDataFrame.from_arrow, DuckDB
+    # and lonboard find the geometry in the table itself, not only in a file's "geo" metadata.
+    fields[-1] = pa.field("geometry", geometry.type, nullable=False, metadata=_geoarrow_metadata("geoarrow.wkb"))
     meta = {b"geo": json.dumps(geo_metadata(types, file_bbox(bounds))).encode()}
     return table.cast(pa.schema(fields, metadata=meta))
 

@@ -8,14 +8,22 @@ Every GeoParquet file dggs writes (``CellStore.export``, ``dggs export``,
   ``required`` in the Parquet schema (no row lacks either): GeoParquet 1.1
   §"Bounding Box Columns": "The repetition of a bounding box column MUST
   match the geometry column's repetition".
-* Per-row bounds follow RFC 7946 §5 as GeoParquet 1.1 §"Bounding Box
-  Columns" asks: a cell split at the antimeridian gets ``xmin > xmax``
-  (RFC 7946 §5.2, e.g. ``[170, ..., -170, ...]``), not ``[-180, 180]``;
-  only a cell that goes all the way round a pole spans every longitude
-  (RFC 7946 §5.3).  The file's ``bbox`` follows the same rule.
-* :func:`bbox_filter` and :func:`bbox_sql` are filters that honour
-  ``xmin > xmax`` (readers that compare the fields naively, as geopandas'
-  ``read_parquet(bbox=...)`` does, leave such cells out of every query).
+* Per-row bounds are plain ``xmin <= xmax`` boxes that every reader can
+  compare field by field: a cell split at the antimeridian (a MultiPolygon
+  with parts at +180 and -180) gets ``[-180, ymin, 180, ymax]``
+  (:func:`widen_wrapped`), as geopandas' own writer gives it.  The RFC 7946
+  §5.2 form, ``xmin > xmax``, is what GeoParquet 1.1 §"Bounding Box
+  Columns" points to, but geopandas' ``read_parquet(bbox=...)``, a pyarrow
+  dataset filter and a DuckDB ``WHERE`` written as the spec's example
+  compare the fields as they are and so lost every such row (issue 36:
+  0 of the 24 level-3 cells a box at (170, -20, -170, 20) meets).  Widened,
+  a row is read by every query at its latitudes: a few extra rows, none lost,
+  and still one row per cell, so a join or a count on the id is unchanged.
+* The file's ``bbox`` keeps RFC 7946 §5.2 (``xmin > xmax`` when the cells
+  wrap): it is one value, for a map's extent, and it filters no row.
+* :func:`bbox_filter` and :func:`bbox_sql` are filters that also honour
+  ``xmin > xmax`` rows (files from dggs before this layout) and a query box
+  across the antimeridian (``box[0] > box[2]``).
 
 Examples
 --------
@@ -35,7 +43,7 @@ import numpy as np
 from dggs.errors import DggsValueError
 
 __all__ = ["GEOPARQUET_VERSION", "BBOX_TYPE", "bbox_filter", "bbox_sql", "covering_bounds", "file_bbox",
-           "geo_metadata", "lng_extent"]
+           "geo_metadata", "lng_extent", "split_box", "widen_wrapped"]
 
 GEOPARQUET_VERSION = "1.1.0"
 _FIELDS = ("xmin", "ymin", "xmax", "ymax")
@@ -128,6 +136,49 @@ def covering_bounds(geometry: Any, bounds: np.ndarray) -> np.ndarray:
     return out
 
 
+def widen_wrapped(bounds: np.ndarray) -> np.ndarray:
+    """The rows of :func:`covering_bounds` that wrap (``xmin > xmax``) widened to ``xmin=-180, xmax=180``.
+
+    This is the ``bbox`` column dggs writes: a reader comparing the fields as
+    they are (``xmin <= box_xmax and xmax >= box_xmin``, GeoParquet 1.1's own
+    example) then keeps a cell split at the antimeridian for every query at its
+    latitudes, rather than for none.
+
+    Examples
+    --------
+    >>> widen_wrapped(np.array([[170.0, -5.0, -170.0, 5.0], [1.0, 2.0, 3.0, 4.0]])).tolist()
+    [[-180.0, -5.0, 180.0, 5.0], [1.0, 2.0, 3.0, 4.0]]
+    """
+    out = np.array(bounds, dtype=float, copy=True)
+    if out.size:
+        wrap = out[:, 0] > out[:, 2]
+        out[wrap, 0], out[wrap, 2] = -180.0, 180.0
+    return out
+
+
+def split_box(box: Any) -> list[tuple[float, float, float, float]]:
+    """A query box as one or two plain boxes: ``xmin > xmax`` (across the antimeridian) becomes its two sides.
+
+    geopandas' ``read_parquet(bbox=...)`` and the plain comparisons of a
+    pyarrow or DuckDB filter take ``xmin <= xmax`` only; read each box this
+    gives and concatenate (the rows are disjoint unless a cell meets both).
+
+    Raises
+    ------
+    DggsValueError
+        As :func:`bbox_filter`.
+
+    Examples
+    --------
+    >>> split_box((170, -20, -170, 20))
+    [(170.0, -20.0, 180.0, 20.0), (-180.0, -20.0, -170.0, 20.0)]
+    """
+    x0, y0, x1, y1 = _check_box(box)
+    if x0 <= x1:
+        return [(x0, y0, x1, y1)]
+    return [(x0, y0, 180.0, y1), (-180.0, y0, x1, y1)]
+
+
 def file_bbox(bounds: np.ndarray) -> list[float] | None:
     """The file's ``bbox`` (GeoParquet 1.1 §"bbox", RFC 7946 §5) over per-row bounds; None without rows."""
     if bounds.shape[0] == 0:
@@ -155,8 +206,10 @@ def bbox_filter(box: Any, column: str = "bbox") -> Any:
 
     ``box`` is (xmin, ymin, xmax, ymax) in degrees; ``xmin > xmax`` asks for
     a box across the antimeridian.  Pass it as ``filters=`` to
-    ``geopandas.read_parquet`` or ``filter=`` to a pyarrow dataset: unlike
-    ``read_parquet(bbox=...)``, it keeps the cells split at the antimeridian.
+    ``geopandas.read_parquet`` or ``filter=`` to a pyarrow dataset.  On the
+    files dggs writes now, a plain box gives the rows ``read_parquet(bbox=box)``
+    gives; the filter also reads older files, whose split cells have
+    ``xmin > xmax`` rows, and boxes across the antimeridian in one go.
 
     Raises
     ------

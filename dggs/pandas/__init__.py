@@ -50,6 +50,7 @@ except ImportError as exc:  # pragma: no cover - exercised only without the extr
     raise ImportError("dggs.pandas needs the 'pandas' extra: pip install 'dggs[pandas]'") from exc
 
 from dggs.pandas import join as _join  # noqa: E402 - after the extra's check
+from dggs.pandas.cells import CellVerbs  # noqa: E402
 from dggs.pandas.frames import (  # noqa: E402
     Cells,
     ColumnError,
@@ -70,8 +71,8 @@ _MODES = ("center", "contains", "overlaps")
 
 
 @pd.api.extensions.register_dataframe_accessor("dggs")
-class DggsAccessor:
-    """The ``df.dggs`` accessor (registered by ``import dggs.pandas``)."""
+class DggsAccessor(CellVerbs):
+    """The ``df.dggs`` accessor (registered by ``import dggs.pandas``; the per-cell verbs: :mod:`dggs._pandas_cells`)."""
 
     def __init__(self, frame: pd.DataFrame):
         self._df = frame

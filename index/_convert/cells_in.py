@@ -19,6 +19,7 @@ import numpy as np
 
 from .._kernel import codec
 from . import strings
+from .frames import is_polars_series, series_to_arrow
 from .kind import OBJECT, SCALAR_INT, SCALAR_STR, U64, Kind, fail, value_id
 from .values import values_out
 
@@ -186,12 +187,23 @@ def _parse_any(obj: Any) -> _Parsed:
         p = _parse_pandas(pd.Series(obj, index=None, name=obj.name), pd)
         p.kind = replace(p.kind, container="pandas-index", index=None)
         return p
+    if is_polars_series(obj):  # read as Arrow, answered as a Series of the same name (.frames)
+        arr = series_to_arrow(obj)
+        p = _parse_arrow(arr, sys.modules["pyarrow"])
+        p.kind = replace(p.kind, container="polars", name=obj.name)
+        return p
     if pa is not None and isinstance(obj, (pa.Array, pa.ChunkedArray)):
         return _parse_arrow(obj, pa)
     if pd is not None and isinstance(obj, pd.api.extensions.ExtensionArray) and obj.isna().any():
         # numpy reads pd.array([id, <NA>], dtype="Int64") as float64 (NaN, and every id a float): keep the NA, as a Series does
         objs = obj.to_numpy(dtype=object)
         return _parse_numpy(objs, Kind("numpy", "str", objs.shape, dtype=objs.dtype))
+    if hasattr(obj, "__arrow_c_array__") or hasattr(obj, "__arrow_c_stream__"):
+        # any Arrow producer (arro3, nanoarrow, ...) through the Arrow PyCapsule interface: pyarrow out
+        import pyarrow
+
+        arr = pyarrow.array(obj) if hasattr(obj, "__arrow_c_array__") else pyarrow.chunked_array(obj)
+        return _parse_arrow(arr, pyarrow)
     if hasattr(obj, "__array__"):
         arr = np.asarray(obj)
         return _parse_numpy(arr, Kind("numpy", "str", arr.shape, dtype=arr.dtype))
@@ -205,7 +217,8 @@ def cells_in(obj: Any, nulls: bool = False) -> tuple[np.ndarray, Kind]:
 
     Parameters
     ----------
-    obj : str, int, sequence, numpy array, pandas Series or pyarrow (Chunked)Array
+    obj : str, int, sequence, numpy array, pandas Series, pyarrow (Chunked)Array, polars Series, or any
+        object exporting an Arrow array or stream (``__arrow_c_array__`` / ``__arrow_c_stream__``; pyarrow out)
         String ids or 64-bit integer ids (not a mix).
     nulls : bool
         Accept the null id 0 in a numpy array of integer ids (it stays 0): the

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from . import strings
+from .frames import polars_out
 from .kind import I64, OBJECT, U64, Kind, fail
 
 __all__ = ["cells_out", "cells_out_flat", "ids_array"]
@@ -147,7 +148,8 @@ def cells_out(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> An
         (``U``, ``S``, object, StringDType, int64, else uint64); a pandas
         Series with the same index and name (of lists with trailing dims); a
         pyarrow (Chunked)Array of the same string or integer type (a list
-        array with trailing dims).  The null id 0 is ``""`` or ``0`` in numpy,
+        array with trailing dims); a polars Series of the same name (of lists
+        with trailing dims).  The null id 0 is ``""`` or ``0`` in numpy,
         pandas and list outputs, a null in Arrow outputs, and is dropped from
         the lists made for trailing dims.
 
@@ -172,6 +174,8 @@ def cells_out(ids: np.ndarray, kind: Kind, trailing: tuple[int, ...] = ()) -> An
         return sys.modules["pandas"].Index(_pandas(ids, replace(kind, index=None), trailing), name=kind.name)
     if c == "arrow":
         return _arrow(ids, kind, trailing)
+    if c == "polars":
+        return polars_out(_arrow(ids, replace(kind, container="arrow", chunked=False), trailing), kind.name)
     return _pylist(ids, kind, trailing)
 
 

@@ -1,7 +1,7 @@
 """Coordinates in any container in: flat float64 arrays and the :class:`Kind` the answer goes out in.
 
-Latitudes and longitudes come as numbers, lists, numpy arrays, pandas Series
-or pyarrow arrays; the answer (ids via :func:`.cells_out.cells_out`, values
+Latitudes and longitudes come as numbers, lists, numpy arrays, pandas Series,
+pyarrow arrays or polars Series; the answer (ids via :func:`.cells_out.cells_out`, values
 via :func:`.values.values_out`) goes back in the same kind of container.
 """
 
@@ -14,6 +14,7 @@ import numpy as np
 
 from dggs.errors import CoordinateError
 
+from .frames import is_polars_series, series_to_arrow
 from .kind import OBJECT, Kind
 
 
@@ -28,6 +29,8 @@ def _container(obj: Any) -> tuple[str, Any] | None:
         pa = sys.modules["pyarrow"]
         if isinstance(obj, (pa.Array, pa.ChunkedArray)):
             return "arrow", isinstance(obj, pa.ChunkedArray)
+    if is_polars_series(obj):
+        return "polars", None
     if isinstance(obj, np.ndarray):
         return ("numpy", None) if obj.ndim else None
     if isinstance(obj, (list, tuple)):
@@ -81,6 +84,9 @@ def coords_in(lat: Any, lng: Any) -> tuple[np.ndarray, np.ndarray, Kind]:
         kind = Kind("pandas-index", "str", shape, dtype=OBJECT, name=name) if len(shape) == 1 else Kind("numpy", "str", shape)
     elif found[0] == "arrow":
         kind = Kind("arrow", "str", shape, chunked=bool(found[1]))
+    elif found[0] == "polars":
+        name = lat.name if _container(lat) else lng.name
+        kind = Kind("polars", "str", shape, name=name) if len(shape) == 1 else Kind("numpy", "str", shape)
     else:
         kind = Kind(found[0], "str", shape)
     lat_f = np.ascontiguousarray(np.broadcast_to(lat_a, shape), dtype=np.float64).reshape(-1)
@@ -111,6 +117,8 @@ def _flat_values(obj: Any) -> tuple[np.ndarray, Kind] | None:
         pa = sys.modules["pyarrow"]
         flat = obj.combine_chunks() if isinstance(obj, pa.ChunkedArray) else obj
         return flat.to_numpy(zero_copy_only=False), Kind("arrow", "int", (len(obj),), chunked=bool(extra))
+    if c == "polars":
+        return obj.to_numpy(), Kind("polars", "int", (len(obj),), name=obj.name)
     if c == "numpy":
         return obj.reshape(-1), Kind("numpy", "int", obj.shape)
     try:
@@ -146,6 +154,8 @@ def _as_numbers(value: Any, name: str) -> np.ndarray:
     """``value`` as a numeric array; :class:`CoordinateError` naming the first value that is not a number."""
     if (_container(value) or ("",))[0] == "arrow":
         return _from_arrow(value, name)
+    if is_polars_series(value):
+        return _from_arrow(series_to_arrow(value), name)
     if isinstance(value, np.ma.MaskedArray):  # masked entries are missing values, not their hidden data
         mask = np.ma.getmaskarray(value)
         if mask.any():

@@ -35,7 +35,8 @@ class Kind:
     """What came into :func:`cells_in`, and what :func:`cells_out` rebuilds.
 
     ``container`` is ``'scalar'``, ``'list'``, ``'tuple'``, ``'numpy'``,
-    ``'pandas'`` (a Series), ``'pandas-index'`` or ``'arrow'``; ``form`` is ``'str'`` or ``'int'``;
+    ``'pandas'`` (a Series), ``'pandas-index'``, ``'arrow'`` or ``'polars'`` (a Series: read and
+    answered as Arrow, :mod:`.frames`); ``form`` is ``'str'`` or ``'int'``;
     ``shape`` is the input's shape (``()`` for a scalar); ``dtype`` the numpy
     dtype, pandas dtype or pyarrow type; ``index`` and ``name`` a pandas
     Series' own; ``chunked`` whether a pyarrow ChunkedArray came in.
@@ -102,7 +103,7 @@ def as_form(kind: Kind, form: str) -> Kind:
     dt: Any = {"numpy": U64 if form == "int" else np.dtype("U1"), "pandas": pandas_dt, "pandas-index": pandas_dt}.get(
         kind.container
     )
-    if kind.container == "arrow":
+    if kind.container in ("arrow", "polars"):
         pa = sys.modules["pyarrow"]
         dt = pa.uint64() if form == "int" else pa.string()
     return replace(kind, form=form, dtype=dt)

@@ -4,7 +4,8 @@ Levels, faces, areas, validity flags, centres, boundaries and polygons are
 not ids, but they go back in the kind of container the ids (or coordinates)
 came in, as ids do (:mod:`.cells_out`): a Python scalar for a scalar, a list
 for a list or tuple, a numpy array of the input's shape, a pandas Series on
-the input's index, a pyarrow Array (or ChunkedArray) for pyarrow input.
+the input's index, a pyarrow Array (or ChunkedArray) for pyarrow input, a
+polars Series of the same name for a polars Series.
 Trailing dimensions (the corners of a boundary) become nested lists, Series
 of lists, or fixed-size list arrays.
 """
@@ -12,11 +13,13 @@ of lists, or fixed-size list arrays.
 from __future__ import annotations
 
 import sys
+from dataclasses import replace
 from math import prod
 from typing import Any
 
 import numpy as np
 
+from .frames import polars_out
 from .kind import Kind
 
 __all__ = ["values_out"]
@@ -107,4 +110,6 @@ def values_out(values: np.ndarray, kind: Kind, trailing: tuple[int, ...] = (), r
         return sys.modules["pandas"].Index(_pandas(values, kind, trailing), name=kind.name)
     if c == "arrow":
         return _arrow(values, kind, trailing)
+    if c == "polars":
+        return polars_out(_arrow(values, replace(kind, chunked=False), trailing), kind.name)
     return values.reshape(shape).tolist()

@@ -46,6 +46,7 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+import polars as pl
 import pyarrow as pa
 import pytest
 import shapely
@@ -86,11 +87,16 @@ def _numpy(v):
     return arr
 
 
+def _polars(v):
+    return pl.Series("v", _arrow(v))  # as polars reads it from Arrow (a uint64 past 2**63 included)
+
+
 WRAPS: dict[str, Callable[[Any], Any]] = {
     "list": lambda v: [v],
     "numpy": _numpy,
     "pandas": lambda v: pd.Series([v]),
     "arrow": _arrow,
+    "polars": _polars,  # issue 36
 }
 
 
@@ -98,6 +104,8 @@ def py(v):
     """A result as plain Python values (lists for every container, WKB hex for geometries)."""
     if isinstance(v, (pa.Array, pa.ChunkedArray)):
         return py(v.to_pylist())
+    if isinstance(v, pl.Series):
+        return py(v.to_list())
     if isinstance(v, pd.DataFrame):
         return [py(list(row)) for row in v.itertuples(index=False)]
     if isinstance(v, (pd.Series, np.ndarray)):

@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import polars as pl
 import pyarrow as pa
 import pytest
 import shapely
@@ -90,6 +91,11 @@ ID_KINDS = {
     "arrow-binary": (lambda: pa.array([c.encode() for c in CELLS], pa.binary()), "arrow"),
     "arrow-large_binary": (lambda: pa.array([c.encode() for c in CELLS], pa.large_binary()), "arrow"),
     "arrow-dictionary": (lambda: pa.array(CELLS).dictionary_encode(), "arrow"),
+    # issue 36: polars in, polars out
+    "polars-string": (lambda: pl.Series("cells", CELLS), "polars"),
+    "polars-uint64": (lambda: pl.Series("cells", INTS, dtype=pl.UInt64), "polars"),
+    "polars-int64": (lambda: pl.Series("cells", INTS, dtype=pl.Int64), "polars"),
+    "polars-categorical": (lambda: pl.Series("cells", CELLS, dtype=pl.Categorical), "polars"),
 }
 
 # name -> (call, scalar type, shape): "aligned" (one value per id), "rows" (several values per id),
@@ -174,6 +180,12 @@ def _same_kind(out, kind: str, given, shape: str) -> str | None:
         if not isinstance(out, pa.Array):
             return f"expected a pyarrow Array, got {type(out).__name__}"
         return None if shape == "flat" or len(out) == len(given) else f"expected {len(given)} rows, got {len(out)}"
+    if kind == "polars":
+        if not isinstance(out, pl.Series):
+            return f"expected a polars Series, got {type(out).__name__}"
+        if shape != "flat" and out.name != given.name:
+            return f"expected the name {given.name!r}, got {out.name!r}"
+        return None if shape == "flat" or len(out) == len(given) else f"expected {len(given)} rows, got {len(out)}"
     if kind == "chunked":
         if not isinstance(out, pa.ChunkedArray):
             return f"expected a pyarrow ChunkedArray, got {type(out).__name__}"
@@ -217,6 +229,7 @@ COORD_KINDS = {
     "pandas-index": (lambda v: pd.Index(v, name="coord"), "index"),
     "arrow-float64": (lambda v: pa.array(v, pa.float64()), "arrow"),
     "chunked-float64": (lambda v: pa.chunked_array([v[:1], v[1:]], pa.float64()), "chunked"),
+    "polars-float64": (lambda v: pl.Series("coord", v), "polars"),
 }
 COORD_FUNCS = {
     "latlng_to_cell": (lambda a, b: dggs.latlng_to_cell(a, b, 9), str),
@@ -278,6 +291,7 @@ TEXT_KINDS = {
     "pandas-index": (lambda v: pd.Index(v, name="v"), "index"),
     "arrow-string": (lambda v: pa.array(v, pa.string()), "arrow"),
     "chunked-string": (lambda v: pa.chunked_array([v[:1], v[1:]]), "chunked"),
+    "polars-string": (lambda v: pl.Series("v", v), "polars"),
 }
 VERTEX_FUNCS = {
     "is_valid_vertex": (dggs.is_valid_vertex, bool, "aligned"),

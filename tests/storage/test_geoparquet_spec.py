@@ -8,16 +8,21 @@ the expected filter answers from those bounds and from geopandas' and DuckDB's r
 
 from __future__ import annotations
 
+import functools
 import json
 
 import numpy as np
 import pytest
 import shapely
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
 
 import dggs
+from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent, split_box
 from dggs.arrow import cells_to_table, to_geodataframe, write_cells, write_geoparquet
 from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent
 
+from ..strategies import examples
 from .geoparquet_rules import violations
 
 pa = pytest.importorskip("pyarrow")
@@ -114,14 +119,19 @@ def _arc(lng: np.ndarray) -> tuple[float, float]:
     return (float(x[0]), float(x[-1])) if k == x.size - 1 else (float(x[k + 1]), float(x[k]))
 
 
-def _brute_bounds(cells: np.ndarray) -> np.ndarray:
-    """(N, 4) bounds of the cells' polygons from all their points (RFC 7946 §5: xmin > xmax across +-180)."""
+def _brute_bounds(cells: np.ndarray, widen: bool = False) -> np.ndarray:
+    """(N, 4) bounds of the cells' polygons from all their points (RFC 7946 §5: xmin > xmax across +-180).
+
+    ``widen``: as the files have them, an arc across +-180 as every longitude, -180..180.
+    """
     xy, row = shapely.get_coordinates(dggs.cell_to_polygon(cells, DENSIFY), return_index=True)
     out = np.empty((cells.size, 4))
     for i in range(cells.size):
         lng, lat = xy[row == i].T
         out[i, 0], out[i, 2] = _arc(lng)
         out[i, 1], out[i, 3] = lat.min(), lat.max()
+        if widen and out[i, 0] > out[i, 2]:
+            out[i, 0], out[i, 2] = -180.0, 180.0
     return out
 
 
@@ -158,26 +168,72 @@ def test_geopandas_and_duckdb_read_every_file(files):
         assert [bytes(r[5]) for r in rows] == table.column("geometry").to_pylist()  # DuckDB sees the same WKB
         cells = np.asarray(table.column("cell").to_pylist())
         got = np.array([r[1:5] for r in rows])
-        want = _brute_bounds(cells)  # bounds from the boundary points, not from the file
+        want = _brute_bounds(cells, widen=True)  # bounds from the boundary points, not from the file
         np.testing.assert_allclose(got, want, atol=1e-7)
+        assert (got[:, 0] <= got[:, 2]).all()  # every row a plain box: readers comparing fields lose none
 
 
 def test_bbox_filters_return_no_far_away_cell(files):
     con = duckdb.connect()
     for path in files:
         cells = np.asarray(pq.read_table(path, columns=["cell"]).column("cell").to_pylist())
-        bounds = _brute_bounds(cells)
+        bounds = _brute_bounds(cells, widen=True)
         for box in BOXES:
             outer, inner = set(cells[_meets(bounds, box, 1e-6)]), set(cells[_meets(bounds, box, -1e-6)])
             ours = set(geopandas.read_parquet(path, filters=bbox_filter(box))["cell"])
             assert inner <= ours <= outer, (path, box)
             sql = f"SELECT cell FROM read_parquet('{path}') WHERE {bbox_sql(box)}"
             assert {r[0] for r in con.execute(sql).fetchall()} == ours, (path, box)
-            if box[0] <= box[2]:  # geopandas' own filter compares the fields as they are
-                theirs = set(geopandas.read_parquet(path, bbox=box)["cell"])
-                split = set(cells[bounds[:, 0] > bounds[:, 2]])
-                assert theirs <= outer, (path, box)  # no far-away cell, not even a pole's or a split one
-                assert inner - split <= theirs, (path, box)  # misses only cells across +-180
+            if box[0] <= box[2]:  # geopandas' own filter compares the fields as they are: the same rows
+                assert set(geopandas.read_parquet(path, bbox=box)["cell"]) == ours, (path, box)
+
+
+def _naive_reads(path, box, con) -> dict[str, set]:
+    """The rows of ``path`` three generic readers give for a plain ``box``, each comparing the bbox fields as they are.
+
+    geopandas' ``read_parquet(bbox=...)``; a pyarrow dataset filter and a DuckDB ``WHERE`` as GeoParquet 1.1's
+    §"Bounding Box Columns" writes its example (``bbox.xmin <= box_xmax AND bbox.xmax >= box_xmin AND ...``).
+    """
+    import pyarrow.compute as pc
+    import pyarrow.dataset as ds
+
+    x0, y0, x1, y1 = box
+    f = {k: pc.field(("bbox", k)) for k in ("xmin", "ymin", "xmax", "ymax")}
+    expr = (f["xmin"] <= x1) & (f["xmax"] >= x0) & (f["ymin"] <= y1) & (f["ymax"] >= y0)
+    sql = (f"SELECT cell FROM read_parquet('{path}') WHERE bbox.xmin <= {x1} AND bbox.xmax >= {x0} "
+           f"AND bbox.ymin <= {y1} AND bbox.ymax >= {y0}")
+    return {"geopandas": set(geopandas.read_parquet(path, bbox=box)["cell"]),
+            "pyarrow": set(ds.dataset(str(path)).to_table(columns=["cell"], filter=expr).column("cell").to_pylist()),
+            "duckdb": {r[0] for r in con.execute(sql).fetchall()}}
+
+
+#: Query boxes at the antimeridian (the last two across it, read as split_box's two sides) and one far from it.
+AM_BOXES = [(170.0, -20.0, 180.0, 20.0), (-180.0, -20.0, -170.0, 20.0), (175.0, 50.0, 179.0, 70.0),
+            (-179.5, -70.0, -178.0, -40.0), (-5.0, -5.0, 5.0, 5.0), (170.0, -20.0, -170.0, 20.0), (160.0, 60.0, -160.0, 89.0)]
+
+
+def test_generic_readers_lose_no_cell_at_the_antimeridian(files):
+    """Issue 36: geopandas' ``read_parquet(bbox=(170, -20, -170, 20))`` returned none of the cells there.
+
+    The truth is brute force on the cells' own polygons (shapely), a box across +-180 as its two sides; every
+    reader must return all of it, and nothing whose polygon's bounds are far from the box other than a split
+    cell at the box's latitudes (a widened row)."""
+    con = duckdb.connect()
+    for path in files:
+        cells = np.asarray(pq.read_table(path, columns=["cell"]).column("cell").to_pylist())
+        polys = dggs.cell_to_polygon(cells, DENSIFY)
+        split = shapely.get_type_id(polys) == 6
+        lat = shapely.bounds(polys)[:, [1, 3]]
+        for box in AM_BOXES:
+            sides = split_box(box)
+            truth = set(cells[np.any([shapely.intersects(polys, shapely.box(*side)) for side in sides], axis=0)])
+            near = np.any([_meets(_brute_bounds(cells), side, 1e-6) for side in sides], axis=0)
+            wide = split & (lat[:, 0] <= box[3] + 1e-9) & (lat[:, 1] >= box[1] - 1e-9)
+            reads = [_naive_reads(path, side, con) for side in sides]
+            for reader in ("geopandas", "pyarrow", "duckdb"):
+                got = set().union(*(read[reader] for read in reads))
+                assert truth <= got, (path, box, reader, sorted(truth - got)[:5])
+                assert got <= set(cells[near | wide]), (path, box, reader)
 
 
 def test_geopandas_box_at_the_origin_returns_cells_near_it():
@@ -187,7 +243,9 @@ def test_geopandas_box_at_the_origin_returns_cells_near_it():
     near = frame.geometry.intersects(shapely.box(-5, -5, 5, 5)).to_numpy()
     hit = _meets(bounds, (-5, -5, 5, 5), 0.0)
     assert near.sum() > 0 and (near <= hit).all()
-    assert shapely.distance(frame.geometry.values[hit], shapely.box(-5, -5, 5, 5)).max() < 15.0  # a level-3 cell is ~10 deg
+    split = shapely.get_type_id(frame.geometry.values) == 6  # widened rows: -180..180 at their latitudes
+    assert shapely.distance(frame.geometry.values[hit & ~split], shapely.box(-5, -5, 5, 5)).max() < 15.0  # ~10 deg cells
+    assert 0 < (hit & split).sum() < split.sum()
 
 
 def test_split_cells_wrap_and_pole_cells_hold_their_sector():
@@ -196,12 +254,13 @@ def test_split_cells_wrap_and_pole_cells_hold_their_sector():
     x0, x1 = box.field("xmin").to_numpy(), box.field("xmax").to_numpy()
     geoms = shapely.from_wkb(table.column("geometry").to_numpy(zero_copy_only=False))
     split = shapely.get_type_id(geoms) == 6
-    assert split.sum() == 48 and (x0[split] > x1[split]).all() and (x0[~split] <= x1[~split]).all()
+    assert split.sum() == 48 and (x0[split] == -180.0).all() and (x1[split] == 180.0).all()
+    assert (x0[~split] <= x1[~split]).all()
     at_pole = (box.field("ymax").to_numpy() == 90.0) | (box.field("ymin").to_numpy() == -90.0)
     xy, row = shapely.get_coordinates(dggs.cell_to_polygon(CELLS, DENSIFY), return_index=True)
     touching = np.isin(np.arange(CELLS.size), row[np.abs(xy[:, 1]) == 90.0])
     assert at_pole.sum() > 0 and np.array_equal(at_pole, touching)  # cells with a corner at a pole: a sector each
-    assert not ((x0 == -180.0) & (x1 == 180.0)).any()
+    assert not ((x0 == -180.0) & (x1 == 180.0) & ~split).any()
     geo = json.loads(table.schema.metadata[b"geo"])["columns"]["geometry"]
     assert geo["bbox"] == [-180.0, -90.0, 180.0, 90.0]  # all cells: every longitude
 
@@ -281,3 +340,41 @@ def test_bad_filter_boxes_raise(box):
 def test_lng_extent_needs_a_range():
     with pytest.raises(dggs.DggsValueError, match="at least one"):
         lng_extent(np.empty(0), np.empty(0))
+
+
+_LEVEL4 = np.asarray(dggs.uncompact_cells(dggs.get_base_cells(), 4))  # 3,240 cells: poles and +-180 included
+_POLYS4 = dggs.cell_to_polygon(_LEVEL4, DENSIFY)
+
+
+@st.composite
+def _plain_boxes(draw):
+    """Plain query boxes (xmin <= xmax), often touching +-180 or a pole."""
+    x = sorted([draw(st.one_of(st.floats(-180.0, 180.0), st.sampled_from([-180.0, 180.0, -179.9, 179.9]))) for _ in range(2)])
+    y = sorted([draw(st.one_of(st.floats(-90.0, 90.0), st.sampled_from([-90.0, 90.0, 89.5, -89.5]))) for _ in range(2)])
+    return (x[0], y[0], x[1], y[1])
+
+
+@settings(max_examples=examples(60), deadline=None)
+@given(box=_plain_boxes())
+@example(box=(170.0, -20.0, 180.0, 20.0))
+@example(box=(-180.0, 80.0, -179.0, 90.0))
+@example(box=(179.999, -90.0, 180.0, 90.0))
+def test_comparing_the_bbox_fields_as_they_are_loses_no_cell(box):
+    """Any plain box: the rows whose ``bbox`` fields meet it, compared as they are (what generic readers do),
+    hold every cell whose polygon meets it (shapely, brute force)."""
+    import pyarrow.compute as pc
+
+    table = _TABLE4()
+    x0, y0, x1, y1 = box
+    f = {k: pc.field(("bbox", k)) for k in ("xmin", "ymin", "xmax", "ymax")}
+    expr = (f["xmin"] <= x1) & (f["xmax"] >= x0) & (f["ymin"] <= y1) & (f["ymax"] >= y0)
+    import pyarrow.dataset as ds
+
+    got = set(ds.dataset(table).to_table(columns=["cell"], filter=expr).column("cell").to_pylist())
+    truth = set(_LEVEL4[shapely.intersects(_POLYS4, shapely.box(*box))])
+    assert truth <= got, sorted(truth - got)[:5]
+
+
+@functools.lru_cache(maxsize=1)
+def _TABLE4():  # noqa: N802
+    return cells_to_table(_LEVEL4, densify=DENSIFY)
