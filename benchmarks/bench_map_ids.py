@@ -211,7 +211,8 @@ def main() -> None:
                 try:
                     r = measure(driver, base, level, way, progress)
                 except (WebDriverException, OSError) as exc:  # a timeout, or the renderer gone
-                    r = {"error": f"{type(exc).__name__} after {time.monotonic() - t0:,.0f} s"}
+                    first = (getattr(exc, "msg", None) or str(exc)).strip().splitlines()[0][:120]
+                    r = {"error": f"{type(exc).__name__} ({first}) after {time.monotonic() - t0:,.0f} s"}
                 finally:
                     driver.quit()  # type: ignore[attr-defined]
                     peak = browser_mem.stop()
