@@ -194,7 +194,8 @@ $(STATIC_WASM): $(WASM) js/src/dggs.js
 
 static-wasm: $(STATIC_WASM)
 
-# The JS package's tests (node --test) against fixtures the Python package writes (js/tools/write_fixtures.py);
+# The JS package's tests (node --test) against fixtures the Python package writes (js/tools/write_fixtures.py),
+# and the code blocks of docs/js.md and js/README.md (js/test/docs.test.mjs);
 # tests/js/test_js.py runs the same in the Python suite.
 JS_FIXTURES := build/js-fixtures
 $(JS_FIXTURES)/fixtures.json: js/tools/write_fixtures.py $(STAMP)
@@ -204,7 +205,7 @@ $(JS_FIXTURES)/fixtures.json: js/tools/write_fixtures.py $(STAMP)
 js-fixtures: $(JS_FIXTURES)/fixtures.json
 
 test-js: $(WASM) $(JS_FIXTURES)/fixtures.json
-	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs
+	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs js/test/docs.test.mjs
 
 # The TypeScript declarations (js/src/dggs.d.ts) as a user meets them (js/test/types.ts), by tsc --strict from
 # npm (js/package-lock.json).

@@ -1,15 +1,21 @@
 """The globe's cells from ids (WebAssembly) against GeoJSON: bytes over the wire, time to first paint, frame time
 while panning, in headless Chromium (issue 34).
 
-    python benchmarks/bench_map_ids.py [--sizes 10000 100000] [--level 9] [--ways geojson ids]
+    python benchmarks/bench_map_ids.py [--sizes 10000 100000 1000000] [--level 9] [--ways geojson ids] [--timeout 600]
 
-For each size N: a store of N cells at `level` (the centres of N distinct random cells), `dggs serve` on
+For each size N: a store of N cells at `level`, or the first finer level with at least 2N cells (level 10 for
+1M; the centres of N distinct random cells), `dggs serve` on
 127.0.0.1 with --max-features N, and the page in headless Chromium (Debian's chromium and chromedriver, as
 make test-browser) with the whole globe in view. For each way (`?cells=geojson`, then the default ids): the
 level is chosen and timed from the choice to MapLibre's `idle` after the cells are drawn (the server's first
 answer, "cold", then again after a coarser level, "warm": the GeoJSON polygons are cached by then), the bytes
 of the map/cells answer (encodedBodySize), and the frame times (requestAnimationFrame) while the globe pans for
 3 s. Software WebGL (SwiftShader) on a shared 2-core machine: compare within a row.
+
+Each way has --timeout seconds (the page's script timeout and selenium's command timeout) to load, draw and pan;
+one that does not finish is reported as such, with how far it got. Beside each row: the peak resident memory of
+the browser (all of Chromium's processes together) and of `dggs serve`, sampled every 0.2 s, and the 1-minute
+load average before and after.
 """
 
 from __future__ import annotations
@@ -20,11 +26,13 @@ import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import urllib.request
 from pathlib import Path
 
 import numpy as np
+import psutil
 
 import dggs
 from dggs.storage import CellStore
@@ -72,7 +80,36 @@ def serve(path: Path, n: int) -> tuple[subprocess.Popen[bytes], str]:
     raise RuntimeError("dggs serve did not start")
 
 
-def browser() -> object:
+class PeakMemory:
+    """The peak resident memory (MB) of a process and its children, sampled every 0.2 s in a thread."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid, self.peak, self._stop = pid, 0.0, threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        while not self._stop.wait(0.2):
+            try:
+                root = psutil.Process(self.pid)
+                procs = [root, *root.children(recursive=True)]
+            except psutil.Error:
+                continue
+            rss = 0
+            for proc in procs:
+                try:
+                    rss += proc.memory_info().rss
+                except psutil.Error:
+                    pass
+            self.peak = max(self.peak, rss / 1e6)
+
+    def stop(self) -> float:
+        self._stop.set()
+        self._thread.join()
+        return self.peak
+
+
+def browser(timeout: float) -> object:
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
@@ -83,7 +120,8 @@ def browser() -> object:
                  f"--user-data-dir={tempfile.mkdtemp()}"):
         options.add_argument(flag)
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    driver.set_script_timeout(600)
+    driver.set_script_timeout(timeout)
+    driver.command_executor._client_config.timeout = timeout + 60  # selenium's own HTTP timeout, 120 s by default
     return driver
 
 
@@ -122,9 +160,10 @@ map.easeTo({ center: [map.getCenter().lng + 120, map.getCenter().lat], duration:
 """
 
 
-def measure(driver: object, base: str, level: int, way: str) -> dict[str, object]:
+def measure(driver: object, base: str, level: int, way: str, progress: list[str]) -> dict[str, object]:
     d = driver  # selenium's WebDriver
     d.get(f"{base}/" + ("?cells=geojson" if way == "geojson" else ""))  # type: ignore[attr-defined]
+    progress.append("page loaded")
     for _ in range(600):
         if d.execute_script("return document.body.dataset.state") in ("idle", "error"):  # type: ignore[attr-defined]
             break
@@ -132,8 +171,10 @@ def measure(driver: object, base: str, level: int, way: str) -> dict[str, object
     d.execute_script("window.dggsMap.jumpTo({center: [10, 20], zoom: 0.6, pitch: 0, bearing: 0})")  # type: ignore[attr-defined]
     time.sleep(1.0)
     cold = d.execute_async_script(CHOOSE, level)  # type: ignore[attr-defined]
+    progress.append(f"cold first paint {cold[0]:,.0f} ms ({cold[2]:,} cells, state {cold[1]})")
     d.execute_async_script(CHOOSE, 0)  # type: ignore[attr-defined]
     warm = d.execute_async_script(CHOOSE, level)  # type: ignore[attr-defined]
+    progress.append(f"warm first paint {warm[0]:,.0f} ms")
     frames = np.array(d.execute_async_script(PAN)[2:])  # type: ignore[attr-defined]
     return {"cold_ms": cold[0], "warm_ms": warm[0], "state": warm[1], "cells": warm[2], "level": warm[3],
             "source": warm[4], "bytes": warm[5], "frame_median_ms": float(np.median(frames)),
@@ -142,29 +183,53 @@ def measure(driver: object, base: str, level: int, way: str) -> dict[str, object
 
 def main() -> None:
     parser = argparse.ArgumentParser()
-    parser.add_argument("--sizes", type=int, nargs="+", default=[10_000, 100_000])
+    parser.add_argument("--sizes", type=int, nargs="+", default=[10_000, 100_000, 1_000_000])
     parser.add_argument("--level", type=int, default=9)
     parser.add_argument("--ways", nargs="+", default=["geojson", "ids"], choices=["geojson", "ids"])
+    parser.add_argument("--timeout", type=float, default=600.0, help="seconds a way may take (default 600)")
     args = parser.parse_args()
     if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):
         sys.exit("needs Debian's chromium and chromium-driver (make test-browser installs them)")
+    from selenium.common.exceptions import WebDriverException
+
     folder = Path(tempfile.mkdtemp())
-    print("| cells | way | bytes | first paint, cold (ms) | warm (ms) | frame median (ms) | frame p95 (ms) |")
-    print("|---:|---|---:|---:|---:|---:|---:|")
+    print(f"level {args.level} or finer, timeout {args.timeout:.0f} s a way, load average {os.getloadavg()[0]:.2f} at the start")
+    print("| cells (level) | way | bytes | first paint, cold (ms) | warm (ms) | frame median (ms) | frame p95 (ms) "
+          "| browser peak RSS (MB) | server peak RSS (MB) |")
+    print("|---:|---|---:|---:|---:|---:|---:|---:|---:|")
     for n in args.sizes:
-        path = store_of(n, args.level, folder)
+        level = next(lv for lv in range(args.level, 29) if dggs.get_num_cells(lv) >= 2 * n)
+        path = store_of(n, level, folder)
         proc, base = serve(path, n)
-        driver = browser()
+        server_mem = PeakMemory(proc.pid)
         try:
             for way in args.ways:
-                r = measure(driver, base, args.level, way)
+                driver = browser(args.timeout)
+                browser_mem = PeakMemory(driver.service.process.pid)  # type: ignore[attr-defined]
+                progress: list[str] = []
+                t0 = time.monotonic()
+                try:
+                    r = measure(driver, base, level, way, progress)
+                except (WebDriverException, OSError) as exc:  # a timeout, or the renderer gone
+                    first = (getattr(exc, "msg", None) or str(exc)).strip().splitlines()[0][:120]
+                    r = {"error": f"{type(exc).__name__} ({first}) after {time.monotonic() - t0:,.0f} s"}
+                finally:
+                    driver.quit()  # type: ignore[attr-defined]
+                    peak = browser_mem.stop()
+                if "error" in r:
+                    got = "; ".join(progress) or "nothing"
+                    print(f"| {n:,} ({level}) | {way} | did not finish: {r['error']} (got: {got}) | | | | | {peak:,.0f} | "
+                          f"{server_mem.peak:,.0f} |", flush=True)
+                    continue
                 assert r["source"] == way and r["cells"] == n and r["state"] == "idle", r
-                print(f"| {n:,} | {way} | {r['bytes']:,} | {r['cold_ms']:,.0f} | {r['warm_ms']:,.0f} | "
-                      f"{r['frame_median_ms']:.1f} | {r['frame_p95_ms']:.1f} |", flush=True)
+                print(f"| {n:,} ({level}) | {way} | {r['bytes']:,} | {r['cold_ms']:,.0f} | {r['warm_ms']:,.0f} | "
+                      f"{r['frame_median_ms']:.1f} | {r['frame_p95_ms']:.1f} | {peak:,.0f} | {server_mem.peak:,.0f} |",
+                      flush=True)
         finally:
-            driver.quit()  # type: ignore[attr-defined]
+            server_mem.stop()
             proc.terminate()
             proc.wait(10)
+    print(f"load average {os.getloadavg()[0]:.2f} at the end")
 
 
 if __name__ == "__main__":

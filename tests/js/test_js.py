@@ -3,7 +3,8 @@
 `make wasm` builds the C core as WebAssembly (installing clang, lld, wasi-libc and node from Debian where missing),
 js/tools/write_fixtures.py writes what this package answers into a temporary folder, and `node --test` runs
 js/test/dggs.test.mjs against it: equal ids (on an edge, one of the cells meeting there), centres and boundaries
-within 1e-12 degrees, on both projections at every level. `make test-js` runs the same from the shell.
+within 1e-12 degrees, on both projections at every level; and js/test/docs.test.mjs runs the code blocks of
+docs/js.md and js/README.md. `make test-js` runs the same from the shell.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ def test_js_package_matches_python(tmp_path: Path) -> None:
     assert built.returncode == 0, built.stdout + built.stderr
     wrote = run([sys.executable, "js/tools/write_fixtures.py", str(tmp_path)])
     assert wrote.returncode == 0, wrote.stdout + wrote.stderr
-    tested = run(["node", "--test", "js/test/dggs.test.mjs"], env={**os.environ, "DGGS_JS_FIXTURES": str(tmp_path)})
+    tests = ["js/test/dggs.test.mjs", "js/test/docs.test.mjs"]
+    tested = run(["node", "--test", *tests], env={**os.environ, "DGGS_JS_FIXTURES": str(tmp_path)})
     assert tested.returncode == 0, tested.stdout[-20000:] + tested.stderr[-5000:]
     assert "# fail 0" in tested.stdout
