@@ -299,7 +299,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         LevelMismatchError
             If ``level`` is finer than the stored level.
         DggsValueError
-            For an unknown column or stat, or sum/mean of a text column.
+            For an unknown column or stat, sum/mean of a text column, or a ``descending`` or
+            ``as_table`` that is not a bool.
 
         Examples
         --------
