@@ -299,8 +299,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         LevelMismatchError
             If ``level`` is finer than the stored level.
         DggsValueError
-            For an unknown column or stat, sum/mean of a text column, or a ``descending`` or
-            ``as_table`` that is not a bool.
+            An unknown column or stat, sum/mean of a text column, a non-bool ``descending``/``as_table``.
 
         Examples
         --------

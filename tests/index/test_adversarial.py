@@ -892,3 +892,57 @@ def test_aggregate_as_table_equals_the_dicts(small_store):
         for cell in (None, "C", dggs.latlng_to_cell(1.0, 2.0, 2)):
             want = small_store.aggregate(3, "pop", stats, cell=cell)
             assert small_store.aggregate(3, "pop", stats, cell=cell, as_table=True).to_pylist() == want
+
+
+# --------------------------------------------------------------------------
+# dggs.duckdb.load (issue 32: the suite skipped it)
+# --------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def unsigned_con():
+    duckdb = pytest.importorskip("duckdb")
+    con = duckdb.connect(config={"allow_unsigned_extensions": "true"})
+    yield con
+    con.close()
+
+
+@pytest.mark.parametrize("con", [None, 5, "x", object(), GOOD, b"duckdb"])
+def test_duckdb_load_takes_only_a_connection(con):
+    from dggs.duckdb import load
+
+    ok, got = outcome(load, con)
+    assert not ok and isinstance(got, dggs.DggsValueError)
+    if isinstance(con, (str, int)):
+        names(got, con)
+
+
+LOAD_PATHS = [p for p in CORRUPT_SCALARS if p is not None]  # None: the default file
+
+
+@pytest.mark.parametrize("path", [*LOAD_PATHS, "spatial", "json", "x'; SELECT 1; --", "/nonexistent/x.duckdb_extension"])
+def test_duckdb_load_takes_only_a_file(unsigned_con, path):
+    """Any other text was read by DuckDB as the name of an installed extension ("spatial" loads that one)."""
+    from dggs.duckdb import load
+
+    ok, got = outcome(load, unsigned_con, path)
+    assert not ok and isinstance(got, dggs.DggsValueError)
+    if isinstance(path, (str, int, float)) and not isinstance(path, bool) and "\x00" not in str(path):
+        names(got, path)
+
+
+def test_duckdb_load_of_a_broken_file_or_connection(unsigned_con, tmp_path):
+    duckdb = pytest.importorskip("duckdb")
+    from dggs.duckdb import load
+
+    junk = tmp_path / "it's.duckdb_extension"
+    junk.write_bytes(b"\x00" * 64)
+    for con, path in [(unsigned_con, junk), (unsigned_con, str(junk).encode()), (unsigned_con, tmp_path)]:
+        ok, got = outcome(load, con, path)
+        assert not ok
+    closed = duckdb.connect()
+    closed.close()
+    ok, got = outcome(load, closed, junk)
+    assert not ok and isinstance(got, dggs.ExtensionLoadError) and isinstance(got, RuntimeError)
+    ok, got = outcome(load, unsigned_con, junk)
+    assert isinstance(got, dggs.ExtensionLoadError) and "it's" in str(got)
