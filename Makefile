@@ -205,7 +205,8 @@ $(JS_FIXTURES)/fixtures.json: js/tools/write_fixtures.py $(STAMP)
 js-fixtures: $(JS_FIXTURES)/fixtures.json
 
 test-js: $(WASM) $(JS_FIXTURES)/fixtures.json
-	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs js/test/docs.test.mjs
+	DGGS_JS_FIXTURES=$(abspath $(JS_FIXTURES)) node --test js/test/dggs.test.mjs js/test/docs.test.mjs \
+		js/test/adversarial.test.mjs
 
 # The TypeScript declarations (js/src/dggs.d.ts) as a user meets them (js/test/types.ts), by tsc --strict from
 # npm (js/package-lock.json).

@@ -33,7 +33,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 TIMEOUT = {"bench_core.py": 1200, "bench_point_stages.py": 300, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_ingest.py": 400, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
-           "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600,
+           "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600, "bench_vertex.py": 300,
            "bench_dissolve.py": 900, "bench_scale.py": 2400,
            "bench_ivea.py": 600, "bench_projection_verbs.py": 600, "bench_handwritten_server.py": 600}  # seconds (bench_raster: the 1.8 GB globe's memory run)
 
@@ -95,6 +95,7 @@ def main() -> None:
             ("bench_paths.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_handwritten.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_edges.py", ["--quick"] if args.quick else [], thread_env(False)),
+            ("bench_vertex.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_dissolve.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_scale.py", ["--quick"] if args.quick else [], thread_env(False)),  # Spark local[2], Dask
             # IVEA against ISEA (no peer has IVEA on triangles): one core, as bench_snyder

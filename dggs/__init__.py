@@ -34,6 +34,7 @@ from dggs.errors import (
     CoordinateError,
     DggsError,
     DggsValueError,
+    ExtensionLoadError,
     InvalidCellError,
     LevelError,
     LevelMismatchError,
@@ -163,6 +164,7 @@ __all__ = [
     "LevelMismatchError",
     "InvalidCellError",
     "StorageError",
+    "ExtensionLoadError",
     "TooManyCellsError",
     # indexing
     "MAX_LEVEL",

@@ -25,6 +25,7 @@ __all__ = [
     "InvalidCellError",
     "TooManyCellsError",
     "StorageError",
+    "ExtensionLoadError",
 ]
 
 
@@ -58,3 +59,7 @@ class StorageError(DggsError):
 
 class TooManyCellsError(DggsValueError):
     """An operation would return more cells than its ``max_cells`` limit allows."""
+
+
+class ExtensionLoadError(DggsError, RuntimeError):
+    """DuckDB refused to load the native dggs extension (:func:`dggs.duckdb.load`; a RuntimeError as before)."""

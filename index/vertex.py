@@ -7,10 +7,12 @@ levels >= 1 (two 30-degree corners per face), 5 faces at level 0.
 
 The cells around a corner are found by walking around it: from a cell,
 cross one of the two edges that end at the corner, then, in the new cell,
-cross the other edge that ends there, until the walk is back.  The corner is
-recognised in each cell as the nearest of its three corners (unit vectors
-of the kernel's corner coordinates), so the walk follows the grid's own edge
-adjacency (:func:`dggs.edge_neighbors`) and needs no tolerance.
+cross the other edge that ends there, until the walk is back.  Both cells'
+corners run counter-clockwise, so the corner is the far end of the edge
+back: the walk follows the grid's own edge adjacency
+(:func:`dggs.edge_neighbors`) alone and needs no projection and no
+tolerance.  The walks and the disks of :func:`grid_disk_vertex` run in the
+C core (libdggs/src/vertex.c, ``dggs_grid_disk_vertex``).
 
 Vertex ids
 ----------
@@ -30,11 +32,11 @@ import numpy as np
 from dggs.errors import DggsValueError, TooManyCellsError
 
 from ._checks import check_max_cells, check_projection, check_radius, check_size
-from ._convert import ROWS, VALUES, Op, apply, format_int
+from ._convert import ROWS, VALUES, Op, apply, format_int, id_name
 from ._convert.values import values_out
 from ._corners import MAX_FAN, MAX_NEIGHBOURS, all_fans, fans, format_vertex, vertex_keys
 from ._kernel import hierarchy as kh
-from ._kernel.grid_tables import disk_size_bound
+from ._kernel import vertex as kv
 from ._shapes import boundaries
 from ._vertex_ids import parse_vertexes, vertex_args, vertex_flags
 
@@ -70,49 +72,35 @@ def _disk_bound(level: int, k: int) -> int:
     One corner-sharing step joins two cells of one corner's fan of at most 12 cells, at most
     6 edge steps apart the shorter way around it, so the vertex disk of radius k lies in the
     edge disk of radius 6k (:func:`dggs.index._kernel.grid_tables.disk_size_bound`), and in
-    the level.
+    the level (:func:`dggs.index._kernel.vertex.disk_width`).
     """
-    return min(int(disk_size_bound(6 * k)), 20 if level == 0 else 120 * 3 ** (level - 1))
+    return int(kv.disk_width(k, level))
 
 
-def _not_in(values: np.ndarray, sorted_ring: np.ndarray) -> np.ndarray:
-    """The entries of ``values`` not in the sorted array ``sorted_ring``."""
-    if sorted_ring.size == 0:
-        return values
-    at = np.minimum(np.searchsorted(sorted_ring, values), sorted_ring.size - 1)
-    kept: np.ndarray = values[sorted_ring[at] != values]
-    return kept
-
-
-def _disk_vertex(start: int, k: int, max_cells: int) -> np.ndarray:
-    # Breadth-first rings: the neighbours of ring i lie in rings i - 1, i and i + 1, so a new
-    # ring is deduplicated against the last two rings only (work bounded by the output).
-    rings = [np.array([start], dtype=np.uint64)]
-    before = np.zeros(0, dtype=np.uint64)
-    total = 1
-    for _ in range(k):
-        fan, _ = all_fans(rings[-1])
-        new = np.unique(fan)
-        new = _not_in(_not_in(new[new != 0], rings[-1]), before)
-        if new.size == 0:
-            break
-        total += int(new.size)
-        check_size(total, max_cells, f"grid_disk_vertex with k={k}")
-        before = rings[-1]
-        rings.append(new)
-    disk: np.ndarray = np.sort(np.concatenate(rings))
-    return disk
+def _disk_vertex(start: int, k: int, bound: int) -> np.ndarray:
+    # The C core's breadth-first search (each corner walked once), in a row sized for the disks seen
+    # (9 k^2 cells far from icosahedron vertices) and grown up to the proven bound: the bound of the
+    # edge disk of radius 6k is 4x the real disk.
+    width = min(bound, 10 * (k + 1) ** 2 + 64)
+    while True:
+        disk = kv.disk_row(start, k, width)
+        if disk is not None:
+            return disk  # type: ignore[no-any-return]
+        if width >= bound:
+            raise RuntimeError(f"grid_disk_vertex({id_name(start)!r}, {k}) outgrew its proven bound {bound}")
+        width = min(bound, 4 * width)
 
 
 def _disks_vertex(ids: np.ndarray, k: int, max_cells: int) -> np.ndarray:
     levels = kh.levels(ids) if ids.size else np.zeros(0, dtype=np.int64)
-    bound = max((_disk_bound(int(lv), k) for lv in np.unique(levels)), default=1)
+    bounds = {int(lv): _disk_bound(int(lv), k) for lv in np.unique(levels)}
+    bound = max(bounds.values(), default=1)
     if bound > max_cells:
         raise TooManyCellsError(
             f"grid_disk_vertex with k={k} may return up to {bound:,} cells per disk, over the limit of "
             f"{max_cells:,} (raise max_cells to allow it)"
         )
-    disks = [_disk_vertex(int(c), k, max_cells) for c in ids]
+    disks = [_disk_vertex(int(c), k, bounds[int(lv)]) for c, lv in zip(ids, levels, strict=True)]
     width = max((d.size for d in disks), default=1)
     check_size(len(disks) * width, max_cells, f"grid_disk_vertex with k={k}")
     out = np.zeros((ids.shape[0], width), dtype=np.uint64)

@@ -9,7 +9,7 @@ streamed (:mod:`dggs.storage.rollup`) or a sorting ``GROUP BY``.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 import numpy as np
@@ -140,13 +140,18 @@ def aggregate(
         If ``level`` is finer than the stored level, or ``cell`` is finer than ``level``.
     DggsValueError
         If a stat is unknown, needs a column that is missing or holds text, ``order_by`` is not one of
-        the stats, or ``limit`` is not a whole number >= 0.
+        the stats, ``limit`` is not a whole number >= 0, or ``descending`` or ``as_table`` is not a bool.
     """
     stored = check_query_level(store, level)
     if column is not None and not isinstance(column, str):
         raise DggsValueError(f"column must be the name of a value column (str), not {column!r}")
+    for flag, name in ((descending, "descending"), (as_table, "as_table")):
+        if not isinstance(flag, (bool, np.bool_)):  # issue 32: a truthy "no" or an array was read as a flag
+            raise DggsValueError(f"{name} must be True or False, not {flag!r:.100}")
+    if not isinstance(stats, str) and not (isinstance(stats, Iterable) and not isinstance(stats, (bytes, dict))):
+        raise DggsValueError(f"stats must be a stat's name or a sequence of them, not {stats!r:.100}")
     stats = (stats,) if isinstance(stats, str) else tuple(stats)
-    unknown = [s for s in stats if s not in STATS]
+    unknown = [s for s in stats if not isinstance(s, str) or s not in STATS]
     if unknown or not stats:
         raise DggsValueError(f"unknown stat(s) {unknown or stats!r}; choose from {', '.join(STATS)}")
     columns = store.columns

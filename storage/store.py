@@ -299,7 +299,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         LevelMismatchError
             If ``level`` is finer than the stored level.
         DggsValueError
-            For an unknown column or stat, or sum/mean of a text column.
+            An unknown column or stat, sum/mean of a text column, a non-bool ``descending``/``as_table``.
 
         Examples
         --------

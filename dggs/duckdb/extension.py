@@ -12,6 +12,8 @@ from typing import Any
 
 import duckdb
 
+from dggs.errors import DggsValueError, ExtensionLoadError
+
 __all__ = ["extension_path", "load"]
 
 
@@ -40,10 +42,21 @@ def load(con: Any, path: Any = None) -> bool:
     ``load`` again after it is reopened. Do not also :func:`register` the
     Python UDFs on the same connection (the names are the same).
 
+    Parameters
+    ----------
+    con : duckdb.DuckDBPyConnection
+        The connection.
+    path : str or os.PathLike, optional
+        The extension's file; default :func:`extension_path`'s. Only a file: DuckDB would read any other text
+        as the name of an installed extension (``"spatial"``) and load that.
+
     Raises
     ------
-    RuntimeError
-        The connection refuses unsigned extensions, or DuckDB cannot load the file (the message says why).
+    DggsValueError
+        ``con`` is not a DuckDB connection, or ``path`` is not a path to an existing file (the message names it).
+    ExtensionLoadError
+        The connection refuses unsigned extensions, or DuckDB cannot load the file (the message says why);
+        a RuntimeError too.
 
     Examples
     --------
@@ -52,9 +65,21 @@ def load(con: Any, path: Any = None) -> bool:
     >>> if load(con):
     ...     assert con.sql("SELECT dggs_latlng_to_cell_str(51.05, -114.07, 9)").fetchall() == [("F200021102",)]
     """
-    found = path if path is not None else extension_path()
-    if found is None:
-        return False
+    if not isinstance(con, duckdb.DuckDBPyConnection):
+        raise DggsValueError(f"dggs.duckdb.load: con must be a DuckDB connection (duckdb.connect()), not {con!r:.100}")
+    if path is None:
+        found = extension_path()
+        if found is None:
+            return False
+    else:
+        if isinstance(path, bytes):
+            path = os.fsdecode(path)
+        if not isinstance(path, (str, os.PathLike)):
+            raise DggsValueError(f"dggs.duckdb.load: path must be a file path (str or os.PathLike), not {path!r:.100}")
+        text = os.fsdecode(os.fspath(path))
+        if "\x00" in text or not Path(text).is_file():
+            raise DggsValueError(f"dggs.duckdb.load: no extension file at {text!r:.300}")
+        found = Path(text)
     literal = str(found).replace("'", "''")
     try:
         con.execute(f"LOAD '{literal}'")
@@ -62,5 +87,5 @@ def load(con: Any, path: Any = None) -> bool:
         hint = ""
         if "allow_unsigned_extensions" in str(exc):
             hint = ' (connect with config={"allow_unsigned_extensions": "true"})'
-        raise RuntimeError(f"dggs.duckdb.load: {exc}{hint}") from exc
+        raise ExtensionLoadError(f"dggs.duckdb.load: {exc}{hint}") from exc
     return True

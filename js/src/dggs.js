@@ -111,8 +111,38 @@ function projection(opts) {
   return v;
 }
 
+// Any argument in a message: Symbols, BigInts and objects too (a template string throws on a Symbol).
+function show(v) {
+  if (typeof v === "string") return JSON.stringify(v.length > 80 ? `${v.slice(0, 80)}...` : v);
+  if (typeof v === "bigint") return `${v}n`;
+  if (typeof v === "symbol" || typeof v === "function") return v.toString().slice(0, 80);
+  if (v === null || typeof v !== "object") return String(v);
+  try {
+    return (JSON.stringify(v) ?? Object.prototype.toString.call(v)).slice(0, 80);
+  } catch {
+    return Object.prototype.toString.call(v);
+  }
+}
+
 function intArg(v, name, lo, hi) {
-  if (!Number.isInteger(v) || v < lo || v > hi) throw new DggsError(`${name} ${v} is not an integer ${lo}..${hi}`, name === "level" ? 2 : 6);
+  if (!Number.isInteger(v) || v < lo || v > hi) throw new DggsError(`${name} ${show(v)} is not an integer ${lo}..${hi}`, name === "level" ? 2 : 6);
+  return v;
+}
+
+const levelArg = (v) => intArg(v, "level", 0, MAX_LEVEL);
+
+// A coordinate: a number (NaN and infinities go to the core, which names them); anything else is refused here,
+// as a BigInt or a Symbol would throw a TypeError on its way into WebAssembly.
+function numArg(v, name) {
+  if (typeof v !== "number") throw new DggsError(`${name} ${show(v)} is not a number`, 1);
+  return v;
+}
+
+// An array of numbers or a Float64Array (each element checked as numArg).
+function numbersArg(v, name) {
+  if (v instanceof Float64Array) return v;
+  if (!Array.isArray(v)) throw new DggsError(`${name} ${show(v)} is not an array of numbers or a Float64Array`, 1);
+  for (let i = 0; i < v.length; i++) numArg(v[i], `${name}[${i}]`);
   return v;
 }
 
@@ -121,6 +151,7 @@ function intArg(v, name, lo, hi) {
 /** The 64-bit id (BigInt) of a string id or BigInt id (checked). */
 export function stringToCell(s) {
   const w = core();
+  if (typeof s !== "string") throw new DggsError(`${show(s)} is not a string id`, 3);
   if (s.length > 64) throw new DggsError(`${JSON.stringify(s.slice(0, 40))}... is not a cell id`, 3);
   for (let i = 0; i < s.length; i++) U8[scratch + 8 + i] = s.charCodeAt(i) & 0xff;
   U8[scratch + 8 + s.length] = 0;
@@ -132,7 +163,8 @@ export function stringToCell(s) {
 /** The string id of a BigInt id (checked). */
 export function cellToString(cell) {
   const w = core();
-  check(w.dggs_cell_to_string(BigInt.asIntN(64, cell), scratch, 32), () => `${cell} is not a cell id`);
+  const id = toBig(cell);
+  check(w.dggs_cell_to_string(BigInt.asIntN(64, id), scratch, 32), () => `${show(cell)} is not a cell id`);
   let end = scratch;
   while (U8[end]) end++;
   return String.fromCharCode(...U8.subarray(scratch, end));
@@ -141,10 +173,10 @@ export function cellToString(cell) {
 function toBig(cell) {
   if (typeof cell === "string") return stringToCell(cell);
   if (typeof cell === "bigint") {
-    if (cell < 0n || cell >= 1n << 64n || !W.dggs_is_valid_cell(cell)) throw new DggsError(`${cell} is not a cell id`, 3);
+    if (cell < 0n || cell >= 1n << 64n || !W.dggs_is_valid_cell(cell)) throw new DggsError(`${show(cell)} is not a cell id`, 3);
     return cell;
   }
-  throw new DggsError(`${String(cell)} is not a cell id (a string or a BigInt)`, 3);
+  throw new DggsError(`${show(cell)} is not a cell id (a string or a BigInt)`, 3);
 }
 
 const big = (v) => BigInt.asUintN(64, v);
@@ -183,7 +215,7 @@ export function cellArea(cellOrLevel, unit = "m^2") {
 
 /** The number of cells at a level. */
 export function getNumCells(level) {
-  intArg(level, "level", 0, MAX_LEVEL);
+  levelArg(level);
   return level === 0 ? 20 : 120 * 3 ** (level - 1);
 }
 
@@ -192,6 +224,9 @@ export function getNumCells(level) {
 /** The cell of `level` holding the point (WGS84 degrees): a string id, or a BigInt with `{ asBigInt: true }`. */
 export function latLngToCell(lat, lng, level, opts) {
   const w = core();
+  numArg(lat, "lat");
+  numArg(lng, "lng");
+  levelArg(level);
   check(w.dggs_latlng_to_cell(lat, lng, level, projection(opts), scratch), () => `point (${lat}, ${lng}) at level ${level}`);
   const cell = rdU64(scratch);
   return opts?.asBigInt ? cell : cellToString(cell);
@@ -240,6 +275,7 @@ function withHeap(bytes, fn) {
 
 function toIds(cells) {
   if (cells instanceof BigUint64Array) return cells;
+  if (!Array.isArray(cells)) throw new DggsError(`${show(cells)} is not an array of ids or a BigUint64Array`, 3);
   const out = new BigUint64Array(cells.length);
   for (let i = 0; i < cells.length; i++) out[i] = toBig(cells[i]);
   return out;
@@ -247,6 +283,8 @@ function toIds(cells) {
 
 /** The cells of `level` holding points lat[i], lng[i] (Float64Array or arrays of numbers): a BigUint64Array. */
 export function latLngToCells(lat, lng, level, opts) {
+  numbersArg(lat, "lat");
+  numbersArg(lng, "lng");
   const n = lat.length;
   if (lng.length !== n) throw new DggsError(`lat and lng differ in length (${n}, ${lng.length})`);
   const proj = projection(opts);
@@ -306,7 +344,7 @@ export function cellsToBoundaries(cells, opts) {
 export function cellToParent(cell, level) {
   const w = core();
   const id = toBig(cell);
-  const lv = level ?? w.dggs_get_level(id) - 1;
+  const lv = level === undefined ? w.dggs_get_level(id) - 1 : levelArg(level);
   check(w.dggs_cell_to_parent(id, lv, scratch), () => `parent of ${cell} at level ${lv}`);
   return like(cell, rdU64(scratch));
 }
@@ -315,7 +353,7 @@ export function cellToParent(cell, level) {
 export function cellToCenterChild(cell, level) {
   const w = core();
   const id = toBig(cell);
-  const lv = level ?? w.dggs_get_level(id) + 1;
+  const lv = level === undefined ? w.dggs_get_level(id) + 1 : levelArg(level);
   check(w.dggs_cell_to_center_child(id, lv, scratch), () => `centre child of ${cell} at level ${lv}`);
   return like(cell, rdU64(scratch));
 }
@@ -340,7 +378,7 @@ function maxCells(opts) {
 export function cellToChildren(cell, level, opts) {
   const w = core();
   const id = toBig(cell);
-  const lv = level ?? w.dggs_get_level(id) + 1;
+  const lv = level === undefined ? w.dggs_get_level(id) + 1 : levelArg(level);
   check(w.dggs_cell_to_children_size(id, lv, scratch), () => `children of ${cell} at level ${lv}`);
   const n = rdI64(scratch);
   if (n > maxCells(opts)) throw new DggsError(`${n} children of ${cell} at level ${lv} exceed maxCells ${maxCells(opts)}`, 6);
@@ -377,6 +415,7 @@ export function uncompactCells(cells, level, opts) {
   const w = core();
   const [ids, kind] = idsIn(cells);
   const n = ids.length;
+  levelArg(level);
   return withHeap(8 * n, (inp) => {
     views();
     U64.set(ids, inp >> 3);
@@ -395,7 +434,7 @@ export function uncompactCells(cells, level, opts) {
 function sizedSearch(name, cell, k, opts) {
   const w = core();
   const id = toBig(cell);
-  if (!Number.isInteger(k) || k < 0) throw new DggsError(`k ${k} is not a non-negative integer`, 6);
+  if (!Number.isInteger(k) || k < 0) throw new DggsError(`k ${show(k)} is not a non-negative integer`, 6);
   check(w[`dggs_${name}_size`](id, BigInt(k), scratch), () => `${name} of ${cell}`);
   const size = rdI64(scratch);
   if (size > 4 * maxCells(opts)) throw new DggsError(`${name} of ${cell} with k ${k}: over maxCells ${maxCells(opts)}`, 6);
@@ -442,7 +481,17 @@ export function polygonToCells(polygon, level, opts) {
   const mode = FILL_MODES[opts?.mode ?? "center"];
   if (mode === undefined) throw new DggsError(`mode ${JSON.stringify(opts.mode)} is not one of ${Object.keys(FILL_MODES)}`);
   const proj = projection(opts);
+  levelArg(level);
   const rings = polygon;
+  if (!Array.isArray(rings)) throw new DggsError(`polygon ${show(polygon)} is not an array of rings`, 6);
+  rings.forEach((ring, k) => {
+    if (!Array.isArray(ring)) throw new DggsError(`ring ${k} ${show(ring)} is not an array of points`, 6);
+    ring.forEach((pt, i) => {
+      if (!Array.isArray(pt) || pt.length < 2) throw new DggsError(`point ${i} of ring ${k} ${show(pt)} is not a pair of numbers`, 6);
+      numArg(pt[0], `point ${i} of ring ${k}: coordinate`);
+      numArg(pt[1], `point ${i} of ring ${k}: coordinate`);
+    });
+  });
   const points = rings.reduce((s, r) => s + r.length, 0);
   const [a, b] = opts?.geoJson ? [1, 0] : [0, 1];
   return withHeap(16 * points + 8 * rings.length + 8, (ptr) => {

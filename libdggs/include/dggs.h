@@ -146,23 +146,7 @@ dggs_error dggs_cell_to_polygon(dggs_cell cell, int densify, dggs_projection pro
 
 
 
-/* ---- vertices (vertex.c) ------------------------------------------------------------------------ */
 
-/* A vertex (a cell corner) is named by the smallest cell id round it (the owner) and the corner's index (0-2)
- * there, in dggs_cell_to_boundary's order: the Python package's vertex id "<owner>:<index>" (index/vertex.py).
- * Every cell round a corner gives the same name. */
-
-/* The vertices of `cell`'s three corners, in dggs_cell_to_boundary's order: owners[i] and index[i]. Errors:
- * DGGS_E_CELL, DGGS_E_FAILED (a walk round a corner that does not close: never for valid ids). */
-dggs_error dggs_cell_to_vertexes(dggs_cell cell, dggs_cell owners[3], int index[3]);
-/* 1 if (owner, index) is the name of a corner (owner a cell, index 0-2, and owner the smallest cell round its
- * corner `index`), else 0. */
-int dggs_is_valid_vertex(dggs_cell owner, int index);
-/* The (lat, lng) of a vertex: corner `index` of dggs_cell_to_boundary(owner). DGGS_E_CELL for a (owner, index)
- * that names no vertex (dggs_is_valid_vertex), DGGS_E_PROJECTION. */
-dggs_error dggs_vertex_to_latlng(dggs_cell owner, int index, dggs_projection proj, double *lat, double *lng);
-
-/* ---- end vertices ---- */
 
 /* ---- hierarchy and compaction (hierarchy.c, compact.c) ---------------------------------------- */
 
@@ -476,6 +460,50 @@ dggs_error dggs_edge_length_km(uint64_t edge, dggs_projection proj, double *out)
 /* -- end directed edges -- */
 
 /* ---- end local ---- */
+
+
+
+/* ---- vertices (vertex.c) ---------------------------------------------------------------------- */
+
+/* Most cells around one corner: 12 at a 30-degree corner (4 at a right angle, 6 at 60 degrees, 10 at an
+ * icosahedron vertex from level 1, 5 there at level 0). */
+#define DGGS_MAX_FAN 12
+
+/* The cells around corner `corner` (0..2, in dggs_cell_to_boundary's order) of `cell`, in walking order from
+ * `cell` (counter-clockwise round the corner), into fan[0..*count), and the index of that corner among each
+ * cell's corners into corners[0..*count) (corners[0] = corner). On the edge adjacency alone (the cell across the
+ * edge that starts at the corner, then the next such edge there), so no tolerance. dggs.vertex_to_cells and
+ * dggs.cell_to_vertexes (the smallest cell of the fan names the corner) are this function.
+ * Errors: DGGS_E_CELL, DGGS_E_DOMAIN (corner outside 0..2), DGGS_E_FAILED (a walk that does not close: never). */
+dggs_error dggs_cell_to_vertex_fan(dggs_cell cell, int corner, dggs_cell fan[DGGS_MAX_FAN], int corners[DGGS_MAX_FAN],
+                                   int *count);
+
+/* The ids the buffer of dggs_grid_disk_vertex must hold for radius k (0 <= k <= 2^31) round a cell of `cell`'s
+ * level: room for the largest disk (the edge disk of radius 6 k, as one corner-sharing step crosses at most 6
+ * edges; or the whole level) and for the hash table of the search (twice the least power of 2 >= 64 and >= twice
+ * that). Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k). */
+dggs_error dggs_grid_disk_vertex_size(dggs_cell cell, int64_t k, int64_t *size);
+/* The cells within k corner-sharing steps of `cell` (a step joins two cells with a corner in common; the cell
+ * included), sorted ascending, into out[0..*count); the rest of out[0..size) is set to 0 (it is the work space).
+ * `size` >= dggs_grid_disk_vertex_size(cell, k). Breadth-first, each corner walked once. Allocates nothing.
+ * Errors: DGGS_E_CELL, DGGS_E_DOMAIN (k), DGGS_E_BUFFER (size too small), DGGS_E_FAILED (never). */
+dggs_error dggs_grid_disk_vertex(dggs_cell cell, int64_t k, dggs_cell *out, int64_t size, int64_t *count);
+
+/* A vertex (a cell corner) is named by the smallest cell id round it (the owner) and the corner's index (0-2)
+ * there, in dggs_cell_to_boundary's order: the Python package's vertex id "<owner>:<index>" (index/vertex.py).
+ * Every cell round a corner gives the same name. */
+
+/* The vertices of `cell`'s three corners, in dggs_cell_to_boundary's order: owners[i] and index[i]. Errors:
+ * DGGS_E_CELL, DGGS_E_FAILED (a walk round a corner that does not close: never for valid ids). */
+dggs_error dggs_cell_to_vertexes(dggs_cell cell, dggs_cell owners[3], int index[3]);
+/* 1 if (owner, index) is the name of a corner (owner a cell, index 0-2, and owner the smallest cell round its
+ * corner `index`), else 0. */
+int dggs_is_valid_vertex(dggs_cell owner, int index);
+/* The (lat, lng) of a vertex: corner `index` of dggs_cell_to_boundary(owner). DGGS_E_CELL for a (owner, index)
+ * that names no vertex (dggs_is_valid_vertex), DGGS_E_PROJECTION. */
+dggs_error dggs_vertex_to_latlng(dggs_cell owner, int index, dggs_projection proj, double *lat, double *lng);
+
+/* ---- end vertices ---- */
 
 
 

@@ -12,6 +12,7 @@
 #include "line_layout.h"
 #include "line_tables.h"
 #include "points.h"
+#include "vertex.h"
 #include "tables.h"
 
 #define LT_A DGGS_LT_A
@@ -315,51 +316,13 @@ int64_t dggs_trace(dggs_projection proj, const double *lat, const double *lng, c
 /* ---- the corner join (dggs.index.paths._around over dggs.index._corners.fans) ---- */
 
 /* _corners.MAX_FAN: the most cells around one corner. */
-#define LINES_MAX_FAN 12
-
-/* Unit vectors of a cell's corners in points.corners' counter-clockwise order (the neighbour columns' order:
- * column i crosses the edge from corner i to corner i + 1). _corners.corners_xyz takes them from the geodetic
- * boundary; only the nearest corner is asked of them, which the authalic sphere's vectors give alike. */
-static void lines_corners_xyz(uint64_t cell, double v[3][3]) {
-    double t[6];
-    int face = dggs_corners(cell, t);
-    for (int i = 0; i < 3; i++) dggs_proj_inverse(DGGS_ISEA, face, t[2 * i], t[2 * i + 1], v[i]);
-}
+#define LINES_MAX_FAN DGGS_VERTEX_MAX_FAN
 
 /* _corners.fans for one cell and corner: the cells around corner `corner` of `cell` in walking order from it
- * (cross the edge from that corner, then in each new cell the other edge ending there); their number, or -1
- * if the walk does not close within LINES_MAX_FAN cells (the Python raises RuntimeError). */
+ * (vertex.c's walk on the edge adjacency); their number, or -1 if the walk does not close (never). */
 static int lines_fan(uint64_t cell, int corner, uint64_t fan[LINES_MAX_FAN]) {
-    double vc[3][3];
-    lines_corners_xyz(cell, vc);
-    const double *v = vc[corner];
-    fan[0] = cell;
-    int size = 1;
-    uint64_t cur = cell;
-    int edge = corner;
-    for (int step = 1; step <= LINES_MAX_FAN; step++) {
-        uint64_t nxt = dggs_neighbour(cur, dggs_level_of(cur), edge);
-        if (nxt == cell) return size;
-        if (step == LINES_MAX_FAN) break;
-        fan[step] = nxt;
-        size++;
-        double c[3][3];
-        lines_corners_xyz(nxt, c);
-        int m = 0;
-        double best = 0.0;
-        for (int i = 0; i < 3; i++) { /* numpy's argmin: the first smallest */
-            double dx = c[i][0] - v[0], dy = c[i][1] - v[1], dz = c[i][2] - v[2];
-            double d = dx * dx + dy * dy + dz * dz;
-            if (i == 0 || d < best) {
-                best = d;
-                m = i;
-            }
-        }
-        bool came_by_m = dggs_neighbour(nxt, dggs_level_of(nxt), m) == cur;
-        edge = came_by_m ? (m + 2) % 3 : m;
-        cur = nxt;
-    }
-    return -1;
+    int corners[LINES_MAX_FAN];
+    return dggs_fan(cell, corner, fan, corners);
 }
 
 int dggs_line_around(uint64_t a, uint64_t b, uint64_t way[5]) {

@@ -837,3 +837,112 @@ def test_circle_to_cells_arguments(radius, lat):
     else:
         assert not good_r and isinstance(res, dggs.DggsValueError), res
         names(res, radius)
+
+
+# --------------------------------------------------------------------------
+# A store's roll-up, as dicts and as a table (issue 32: the suite skipped as_table=True)
+# --------------------------------------------------------------------------
+
+AGGREGATE_ARGS = {
+    "level": BAD_LEVELS,
+    "column": [5, b"pop", ["pop"], "nope", "", np.str_("nope"), "pop\x00", '"pop"', "cell", math.nan],
+    "stats": [5, None, "", "SUM", ["sum", 5], [b"sum"], [None], {"sum": 1}, b"sum", math.nan, ["count", "nope"]],
+    "cell": [*CORRUPT_SCALARS, ["C401", 5], np.array([1.5]), "C4" + "0" * 27],
+    "order_by": [5, "nope", ["sum"], b"sum", "max", math.nan],
+    "descending": ["yes", None, np.array([True, False]), 2, math.nan, "False"],
+    "limit": [-1, 2.5, "3", True, math.nan, 1 << 70, np.array([3]), "", -(1 << 70)],
+    "as_table": ["no", None, 2, np.array([True, False]), 0, "", math.nan, "True"],
+}
+AGGREGATE_CASES = [(k, v) for k, values in AGGREGATE_ARGS.items() for v in values]
+
+
+@pytest.fixture(scope="module")
+def small_store():
+    from dggs.storage import CellStore
+
+    with CellStore() as store:
+        store.ingest_points(
+            [1.0, 1.1, -40.0], [2.0, 2.1, 100.0], 6, {"pop": [5, 7, 1], "name": ["a", "b", "c"], "x": [1.5, None, 2.0]}
+        )
+        yield store
+
+
+@pytest.mark.parametrize("as_table", [False, True])
+@pytest.mark.parametrize(("arg", "value"), AGGREGATE_CASES, ids=[f"{k}-{i}" for i, (k, _) in enumerate(AGGREGATE_CASES)])
+def test_aggregate(small_store, arg, value, as_table):
+    kwargs = {"column": "pop", "stats": ("count", "sum"), "as_table": as_table, arg: value}
+    level = kwargs.pop("level", 3)
+    ok, got = outcome(small_store.aggregate, level, **kwargs)
+    if not ok:
+        if isinstance(value, (str, int, float, np.generic)) and not isinstance(value, bool) and value != "":
+            names(got, value)
+        return
+    if kwargs["as_table"]:
+        assert isinstance(got, pa.Table) and "cell" in got.column_names
+        rows = got.to_pylist()
+    else:
+        assert isinstance(got, list)
+        rows = got
+    assert sum(r["count"] for r in rows) <= 3
+    assert all(dggs.is_valid_cell(r["cell"]) for r in rows)
+
+
+def test_aggregate_as_table_equals_the_dicts(small_store):
+    for stats in (("count",), ("count", "sum", "mean", "min", "max")):
+        for cell in (None, "C", dggs.latlng_to_cell(1.0, 2.0, 2)):
+            want = small_store.aggregate(3, "pop", stats, cell=cell)
+            assert small_store.aggregate(3, "pop", stats, cell=cell, as_table=True).to_pylist() == want
+
+
+# --------------------------------------------------------------------------
+# dggs.duckdb.load (issue 32: the suite skipped it)
+# --------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def unsigned_con():
+    duckdb = pytest.importorskip("duckdb")
+    con = duckdb.connect(config={"allow_unsigned_extensions": "true"})
+    yield con
+    con.close()
+
+
+@pytest.mark.parametrize("con", [None, 5, "x", object(), GOOD, b"duckdb"])
+def test_duckdb_load_takes_only_a_connection(con):
+    from dggs.duckdb import load
+
+    ok, got = outcome(load, con)
+    assert not ok and isinstance(got, dggs.DggsValueError)
+    if isinstance(con, (str, int)):
+        names(got, con)
+
+
+LOAD_PATHS = [p for p in CORRUPT_SCALARS if p is not None]  # None: the default file
+
+
+@pytest.mark.parametrize("path", [*LOAD_PATHS, "spatial", "json", "x'; SELECT 1; --", "/nonexistent/x.duckdb_extension"])
+def test_duckdb_load_takes_only_a_file(unsigned_con, path):
+    """Any other text was read by DuckDB as the name of an installed extension ("spatial" loads that one)."""
+    from dggs.duckdb import load
+
+    ok, got = outcome(load, unsigned_con, path)
+    assert not ok and isinstance(got, dggs.DggsValueError)
+    if isinstance(path, (str, int, float)) and not isinstance(path, bool) and "\x00" not in str(path):
+        names(got, path)
+
+
+def test_duckdb_load_of_a_broken_file_or_connection(unsigned_con, tmp_path):
+    duckdb = pytest.importorskip("duckdb")
+    from dggs.duckdb import load
+
+    junk = tmp_path / "it's.duckdb_extension"
+    junk.write_bytes(b"\x00" * 64)
+    for con, path in [(unsigned_con, junk), (unsigned_con, str(junk).encode()), (unsigned_con, tmp_path)]:
+        ok, got = outcome(load, con, path)
+        assert not ok
+    closed = duckdb.connect()
+    closed.close()
+    ok, got = outcome(load, closed, junk)
+    assert not ok and isinstance(got, dggs.ExtensionLoadError) and isinstance(got, RuntimeError)
+    ok, got = outcome(load, unsigned_con, junk)
+    assert isinstance(got, dggs.ExtensionLoadError) and "it's" in str(got)

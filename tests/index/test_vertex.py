@@ -158,8 +158,8 @@ def test_disk_refused_before_any_work(monkeypatch):
     import dggs.index.vertex as vx
 
     calls = []
-    real = vx.all_fans
-    monkeypatch.setattr(vx, "all_fans", lambda ids: calls.append(ids.size) or real(ids))
+    real = vx.kv.disk_row
+    monkeypatch.setattr(vx.kv, "disk_row", lambda *a: calls.append(a) or real(*a))
     with pytest.raises(dggs.TooManyCellsError, match=r"k=300.*\d"):
         grid_disk_vertex("C4" + "0" * 27, 300, max_cells=1000)
     assert calls == []
@@ -186,3 +186,37 @@ def test_disk_rings_deduplicate_against_last_two_only(monkeypatch):
         front = {n for c in front for n in vertex_neighbors(c)} - seen
         seen |= front
     assert got == sorted(seen)
+
+
+def test_vertex_verbs_equal_their_frozen_answers():
+    """Issue 32 item 6: the corner walks and disks moved from numpy into the C core and no answer changed.
+
+    ``tests/reference/fixtures/vertex_v1.json`` was written by ``libdggs/tools/freeze_vertex.py --write`` at the
+    last commit where the walks recognised corners by projecting them in numpy: digests of grid_disk_vertex
+    (string and integer ids, k 0-4, and k 40, 60 and 300 at level 28 round an icosahedron vertex, the antimeridian
+    and the north pole), vertex_neighbors and cell_to_vertexes round the poles, the antimeridian, the 12
+    icosahedron vertices and face-edge midpoints at levels 0-28, over whole levels 0-3 and at random cells.
+    """
+    import importlib.util
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    spec = importlib.util.spec_from_file_location("freeze_vertex", root / "libdggs" / "tools" / "freeze_vertex.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    assert module.main(["--check", str(root / "tests" / "reference" / "fixtures" / "vertex_v1.json")]) == 0
+
+
+@pytest.mark.parametrize("k", [0, 1, 2, 3, 7])
+@pytest.mark.parametrize("cell", SPECIAL + ["C", "C4", "C40120"] + _random_cells(4, 28))
+def test_grid_disk_vertex_is_breadth_first_over_shared_corners(cell, k):
+    """The disk against a breadth-first search over the geometry: cells whose boundaries share a corner point."""
+    seen = {cell}
+    front = {cell}
+    for _ in range(k):
+        candidates = np.array(sorted({n for c in front for n in dggs.grid_disk(c, 6)}))
+        fans = geometric_fans(candidates)
+        front = {n for members in fans.values() if members & front for n in members} - seen
+        seen |= front
+    assert grid_disk_vertex(cell, k) == sorted(seen)
+    assert grid_disk_vertex(dggs.str_to_int(cell), k) == sorted(dggs.str_to_int(c) for c in seen)

@@ -12,7 +12,7 @@ import re
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 import dggs
@@ -20,6 +20,7 @@ import dggs
 duckdb = pytest.importorskip("duckdb")
 pa = pytest.importorskip("pyarrow")
 shapely = pytest.importorskip("shapely")
+pyproj = pytest.importorskip("pyproj")
 
 from dggs.duckdb import register  # noqa: E402
 
@@ -172,6 +173,9 @@ def _dissolved(cells):
 
 
 @given(kind=st.sampled_from(KINDS), rows=st.lists(st.one_of(st.none(), cell_sets()), min_size=1, max_size=8))
+# a whole face beside level-2 cells: its lng/lat polygon drawn on its own has 0.5 square degrees less than the
+# same face in the finer-drawn outline (rel 1.6e-4; the flaky case of issue 32 was 1.8e-4); the true areas agree
+@example(kind="VARCHAR", rows=[(["T00", "T12", "T21", "T30", "T40", "T42", "O"], 3)])
 def test_set_functions_equal_python(con, kind, rows):
     lists = [None if r is None else r[0] for r in rows]
     levels = [None if r is None else r[1] for r in rows]
@@ -194,13 +198,16 @@ def test_set_functions_equal_python(con, kind, rows):
         assert shape.equals(want)
         if present:
             # independent of the union: every cell's centre is inside, and away from the poles (where densified
-            # geodesic edges drawn in lng/lat may overlap) the dissolved area is the summed area of the
-            # disjoint compacted cells (a covered cell densified on its own may bulge out of its ancestor by ~1e-6)
+            # geodesic edges drawn in lng/lat may overlap) the dissolved area on the ellipsoid (pyproj.Geod) is
+            # the summed exact area of the disjoint compacted cells. Not their lng/lat areas: a coarse cell drawn
+            # on its own has fewer points than in the outline (a face beside level-2 cells: rel 1.6e-4)
             lat, lng = dggs.cell_to_latlng(np.asarray(present, dtype=object if kind == "VARCHAR" else np.uint64))
             assert shapely.covers(shape, shapely.points(np.atleast_1d(lng), np.atleast_1d(lat))).all()
-            parts = [dggs.cell_to_polygon(c) for c in dggs.compact_cells(present)]
+            compact = dggs.compact_cells(present)
+            parts = [dggs.cell_to_polygon(c) for c in compact]
             if max(max(abs(p.bounds[1]), abs(p.bounds[3])) for p in parts) < 75:
-                assert shape.area == pytest.approx(sum(p.area for p in parts), rel=1e-4)
+                true_area = abs(pyproj.Geod(ellps="WGS84").geometry_area_perimeter(shape)[0])
+                assert true_area == pytest.approx(sum(dggs.cell_area(c) for c in compact), rel=1e-6)
         else:
             assert shape.is_empty
 

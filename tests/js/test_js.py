@@ -30,3 +30,13 @@ def test_js_package_matches_python(tmp_path: Path) -> None:
     tested = run(["node", "--test", *tests], env={**os.environ, "DGGS_JS_FIXTURES": str(tmp_path)})
     assert tested.returncode == 0, tested.stdout[-20000:] + tested.stderr[-5000:]
     assert "# fail 0" in tested.stdout
+
+
+def test_js_package_refuses_corrupt_values_with_its_error() -> None:
+    """The adversarial suite's corrupt ids, levels, radii, coordinates and options fed to every verb of the JS
+    package (js/test/adversarial.test.mjs): an answer or a DggsError, never a TypeError or a trap (issue 32)."""
+    built = run(["make", "--no-print-directory", "wasm"])
+    assert built.returncode == 0, built.stdout + built.stderr
+    tested = run(["node", "--test", "js/test/adversarial.test.mjs"])
+    assert tested.returncode == 0, tested.stdout[-20000:] + tested.stderr[-5000:]
+    assert "# fail 0" in tested.stdout
