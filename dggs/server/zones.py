@@ -28,6 +28,7 @@ import dggs
 from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
 from .encodings import HAS_UBJSON, UBJSON, UINT64, dggs_ubjson, uint64_zone_list
 from .errors import BadRequest, TooManyZones
+from .features import parse_properties
 from .geojson import GEOJSON, clean, feature_collection
 from .models import ZoneInfo, json_response
 from .params import (
@@ -44,6 +45,7 @@ from .params import (
 )
 from .reader import LevelData, cells_meeting_bbox
 from .stats import zone_statistics
+from .strictparams import refuse_unknown
 from .zonequery import check_crs, check_geometry, geometry_texts, page_links, parent_range, parse_subset
 
 __all__ = ["register", "STATS", "sub_zone_count"]
@@ -149,17 +151,22 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 
 
 def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-              f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID) -> Response:
-    """Sub-zone roll-ups of ``zone`` at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON), under the data's DGGRS only."""
+              f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID,
+              properties: str | None = None) -> Response:
+    """Sub-zone roll-ups of ``zone`` at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON), under the data's DGGRS only.
+
+    ``properties`` (comma-separated; a parameter of the standard's zone data operation)
+    keeps only those properties; one the data do not have is a 400 naming it.
+    """
     check_data_dggrs(ctx, dggrs_id)
     fmt = negotiate(request, f, DATA_FORMATS)
     mode = check_geometry(geometry)
     with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
-        return _zone_data(ctx, request, collection, zone, depth, fmt, mode, dggrs_id)
+        return _zone_data(ctx, request, collection, zone, depth, fmt, mode, dggrs_id, properties)
 
 
 def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-               fmt: str, mode: str, dggrs_id: str) -> Response:
+               fmt: str, mode: str, dggrs_id: str, properties: str | None = None) -> Response:
     summary = ctx.reader.summary()
     stored = summary.level
     level = dggs.get_level(zone)
@@ -177,6 +184,7 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                            f"server's limit of {ctx.max_features}; ask for a smaller zone-depth or a finer zone")
     columns = summary.numeric_columns
     props = ["count"] + [f"{c}_{s}" for c in columns for s in STATS]
+    selected = parse_properties(properties, props)  # checked before any roll-up is read
     per_depth: list[tuple[int, list[str], dict[str, list[Any]]]] = []
     for d in depths:
         subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
@@ -191,6 +199,8 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                 for s in STATS:
                     data[f"{c}_{s}"][i] = clean(row[s])
         per_depth.append((d, subs, data))
+    if selected is not None:
+        props = selected
     if fmt == "geojson":
         ids: list[str] = []
         geoms: list[str] = []
@@ -206,10 +216,11 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                  "depths": depths, "numberReturned": len(ids), "links": _links(request, collection, zone, dggrs_id)}
         return Response(feature_collection(ids, geoms, properties, extra), media_type=GEOJSON)
     count = {"type": "integer", "title": "rows in the sub-zone"}
-    schema: dict[str, Any] = {"type": "object", "properties": {"count": count}}
+    described: dict[str, Any] = {"count": count}
     for c in columns:
         for s in STATS:
-            schema["properties"][f"{c}_{s}"] = {"type": "number", "title": f"{s} of {c} in the sub-zone"}
+            described[f"{c}_{s}"] = {"type": "number", "title": f"{s} of {c} in the sub-zone"}
+    schema: dict[str, Any] = {"type": "object", "properties": {p: described[p] for p in props}}
     values = {
         p: [{"depth": d, "shape": {"count": len(subs), "subZones": len(subs)}, "data": data[p]}
             for d, subs, data in per_depth]
@@ -333,6 +344,7 @@ _F_ZONES = Query(None, description="Output format: json (default), geojson or ui
                                    "a little-endian uint64 count, then the uint64 zone ids); overrides Accept")
 _DEPTH = Query(None, alias="zone-depth", description="Relative depth: d, low-high or a,b,c (default 3)")
 _GEOMETRY = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, zone-centroid or none")
+_PROPERTIES = Query(None, description="Comma-separated properties to return (default: all), e.g. count,pop_sum")
 
 
 def _zone_query(
@@ -362,9 +374,9 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, None, parse_zone(zoneId), f, dggrsId)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
+             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA, properties: str | None = _PROPERTIES) -> Response:
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
+        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId, properties)
 
     def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F_ZONES) -> Response:
         check_dggrs(dggrsId)
@@ -376,10 +388,12 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, collectionId, parse_zone(zoneId), f, dggrsId)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-               geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
+               geometry: str | None = _GEOMETRY, f: str | None = _F_DATA,
+               properties: str | None = _PROPERTIES) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
+        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
+                         properties)
 
     def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
                 f: str | None = _F_ZONES) -> Response:
@@ -392,7 +406,10 @@ def register(app: FastAPI, ctx: Context) -> None:
         ("/collections/{collectionId}", "Collection DGGS", (c_zones, c_info, c_data)),
     ):
         root = prefix + "/dggs/{dggrsId}/zones"
-        app.add_api_route(root, handlers[0], methods=["GET"], tags=[tag], summary="Zones holding data (zone query)")
-        app.add_api_route(root + "/{zoneId}", handlers[1], methods=["GET"], tags=[tag], summary="Zone information")
-        app.add_api_route(root + "/{zoneId}/data", handlers[2], methods=["GET"], tags=[tag],
+        guard = [Depends(refuse_unknown)]  # parameters a route does not take: 400 naming them
+        app.add_api_route(root, handlers[0], methods=["GET"], tags=[tag], dependencies=guard,
+                          summary="Zones holding data (zone query)")
+        app.add_api_route(root + "/{zoneId}", handlers[1], methods=["GET"], tags=[tag], dependencies=guard,
+                          summary="Zone information")
+        app.add_api_route(root + "/{zoneId}/data", handlers[2], methods=["GET"], tags=[tag], dependencies=guard,
                           summary="Data of a zone's sub-zones (DGGS-JSON or GeoJSON)")
