@@ -37,11 +37,13 @@ from fastapi.responses import Response
 
 import dggs
 
+from .dggrs import CRS84
 from .errors import BadRequest, NotFound, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
 from .params import Context, base_url, check_collection, check_level, negotiate, parse_bbox
 from .reader import cells_meeting_bbox, covers_world
 from .strictparams import refuse_unknown
+from .zonequery import check_crs
 
 __all__ = ["register", "CONFORMANCE", "DEFAULT_LIMIT", "STATS", "parse_datetime", "parse_properties"]
 
@@ -135,9 +137,11 @@ def _links_of_page(request: Request, cid: str, offset: int, limit: int, returned
 
 def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox_raw: str | None,
           limit: int | None, offset: int, datetime: str | None, properties: str | None,
-          f: str | None = None) -> Response:
+          f: str | None = None, crs: str | None = None, bbox_crs: str | None = None) -> Response:
     """A page of the collection's features (/req/core/fc-response); see the module's docstring."""
     check_collection(ctx, cid)
+    check_crs("crs", crs)  # OGC API - Features Part 2: the collection's one CRS, CRS84, may be named
+    check_crs("bbox-crs", bbox_crs)
     negotiate(request, f, ("geojson", "json"))  # GeoJSON is JSON too
     parse_datetime(datetime)  # no zone has a temporal geometry: every one matches (fc-time-response C)
     keep = parse_properties(properties, _property_names(ctx))
@@ -174,13 +178,14 @@ def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox
         "timeStamp": dt.datetime.now(dt.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "links": _links_of_page(request, cid, offset, size, len(ids), matched),
     }
-    return Response(feature_collection(ids, texts, props, extra), media_type=GEOJSON)
+    return Response(feature_collection(ids, texts, props, extra), media_type=GEOJSON, headers=_CONTENT_CRS)
 
 
 def item(ctx: Context, request: Request, cid: str, feature_id: str, properties: str | None,
-         f: str | None = None) -> Response:
+         f: str | None = None, crs: str | None = None) -> Response:
     """One zone as a Feature (/req/core/f-op, /req/core/f-success); 404 when the zone holds no rows."""
     check_collection(ctx, cid)
+    check_crs("crs", crs)
     negotiate(request, f, ("geojson", "json"))
     keep = parse_properties(properties, _property_names(ctx))
     if not dggs.is_valid_cell(feature_id):
@@ -215,7 +220,7 @@ def item(ctx: Context, request: Request, cid: str, feature_id: str, properties: 
 
     feature = orjson.loads(text)["features"][0]
     feature["links"] = links
-    return Response(orjson.dumps(feature), media_type=GEOJSON)
+    return Response(orjson.dumps(feature), media_type=GEOJSON, headers=_CONTENT_CRS)
 
 
 def _dggrs(ctx: Context) -> str:
@@ -225,6 +230,9 @@ def _dggrs(ctx: Context) -> str:
 
 
 _F = Query(None, description="geojson (or json, the same GeoJSON); overrides the Accept header")
+_CRS = Query(None, description="CRS of the geometries: only CRS84, the default (OGC API - Features Part 2)")
+#: OGC API - Features Part 2 /req/crs/ogc-crs-header: the CRS of the geometries, in angle brackets.
+_CONTENT_CRS = {"Content-Crs": f"<{CRS84}>"}
 
 
 def _items_query(
@@ -238,9 +246,11 @@ def _items_query(
                                                    "zone matches (OGC API - Features /req/core/fc-time-response C)"),
     properties: str | None = Query(None, description="Comma-separated properties to keep (default: all)"),
     f: str | None = _F,
+    crs: str | None = _CRS,
+    bbox_crs: str | None = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)"),
 ) -> dict[str, Any]:
     return {"zone_level": zone_level, "bbox_raw": bbox, "limit": limit, "offset": offset, "datetime": datetime,
-            "properties": properties, "f": f}
+            "properties": properties, "f": f, "crs": crs, "bbox_crs": bbox_crs}
 
 
 def register(app: FastAPI, ctx: Context) -> None:
@@ -257,5 +267,5 @@ def register(app: FastAPI, ctx: Context) -> None:
              response_class=Response, responses=responses, summary="One zone as a GeoJSON feature")
     def get_item(request: Request, collectionId: str, featureId: str,
                  properties: str | None = Query(None, description="Comma-separated properties to keep"),
-                 f: str | None = _F) -> Response:
-        return item(ctx, request, collectionId, featureId, properties, f)
+                 f: str | None = _F, crs: str | None = _CRS) -> Response:
+        return item(ctx, request, collectionId, featureId, properties, f, crs)
