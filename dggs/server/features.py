@@ -45,7 +45,7 @@ from .reader import cells_meeting_bbox, covers_world
 from .strictparams import refuse_unknown
 from .zonequery import check_crs
 
-__all__ = ["register", "CONFORMANCE", "DEFAULT_LIMIT", "STATS", "parse_datetime", "parse_properties"]
+__all__ = ["register", "CONFORMANCE", "DEFAULT_LIMIT", "STATS", "level_table", "parse_datetime", "parse_properties"]
 
 _FEATURES = "http://www.opengis.net/spec/ogcapi-features-1/1.0/conf/"
 #: The OGC API - Features Part 1 classes met (``html`` is not: no HTML encoding of the features).
@@ -79,7 +79,7 @@ def parse_datetime(raw: str | None) -> str | None:
     if len(parts) > 2 or all(p in ("", "..") for p in parts):
         raise BadRequest(f"datetime {raw!r} must be an RFC 3339 date-time (2018-02-12T23:20:50Z) or an interval "
                          "start/end with '..' for an open end")
-    moments = []
+    moments: list[dt.datetime | None] = []
     for part in parts:
         if part in ("", ".."):
             moments.append(None)
@@ -119,6 +119,38 @@ def _property_names(ctx: Context) -> list[str]:
     return ["zoneID", "level", "count"] + [f"{c}_{s}" for c in columns for s in STATS]
 
 
+def level_table(reader: Any, level: int) -> dict[str, Any]:
+    """Every zone at ``level`` holding rows, with its row count and :data:`STATS` of every numeric column.
+
+    ``{"ids": sorted str ids, "count": [...], "{column}_{stat}": [...], ...}``, the lists aligned with ``ids``
+    (None where a zone has no non-NULL value), read in one snapshot and cached as the reader caches its
+    roll-ups (per store state, and ``refresh``).
+
+    Raises
+    ------
+    DggsValueError
+        For a level finer than the stored one (from :meth:`CellStore.aggregate`).
+    """
+    with reader.snapshot() as (store, marker):
+
+        def compute() -> dict[str, Any]:
+            rows = store.aggregate(level, None, ("count",))
+            ids = [r["cell"] for r in rows]
+            where = {c: i for i, c in enumerate(ids)}
+            table: dict[str, Any] = {"ids": np.array(ids, dtype=str) if ids else np.array([], dtype="<U1"),
+                                     "count": [int(r["count"]) for r in rows]}
+            for column in [c for c, t in store.columns.items() if t in ("INTEGER", "REAL")]:
+                for stat in STATS:
+                    table[f"{column}_{stat}"] = [None] * len(ids)
+                for r in store.aggregate(level, column, STATS):
+                    for stat in STATS:
+                        table[f"{column}_{stat}"][where[r["cell"]]] = r[stat]
+            return table
+
+        # the reader's cache, shared with its roll-ups (one key per level; private to the server package)
+        return reader._cached(("features", level), marker, compute)  # type: ignore[no-any-return]
+
+
 def _links_of_page(request: Request, cid: str, offset: int, limit: int, returned: int, matched: int) -> list[dict[str, Any]]:
     """``self``, ``collection`` and, while features remain, ``next`` (and ``prev`` after the first page)."""
     base = base_url(request)
@@ -154,8 +186,8 @@ def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox
     with ctx.reader.snapshot():  # every number from one state of the store
         stored = ctx.reader.summary().level
         level = check_level("zone-level", (stored or 0) if zone_level is None else zone_level, stored)
-        table = ctx.reader.level_table(level, STATS) if stored is not None else {"ids": np.array([], dtype=str),
-                                                                                  "count": []}
+        table: dict[str, Any] = (level_table(ctx.reader, level) if stored is not None
+                                 else {"ids": np.array([], dtype=str), "count": []})
         index = np.arange(len(table["ids"]))
         if bbox is not None and not covers_world(bbox) and len(index):
             found = cells_meeting_bbox(ctx.reader, ctx.reader.level_data(level), bbox, ctx.max_zones)
@@ -168,7 +200,7 @@ def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox
     ids = table["ids"][page].tolist()
     _, texts = ctx.reader.geometries(np.array(ids, dtype=str)) if ids else (None, [])
     names = [n for n in table if n != "ids"]
-    props = []
+    props: list[dict[str, Any]] = []
     for i, zone in zip(page.tolist(), ids, strict=True):
         row = {"zoneID": zone, "level": level, **{n: clean(table[n][i]) for n in names}}
         props.append(row if keep is None else {n: row[n] for n in keep})

@@ -282,38 +282,6 @@ class StoreReader:
 
             return self._cached(("level", level, column, stat), marker, compute)  # type: ignore[no-any-return]
 
-    def level_table(self, level: int, stats: Sequence[str] = ("sum", "mean", "min", "max")) -> dict[str, Any]:
-        """Every non-empty cell at ``level`` with its row count and ``stats`` of every numeric column (cached).
-
-        Returns ``{"ids": sorted str ids, "count": [...], "{column}_{stat}": [...], ...}``, the lists aligned
-        with ``ids`` (None where a cell has no non-NULL value), read in one snapshot: the values of the
-        Features items (``/collections/{id}/items``), which are zone data's properties at depth 0.
-
-        Raises
-        ------
-        DggsValueError
-            For a level finer than the stored one (from :meth:`CellStore.aggregate`).
-        """
-        with self.snapshot() as (store, marker):
-
-            def compute() -> dict[str, Any]:
-                rows = store.aggregate(level, None, ("count",))
-                ids = [r["cell"] for r in rows]
-                where = {c: i for i, c in enumerate(ids)}
-                table: dict[str, Any] = {"ids": np.array(ids, dtype=str) if ids else np.array([], dtype="<U1"),
-                                         "count": [int(r["count"]) for r in rows]}
-                numeric = [c for c, t in store.columns.items() if t in ("INTEGER", "REAL")]
-                for column in numeric:
-                    for stat in stats:
-                        table[f"{column}_{stat}"] = [None] * len(ids)
-                    for r in store.aggregate(level, column, tuple(stats)):
-                        i = where[r["cell"]]
-                        for stat in stats:
-                            table[f"{column}_{stat}"][i] = r[stat]
-                return table
-
-            return self._cached(("table", level, tuple(stats)), marker, compute)  # type: ignore[no-any-return]
-
     def rollup(self, zone: str, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """``store.aggregate(level, column, stats, cell=zone)`` in one snapshot (not cached)."""
         with self.snapshot() as (store, _marker):

@@ -16,7 +16,6 @@ Each route is served twice: under ``/dggs/{dggrsId}`` (the API's own DGGRS, the
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -46,7 +45,16 @@ from .params import (
 from .reader import LevelData, cells_meeting_bbox
 from .stats import zone_statistics
 from .strictparams import refuse_unknown
-from .zonequery import check_crs, check_geometry, geometry_texts, page_links, parent_range, parse_subset
+from .zonequery import (
+    ZONE_QUERY,
+    ZoneQuery,
+    check_crs,
+    check_geometry,
+    geometry_texts,
+    page_links,
+    parent_range,
+    parse_subset,
+)
 
 __all__ = ["register", "STATS", "sub_zone_count"]
 
@@ -166,7 +174,7 @@ def zone_data(ctx: Context, request: Request, collection: str | None, zone: str,
 
 
 def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-               fmt: str, mode: str, dggrs_id: str, properties: str | None = None) -> Response:
+               fmt: str, mode: str, dggrs_id: str, wanted: str | None = None) -> Response:
     summary = ctx.reader.summary()
     stored = summary.level
     level = dggs.get_level(zone)
@@ -184,7 +192,7 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                            f"server's limit of {ctx.max_features}; ask for a smaller zone-depth or a finer zone")
     columns = summary.numeric_columns
     props = ["count"] + [f"{c}_{s}" for c in columns for s in STATS]
-    selected = parse_properties(properties, props)  # checked before any roll-up is read
+    selected = parse_properties(wanted, props)  # checked before any roll-up is read
     per_depth: list[tuple[int, list[str], dict[str, list[Any]]]] = []
     for d in depths:
         subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
@@ -242,22 +250,6 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
 
 
 # -- zone query ---------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class ZoneQuery:
-    """The parameters of a zone query, as given (checked by :func:`zones_list`)."""
-
-    zone_level: int | None = None
-    bbox: str | None = None
-    bbox_crs: str | None = None
-    compact: bool = True
-    limit: int | None = None
-    offset: int = 0
-    parent: str | None = None
-    subset: tuple[str, ...] = ()
-    subset_crs: str | None = None
-    geometry: str | None = None
 
 
 def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQuery, f: str | None,
@@ -347,23 +339,6 @@ _GEOMETRY = Query(None, description="GeoJSON geometry: zone-region (default), ve
 _PROPERTIES = Query(None, description="Comma-separated properties to return (default: all), e.g. count,pop_sum")
 
 
-def _zone_query(
-    zone_level: int | None = Query(None, alias="zone-level", description="Level of the zones (default: stored)"),
-    bbox: str | None = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)"),
-    bbox_crs: str | None = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)"),
-    compact_zones: bool = Query(True, alias="compact-zones", description="Complete sets of children as parent"),
-    limit: int | None = Query(None, description="Return at most this many zones (a page; see offset)"),
-    offset: int = Query(0, description="Skip this many zones (paging; the next link gives it)"),
-    parent_zone: str | None = Query(None, alias="parent-zone", description="Only zones inside this zone"),
-    subset: list[str] | None = Query(None, description="Lat(lo:hi),Lon(lo:hi) in CRS84 degrees; not with bbox"),
-    subset_crs: str | None = Query(None, alias="subset-crs", description="CRS of subset: only CRS84"),
-    geometry: str | None = _GEOMETRY,
-) -> ZoneQuery:
-    return ZoneQuery(zone_level, bbox, bbox_crs, compact_zones, limit, offset, parent_zone,
-                     tuple(subset or ()), subset_crs, geometry)
-
-
-_QUERY = Depends(_zone_query)
 
 
 def register(app: FastAPI, ctx: Context) -> None:
@@ -378,7 +353,7 @@ def register(app: FastAPI, ctx: Context) -> None:
         check_dggrs(dggrsId)
         return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId, properties)
 
-    def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F_ZONES) -> Response:
+    def zones(request: Request, dggrsId: str, q: ZoneQuery = ZONE_QUERY, f: str | None = _F_ZONES) -> Response:
         check_dggrs(dggrsId)
         return zones_list(ctx, request, None, q, f, dggrsId)
 
@@ -395,7 +370,7 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
                          properties)
 
-    def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
+    def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = ZONE_QUERY,
                 f: str | None = _F_ZONES) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)

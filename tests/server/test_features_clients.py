@@ -197,3 +197,20 @@ def test_a_missing_feature_is_a_404(url, points):
         status, _, body = get(f"{url}/collections/{COLLECTION}/items/{zone}")
         assert status == 404 and zone in body["detail"]
     assert get(f"{url}/collections/other/items")[0] == 404
+
+
+def test_openapi_lists_the_features_routes(client):
+    # /req/oas30/oas-definition-1 with the Features routes: GDAL reads /api for the items' parameters
+    from openapi_spec_validator import OpenAPIV30SpecValidator
+
+    api = client.get("/api").json()
+    OpenAPIV30SpecValidator(api).validate()
+    for path, names in (("/collections/{collectionId}/items", {"bbox", "limit", "offset", "datetime", "zone-level",
+                                                                "properties", "crs", "bbox-crs", "f"}),
+                        ("/collections/{collectionId}/items/{featureId}", {"properties", "crs", "f"})):
+        op = api["paths"][path]["get"]
+        assert {p["name"] for p in op["parameters"] if p["in"] == "query"} == names, path
+        assert "application/geo+json" in op["responses"]["200"]["content"], path
+    conformance = client.get("/conformance").json()["conformsTo"]
+    assert {FEATURES_CORE, FEATURES_CORE.replace("core", "geojson"), FEATURES_CORE.replace("core", "oas30")} <= set(conformance)
+    assert FEATURES_CORE.replace("core", "html") not in conformance
