@@ -12,8 +12,8 @@ route takes instead.
 
 Examples
 --------
->>> sorted(NOT_IMPLEMENTED)[:4]
-['collections', 'crs', 'datetime', 'exclude-properties']
+>>> NOT_IMPLEMENTED["filter"]
+'CQL2 filters are not implemented'
 """
 
 from __future__ import annotations
