@@ -32,6 +32,7 @@ import datetime as dt
 from typing import Any
 
 import numpy as np
+import orjson
 from fastapi import Depends, FastAPI, Query, Request
 from fastapi.responses import Response
 
@@ -248,11 +249,49 @@ def item(ctx: Context, request: Request, cid: str, feature_id: str, properties: 
     props = row if keep is None else {n: row[n] for n in keep}
     text = feature_collection([feature_id], texts, [props], {})
     # one Feature: the FeatureCollection writer's feature, with the links beside it
-    import orjson
-
     feature = orjson.loads(text)["features"][0]
     feature["links"] = links
     return Response(orjson.dumps(feature), media_type=GEOJSON, headers=_CONTENT_CRS)
+
+
+def schema_xsd(ctx: Context, cid: str) -> bytes:
+    """The features' properties as a GML application schema (XML Schema), for GDAL's Features driver.
+
+    GDAL types a layer's fields from the collection's ``describedby`` schema, or else from a first page of 20
+    features: there a sum beyond 2**31 further on became a 32-bit field clamped to 2147483647.  GDAL reads
+    ``xs:long`` as a 64-bit integer (its JSON Schema reading makes every integer 32-bit, so XML it is).
+    ``count`` and the sum, min and max of an INTEGER column are ``xs:long``, means and REAL statistics
+    ``xs:double``.  Written with :mod:`xml.etree.ElementTree`.
+    """
+    from xml.etree import ElementTree as ET
+
+    check_collection(ctx, cid)
+    xs, gml = "http://www.w3.org/2001/XMLSchema", "http://www.opengis.net/gml/3.2"
+    ET.register_namespace("xs", xs)
+    ET.register_namespace("gml", gml)
+    ET.register_namespace("dggs", _XSD_NS)
+    root = ET.Element(f"{{{xs}}}schema", {"targetNamespace": _XSD_NS, "elementFormDefault": "qualified",
+                                          "version": "1.0"})
+    ET.SubElement(root, f"{{{xs}}}import", {"namespace": gml})
+    ET.SubElement(root, f"{{{xs}}}element", {"name": cid, "type": f"dggs:{cid}Type",
+                                              "substitutionGroup": "gml:AbstractFeature"})
+    kind = ET.SubElement(root, f"{{{xs}}}complexType", {"name": f"{cid}Type"})
+    extension = ET.SubElement(ET.SubElement(kind, f"{{{xs}}}complexContent"), f"{{{xs}}}extension",
+                              {"base": "gml:AbstractFeatureType"})
+    sequence = ET.SubElement(extension, f"{{{xs}}}sequence")
+    fields = [("geometry", "gml:SurfacePropertyType"), ("zoneID", "xs:string"), ("level", "xs:int"),
+              ("count", "xs:long")]
+    for column, typed in ctx.reader.summary().columns.items():
+        if typed in ("INTEGER", "REAL"):
+            whole = "xs:long" if typed == "INTEGER" else "xs:double"
+            fields += [(f"{column}_{s}", "xs:double" if s == "mean" else whole) for s in STATS]
+    for name, typed in fields:
+        ET.SubElement(sequence, f"{{{xs}}}element", {"name": name, "type": typed, "minOccurs": "0"})
+    return bytes(ET.tostring(root, encoding="utf-8", xml_declaration=True))
+
+
+#: The target namespace of :func:`schema_xsd`.
+_XSD_NS = "urn:dggs:features"
 
 
 def _dggrs(ctx: Context) -> str:
@@ -262,6 +301,8 @@ def _dggrs(ctx: Context) -> str:
 
 
 _F = Query(None, description="geojson (or json, the same GeoJSON); overrides the Accept header")
+#: Media type of the features' XML Schema.
+XSD = "application/xml"
 _CRS = Query(None, description="CRS of the geometries: only CRS84, the default (OGC API - Features Part 2)")
 #: OGC API - Features Part 2 /req/crs/ogc-crs-header: the CRS of the geometries, in angle brackets.
 _CONTENT_CRS = {"Content-Crs": f"<{CRS84}>"}
@@ -294,6 +335,13 @@ def register(app: FastAPI, ctx: Context) -> None:
              responses=responses, summary="The zones holding data as GeoJSON features (OGC API - Features)")
     def get_items(request: Request, collectionId: str, q: dict[str, Any] = Depends(_items_query)) -> Response:
         return items(ctx, request, collectionId, **q)
+
+    @app.get("/collections/{collectionId}/schema.xsd", tags=["Features"], dependencies=guard,
+             response_class=Response, responses={200: {"content": {XSD: {}}}},
+             summary="The features' properties as a GML application schema (XML Schema)")
+    def get_schema(request: Request, collectionId: str) -> Response:
+        negotiate(request, None, ("xml",))
+        return Response(schema_xsd(ctx, collectionId), media_type=XSD)
 
     @app.get("/collections/{collectionId}/items/{featureId}", tags=["Features"], dependencies=guard,
              response_class=Response, responses=responses, summary="One zone as a GeoJSON feature")

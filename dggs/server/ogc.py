@@ -112,6 +112,8 @@ def collection(ctx: Context, request: Request) -> Collection:
             # /req/core/fc-md-items-links (OGC API - Features): the features, as GeoJSON
             _link(f"{href}/items", "items", "application/geo+json",
                   f"The zones holding data as features, level {summary.level}, {DEFAULT_LIMIT} a page"),
+            # the features' property types, which GDAL reads (describedby) instead of guessing from 20 features
+            _link(f"{href}/schema.xsd", "describedby", "application/xml", "The features' properties (XML Schema)"),
         ],
     }
     if summary.updated:

@@ -9,12 +9,14 @@ test store (``dggs.latlng_to_cell`` and numpy group-bys), and expected bbox resu
 
 from __future__ import annotations
 
+import contextlib
 import json
 import socket
 import subprocess
 import sys
 import time
 import urllib.request
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +24,7 @@ import numpy as np
 import pytest
 
 import dggs
+from dggs.storage import CellStore
 from tests.server.conftest import LEVEL
 from tests.server.test_api import brute_force_bbox
 
@@ -35,12 +38,13 @@ def _free_port() -> int:
         return int(sock.getsockname()[1])
 
 
-@pytest.fixture(scope="module")
-def url(store_path):
+@contextlib.contextmanager
+def serving(store: Path) -> Iterator[str]:
+    """``dggs serve store`` as a process on a free port of 127.0.0.1: yields its base URL."""
     exe = Path(sys.executable).parent / "dggs"
     assert exe.exists(), f"the dggs script is not installed next to {sys.executable}"
     port = _free_port()
-    proc = subprocess.Popen([str(exe), "serve", str(store_path), "--port", str(port)],
+    proc = subprocess.Popen([str(exe), "serve", str(store), "--port", str(port)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     base = f"http://127.0.0.1:{port}"
     try:
@@ -57,6 +61,12 @@ def url(store_path):
     finally:
         proc.terminate()
         proc.communicate(timeout=30)
+
+
+@pytest.fixture(scope="module")
+def url(store_path):
+    with serving(store_path) as base:
+        yield base
 
 
 def truth(points, level: int = LEVEL) -> dict[str, dict[str, Any]]:
@@ -121,6 +131,25 @@ def test_gdal_bbox_reads_the_zones_meeting_the_box(url, points, bbox):
 
     df = pyogrio.read_dataframe(_gdal(url), layer=COLLECTION, bbox=bbox)
     assert set(df["zoneID"]) == brute_force_bbox(points, LEVEL, bbox)
+
+
+def test_gdal_reads_64_bit_sums_that_its_first_page_does_not_show(tmp_path):
+    # GDAL types the fields from the collection's describedby schema (else from a first page of 20 features,
+    # which made a sum of 5e9 further on a 32-bit field clamped to 2147483647)
+    import pyogrio
+
+    cells = np.asarray(dggs.uncompact_cells(["A", "B"], 3))
+    lat, lng = dggs.cell_to_latlng(cells)
+    big = np.arange(len(cells)) >= 30  # the first 30 zones in id order hold 1, the rest 5e9
+    path = tmp_path / "big.db"
+    with CellStore(path) as store:
+        store.ingest_points(lat, lng, 3, {"pop": np.where(big, 5_000_000_000, 1), "v": np.where(big, 0.5, 1.0)})
+    with serving(path) as base:
+        df = pyogrio.read_dataframe(_gdal(base), layer="big")
+    df = df.set_index("zoneID").loc[np.sort(cells)]
+    assert df["pop_sum"].tolist() == np.where(big[np.argsort(cells)], 5_000_000_000, 1).tolist()
+    assert str(df["pop_sum"].dtype) == "int64" and str(df["count"].dtype) == "int64"
+    assert df["v_mean"].tolist() == np.where(big[np.argsort(cells)], 0.5, 1.0).tolist()
 
 
 # -- OWSLib -------------------------------------------------------------------
