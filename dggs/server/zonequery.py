@@ -40,7 +40,7 @@ from .errors import BadRequest
 from .params import parse_zone
 
 __all__ = ["CRS84_NAMES", "check_crs", "parse_subset", "parent_range", "check_geometry", "geometry_texts",
-           "page_links", "GEOMETRIES", "ZoneQuery", "ZONE_QUERY"]
+           "page_links", "GEOMETRIES", "ZoneQuery", "ZONE_QUERY", "CRS_QUERY"]
 
 #: The names of CRS84 that ``bbox-crs`` and ``subset-crs`` take.
 CRS84_NAMES = frozenset({CRS84, CRS84.replace("http://", "https://"), "[OGC:CRS84]", "OGC:CRS84"})
@@ -203,6 +203,11 @@ class ZoneQuery:
     subset: tuple[str, ...] = ()
     subset_crs: str | None = None
     geometry: str | None = None
+    crs: str | None = None
+
+
+#: The ``crs`` parameter of the zone query and zone data (the standard's): only CRS84, the one CRS served.
+CRS_QUERY = Query(None, description="CRS of the GeoJSON geometries: only CRS84 (the default)")
 
 
 def _zone_query(
@@ -217,9 +222,10 @@ def _zone_query(
     subset_crs: str | None = Query(None, alias="subset-crs", description="CRS of subset: only CRS84"),
     geometry: str | None = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, "
                                                            "zone-centroid or none"),
+    crs: str | None = CRS_QUERY,
 ) -> ZoneQuery:
     return ZoneQuery(zone_level, bbox, bbox_crs, compact_zones, limit, offset, parent_zone,
-                     tuple(subset or ()), subset_crs, geometry)
+                     tuple(subset or ()), subset_crs, geometry, crs)
 
 
 #: The zone query's parameters as one FastAPI dependency (a :class:`ZoneQuery`).

@@ -46,6 +46,7 @@ from .reader import LevelData, cells_meeting_bbox
 from .stats import zone_statistics
 from .strictparams import refuse_unknown
 from .zonequery import (
+    CRS_QUERY,
     ZONE_QUERY,
     ZoneQuery,
     check_crs,
@@ -274,6 +275,7 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
     geometry = check_geometry(q.geometry)
     check_crs("bbox-crs", q.bbox_crs)  # /req/zone-query/bbox-crs
     check_crs("subset-crs", q.subset_crs)  # /req/zone-query/subset-crs
+    check_crs("crs", q.crs)
     bbox = parse_bbox(q.bbox)
     subset = parse_subset(q.subset)  # /req/zone-query/subset
     if bbox is not None and subset is not None:
@@ -349,8 +351,10 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, None, parse_zone(zoneId), f, dggrsId)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA, properties: str | None = _PROPERTIES) -> Response:
+             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA, properties: str | None = _PROPERTIES,
+             crs: str | None = CRS_QUERY) -> Response:
         check_dggrs(dggrsId)
+        check_crs("crs", crs)
         return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId, properties)
 
     def zones(request: Request, dggrsId: str, q: ZoneQuery = ZONE_QUERY, f: str | None = _F_ZONES) -> Response:
@@ -364,9 +368,10 @@ def register(app: FastAPI, ctx: Context) -> None:
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
                geometry: str | None = _GEOMETRY, f: str | None = _F_DATA,
-               properties: str | None = _PROPERTIES) -> Response:
+               properties: str | None = _PROPERTIES, crs: str | None = CRS_QUERY) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
+        check_crs("crs", crs)
         return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
                          properties)
 

@@ -32,8 +32,8 @@ VALUES = {
 #: The parameters the server implements on each zone route (a guard against refusing a standard one wrongly).
 IMPLEMENTED = {
     "/dggs/{dggrsId}/zones": {"zone-level", "compact-zones", "limit", "offset", "parent-zone", "bbox", "bbox-crs",
-                              "subset", "subset-crs", "geometry", "f"},
-    "/dggs/{dggrsId}/zones/{zoneId}/data": {"zone-depth", "geometry", "f", "properties"},
+                              "subset", "subset-crs", "geometry", "f", "crs"},
+    "/dggs/{dggrsId}/zones/{zoneId}/data": {"zone-depth", "geometry", "f", "properties", "crs"},
     "/dggs/{dggrsId}/zones/{zoneId}": set(),
 }
 
@@ -139,3 +139,15 @@ def test_items_crs_other_than_crs84_is_a_400(client):
     assert res.status_code == 400 and "3857" in res.json()["detail"]
     ok = client.get("/collections/sample/items", params={"crs": "http://www.opengis.net/def/crs/OGC/1.3/CRS84"})
     assert ok.status_code == 200 and ok.headers["content-crs"] == "<http://www.opengis.net/def/crs/OGC/1.3/CRS84>"
+
+
+@pytest.mark.parametrize("url", [f"{ROOT}/zones", f"{COLL}/zones/C4/data", "/collections/sample/items"])
+def test_crs_names_crs84_or_is_a_400(client, url):
+    def body(res):
+        assert res.status_code == 200
+        return {k: v for k, v in res.json().items() if k not in ("links", "timeStamp")}  # self links differ
+
+    crs84 = client.get(url, params={"crs": "http://www.opengis.net/def/crs/OGC/1.3/CRS84"})
+    assert body(crs84) == body(client.get(url))
+    other = client.get(url, params={"crs": "http://www.opengis.net/def/crs/EPSG/0/4326"})
+    assert other.status_code == 400 and "EPSG/0/4326" in other.json()["detail"]
