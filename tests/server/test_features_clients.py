@@ -22,11 +22,16 @@ from typing import Any
 
 import numpy as np
 import pytest
+import shapely
+import shapely.geometry
+from hypothesis import HealthCheck, example, given, settings
+from hypothesis import strategies as st
 
 import dggs
 from dggs.storage import CellStore
 from tests.server.conftest import LEVEL
 from tests.server.test_api import brute_force_bbox
+from tests.strategies import examples
 
 COLLECTION = "sample"  # the stem of conftest's sample.db
 FEATURES_CORE = "http://www.opengis.net/spec/ogcapi-features-1/1.0/conf/core"
@@ -120,8 +125,6 @@ def test_gdal_reads_every_feature_with_its_values(url, points):
         assert row.geometry.is_valid and row.geometry.geom_type in ("Polygon", "MultiPolygon")
     # the polygons are the zones: each holds the centre of its zone
     lat, lng = dggs.cell_to_latlng(np.asarray(df["zoneID"], dtype=str))
-    import shapely
-
     assert shapely.intersects(np.asarray(df.geometry), shapely.points(lng, lat)).all()
 
 
@@ -243,3 +246,41 @@ def test_openapi_lists_the_features_routes(client):
     conformance = client.get("/conformance").json()["conformsTo"]
     assert {FEATURES_CORE, FEATURES_CORE.replace("core", "geojson"), FEATURES_CORE.replace("core", "oas30")} <= set(conformance)
     assert FEATURES_CORE.replace("core", "html") not in conformance
+
+
+# -- properties over the store (in process) ------------------------------------
+
+_SPECIAL = [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (0.0, -180.0), (10.0, 179.9999), (65.0, 180.0),
+            (58.282525588539, 11.25)]  # the poles, the antimeridian, an icosahedron vertex (ISEA)
+
+
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(st.integers(min_value=0, max_value=10_000), st.integers(min_value=0, max_value=LEVEL))
+@example(0, 0).via("the north pole's face")
+@example(1, LEVEL).via("the north pole")
+@example(2, LEVEL).via("the south pole")
+@example(4, 3).via("on the antimeridian")
+@example(9, LEVEL).via("near the antimeridian")
+def test_one_feature_is_the_brute_force_roll_up_of_its_points(client, points, which, level):
+    n = len(points.lat)
+    lat, lng = float(points.lat[which % n]), float(points.lng[which % n])
+    zone = str(dggs.latlng_to_cell(lat, lng, level))
+    inside = np.asarray(dggs.latlng_to_cell(points.lat, points.lng, level)).astype(str) == zone
+    res = client.get(f"/collections/{COLLECTION}/items/{zone}")
+    assert res.status_code == 200 and res.headers["content-type"] == "application/geo+json"
+    feature = res.json()
+    assert feature["type"] == "Feature" and feature["id"] == zone and feature["properties"]["level"] == level
+    assert feature["properties"]["count"] == int(inside.sum())
+    assert feature["properties"]["pop_sum"] == int(points.pop[inside].sum())
+    assert feature["properties"]["temp_max"] == pytest.approx(float(points.temp[inside].max()))
+    poly = shapely.geometry.shape(feature["geometry"])
+    centre_lat, centre_lng = dggs.cell_to_latlng(zone)  # (a pole is a segment of the planar ring: its centre)
+    assert poly.is_valid and poly.intersects(shapely.points(float(centre_lng), float(centre_lat)))
+
+
+@pytest.mark.parametrize("bbox", [(170.0, -40.0, -170.0, 40.0), (-180.0, -90.0, -170.0, -60.0)])
+def test_items_bbox_across_the_antimeridian_and_at_a_pole(client, points, bbox):
+    text = ",".join(str(v) for v in bbox)
+    doc = client.get(f"/collections/{COLLECTION}/items", params={"bbox": text, "limit": 10_000}).json()
+    want = brute_force_bbox(points, LEVEL, bbox)
+    assert {f["id"] for f in doc["features"]} == want and doc["numberMatched"] == len(want)
