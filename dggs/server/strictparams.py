@@ -66,8 +66,11 @@ def route_parameters(route: Any) -> frozenset[str]:
     return found
 
 
-def refuse_unknown(request: Request) -> None:
+async def refuse_unknown(request: Request) -> None:
     """Raise a 400 naming every query parameter the matched route does not take (a FastAPI dependency).
+
+    Asynchronous so that FastAPI runs it on the event loop: a plain function would take a worker thread per
+    request on top of the handler's.
 
     Raises
     ------
