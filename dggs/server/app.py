@@ -26,7 +26,7 @@ from typing import Any
 
 from fastapi import FastAPI, Request
 
-from . import mapdata, ogc, zones
+from . import features, mapdata, ogc, zones
 from .errors import head_as_get, install_handlers
 from .params import Context
 from .reader import StoreReader
@@ -100,7 +100,7 @@ def create_app(
     app = FastAPI(
         title=f"dggs: {reader.collection_id}",
         description=(
-            "OGC API - DGGS (Part 1) over a cell store of equal-area triangular zones "
+            "OGC API - DGGS (Part 1) and OGC API - Features (Part 1) over a cell store of equal-area triangular zones "
             "(Split (2:6) on the icosahedron: DGGS-Split26-ISEA, Snyder's equal-area projection, and "
             "DGGS-Split26-IVEA, the vertex-oriented great circle one; the store's data under the DGGRS they "
             "were binned with), and the JSON of its web map."
@@ -116,6 +116,7 @@ def create_app(
     install_handlers(app)
     ogc.register(app, ctx, folder)
     zones.register(app, ctx)
+    features.register(app, ctx)
     mapdata.register(app, ctx)
     if folder.is_dir():
         from fastapi.staticfiles import StaticFiles

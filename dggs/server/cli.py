@@ -1,4 +1,4 @@
-"""``dggs serve STORE.db``: the OGC API - DGGS server and web map of a cell store.
+"""``dggs serve STORE.db``: the OGC API - DGGS and Features server and web map of a cell store.
 
 Imports only click at module level: fastapi and uvicorn (the ``serve`` extra) are
 imported when the command runs, so ``import dggs`` and the other commands never
@@ -43,7 +43,7 @@ def _check_port(host: str, port: int) -> None:
 @click.option("--refresh", default=2.0, show_default=True, type=click.FloatRange(min=0),
               help="Seconds the map's roll-ups may lag a store being written to (0: none).")
 def serve(store: str, host: str, port: int, max_zones: int, max_features: int, refresh: float) -> None:
-    """Serve STORE (a cell store) read-only over OGC API - DGGS, with a web map at /.
+    """Serve STORE (a cell store) read-only over OGC API - DGGS and Features, with a web map at /.
 
     \b
     Example:

@@ -38,7 +38,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from fastapi import FastAPI, Query, Request
+from fastapi import Depends, FastAPI, Query, Request
 from fastapi.responses import JSONResponse, Response
 
 import dggs
@@ -49,6 +49,7 @@ from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
 from .params import Context, check_level, negotiate, parse_bbox
 from .reader import cells_meeting_bbox, covers_world
+from .strictparams import refuse_unknown
 
 __all__ = ["register", "MAP_STATS"]
 
@@ -150,7 +151,7 @@ def register(app: FastAPI, ctx: Context) -> None:
         negotiate(request, None, ("json",))
         return JSONResponse(layers(ctx))
 
-    @app.get("/map/cells", tags=["Web map"], summary="Non-empty cells of a level in a bbox (GeoJSON, or ids)",
+    @app.get("/map/cells", tags=["Web map"], dependencies=[Depends(refuse_unknown)], summary="Non-empty cells of a level in a bbox (GeoJSON, or ids)",
              response_class=Response, responses={200: {"content": {GEOJSON: {}, UINT64: {}}}})
     def map_cells(
         request: Request,

@@ -78,6 +78,7 @@ class Collection(_Model):
     extent: Extent | None = None
     crs: list[str] | None = None
     storageCrs: str | None = None
+    itemType: str | None = None
     updated: str | None = None
     created: str | None = None
     links: list[Link]

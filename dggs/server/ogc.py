@@ -29,6 +29,8 @@ from pydantic import BaseModel
 from .dggrs import CRS84, DGGRS_IDS, REL, definition, description, dggrs_of, item
 from .dggrs import link as _link
 from .encodings import HAS_UBJSON
+from .features import CONFORMANCE as FEATURES_CONFORMANCE
+from .features import DEFAULT_LIMIT
 from .models import Collection, Collections, DggrsList, LandingPage, json_response
 from .params import Context, base_url, check_collection, check_data_dggrs, check_dggrs, negotiate
 from .vendor import VENDOR_HELP, missing_vendor
@@ -55,7 +57,7 @@ CONFORMANCE = [
     _DGGS + "data-geojson",  # zone data as GeoJSON
     _DGGS + "zone-geojson",  # zone lists as GeoJSON
     _DGGS + "zone-uint64",  # zone lists as 64-bit integers (application/x-binary)
-] + ([_DGGS + "data-ubjson"] if HAS_UBJSON else [])  # DGGS-UBJSON zone data (application/ubjson), with py-ubjson
+] + ([_DGGS + "data-ubjson"] if HAS_UBJSON else []) + FEATURES_CONFORMANCE  # DGGS-UBJSON with py-ubjson
 
 
 def landing(ctx: Context, request: Request) -> LandingPage:
@@ -100,12 +102,18 @@ def collection(ctx: Context, request: Request) -> Collection:
         "extent": {"spatial": {"bbox": [bbox], "crs": CRS84}},
         "crs": [CRS84],
         "storageCrs": CRS84,
+        "itemType": "feature",  # OGC API - Features: the items are GeoJSON features (the zones holding data)
         "links": [
             _link(href, "self"),
             _link(f"{base}/collections", "collection", title="All collections"),
             _link(f"{href}/dggs", REL + "dggrs-list", title="DGGRS list of this collection"),
             _link(f"{href}/dggs/{dggrs_of(ctx.reader.projection)}/zones", REL + "dggrs-zone-query",
                   title="Zones holding data"),
+            # /req/core/fc-md-items-links (OGC API - Features): the features, as GeoJSON
+            _link(f"{href}/items", "items", "application/geo+json",
+                  f"The zones holding data as features, level {summary.level}, {DEFAULT_LIMIT} a page"),
+            # the features' property types, which GDAL reads (describedby) instead of guessing from 20 features
+            _link(f"{href}/schema.xsd", "describedby", "application/xml", "The features' properties (XML Schema)"),
         ],
     }
     if summary.updated:

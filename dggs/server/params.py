@@ -139,6 +139,7 @@ MEDIA_TYPES = {
     "ubjson": ("application/ubjson",),
     "openapi": ("application/vnd.oai.openapi+json", "application/json"),
     "text": ("text/plain",),
+    "xml": ("application/xml", "text/xml"),
 }
 
 

@@ -27,9 +27,11 @@ import json
 import math
 import re
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from fastapi import Depends, Query
 
 import dggs
 
@@ -38,7 +40,7 @@ from .errors import BadRequest
 from .params import parse_zone
 
 __all__ = ["CRS84_NAMES", "check_crs", "parse_subset", "parent_range", "check_geometry", "geometry_texts",
-           "page_links", "GEOMETRIES"]
+           "page_links", "GEOMETRIES", "ZoneQuery", "ZONE_QUERY", "CRS_QUERY"]
 
 #: The names of CRS84 that ``bbox-crs`` and ``subset-crs`` take.
 CRS84_NAMES = frozenset({CRS84, CRS84.replace("http://", "https://"), "[OGC:CRS84]", "OGC:CRS84"})
@@ -185,3 +187,46 @@ def page_links(request: Any, offset: int, limit: int | None, returned: int, matc
         href = str(request.url.include_query_params(offset=max(0, offset - limit)))
         links.append({"href": href, "rel": "prev", "type": media, "title": "Previous page"})
     return links
+
+
+@dataclass(frozen=True)
+class ZoneQuery:
+    """The parameters of a zone query, as given (checked by :func:`zones_list`)."""
+
+    zone_level: int | None = None
+    bbox: str | None = None
+    bbox_crs: str | None = None
+    compact: bool = True
+    limit: int | None = None
+    offset: int = 0
+    parent: str | None = None
+    subset: tuple[str, ...] = ()
+    subset_crs: str | None = None
+    geometry: str | None = None
+    crs: str | None = None
+
+
+#: The ``crs`` parameter of the zone query and zone data (the standard's): only CRS84, the one CRS served.
+CRS_QUERY = Query(None, description="CRS of the GeoJSON geometries: only CRS84 (the default)")
+
+
+def _zone_query(
+    zone_level: int | None = Query(None, alias="zone-level", description="Level of the zones (default: stored)"),
+    bbox: str | None = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)"),
+    bbox_crs: str | None = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)"),
+    compact_zones: bool = Query(True, alias="compact-zones", description="Complete sets of children as parent"),
+    limit: int | None = Query(None, description="Return at most this many zones (a page; see offset)"),
+    offset: int = Query(0, description="Skip this many zones (paging; the next link gives it)"),
+    parent_zone: str | None = Query(None, alias="parent-zone", description="Only zones inside this zone"),
+    subset: list[str] | None = Query(None, description="Lat(lo:hi),Lon(lo:hi) in CRS84 degrees; not with bbox"),
+    subset_crs: str | None = Query(None, alias="subset-crs", description="CRS of subset: only CRS84"),
+    geometry: str | None = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, "
+                                                           "zone-centroid or none"),
+    crs: str | None = CRS_QUERY,
+) -> ZoneQuery:
+    return ZoneQuery(zone_level, bbox, bbox_crs, compact_zones, limit, offset, parent_zone,
+                     tuple(subset or ()), subset_crs, geometry, crs)
+
+
+#: The zone query's parameters as one FastAPI dependency (a :class:`ZoneQuery`).
+ZONE_QUERY = Depends(_zone_query)

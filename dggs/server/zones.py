@@ -16,7 +16,6 @@ Each route is served twice: under ``/dggs/{dggrsId}`` (the API's own DGGRS, the
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -28,6 +27,7 @@ import dggs
 from .dggrs import CRS84, DEFAULT_DEPTH, DGGRS_ID, REL, zone_count
 from .encodings import HAS_UBJSON, UBJSON, UINT64, dggs_ubjson, uint64_zone_list
 from .errors import BadRequest, TooManyZones
+from .features import parse_properties
 from .geojson import GEOJSON, clean, feature_collection
 from .models import ZoneInfo, json_response
 from .params import (
@@ -44,7 +44,18 @@ from .params import (
 )
 from .reader import LevelData, cells_meeting_bbox
 from .stats import zone_statistics
-from .zonequery import check_crs, check_geometry, geometry_texts, page_links, parent_range, parse_subset
+from .strictparams import refuse_unknown
+from .zonequery import (
+    CRS_QUERY,
+    ZONE_QUERY,
+    ZoneQuery,
+    check_crs,
+    check_geometry,
+    geometry_texts,
+    page_links,
+    parent_range,
+    parse_subset,
+)
 
 __all__ = ["register", "STATS", "sub_zone_count"]
 
@@ -149,17 +160,22 @@ def zone_info(ctx: Context, request: Request, collection: str | None, zone: str,
 
 
 def zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-              f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID) -> Response:
-    """Sub-zone roll-ups of ``zone`` at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON), under the data's DGGRS only."""
+              f: str | None, geometry: str | None = None, dggrs_id: str = DGGRS_ID,
+              properties: str | None = None) -> Response:
+    """Sub-zone roll-ups of ``zone`` at each depth (DGGS-JSON, DGGS-UBJSON, GeoJSON), under the data's DGGRS only.
+
+    ``properties`` (comma-separated; a parameter of the standard's zone data operation)
+    keeps only those properties; one the data do not have is a 400 naming it.
+    """
     check_data_dggrs(ctx, dggrs_id)
     fmt = negotiate(request, f, DATA_FORMATS)
     mode = check_geometry(geometry)
     with ctx.reader.snapshot():  # one read transaction: every value from the same state of the store
-        return _zone_data(ctx, request, collection, zone, depth, fmt, mode, dggrs_id)
+        return _zone_data(ctx, request, collection, zone, depth, fmt, mode, dggrs_id, properties)
 
 
 def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str, depth: str | None,
-               fmt: str, mode: str, dggrs_id: str) -> Response:
+               fmt: str, mode: str, dggrs_id: str, wanted: str | None = None) -> Response:
     summary = ctx.reader.summary()
     stored = summary.level
     level = dggs.get_level(zone)
@@ -177,6 +193,7 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                            f"server's limit of {ctx.max_features}; ask for a smaller zone-depth or a finer zone")
     columns = summary.numeric_columns
     props = ["count"] + [f"{c}_{s}" for c in columns for s in STATS]
+    selected = parse_properties(wanted, props)  # checked before any roll-up is read
     per_depth: list[tuple[int, list[str], dict[str, list[Any]]]] = []
     for d in depths:
         subs = [zone] if d == 0 else list(dggs.cell_to_children(zone, level + d))
@@ -191,6 +208,8 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                 for s in STATS:
                     data[f"{c}_{s}"][i] = clean(row[s])
         per_depth.append((d, subs, data))
+    if selected is not None:
+        props = selected
     if fmt == "geojson":
         ids: list[str] = []
         geoms: list[str] = []
@@ -206,10 +225,11 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
                  "depths": depths, "numberReturned": len(ids), "links": _links(request, collection, zone, dggrs_id)}
         return Response(feature_collection(ids, geoms, properties, extra), media_type=GEOJSON)
     count = {"type": "integer", "title": "rows in the sub-zone"}
-    schema: dict[str, Any] = {"type": "object", "properties": {"count": count}}
+    described: dict[str, Any] = {"count": count}
     for c in columns:
         for s in STATS:
-            schema["properties"][f"{c}_{s}"] = {"type": "number", "title": f"{s} of {c} in the sub-zone"}
+            described[f"{c}_{s}"] = {"type": "number", "title": f"{s} of {c} in the sub-zone"}
+    schema: dict[str, Any] = {"type": "object", "properties": {p: described[p] for p in props}}
     values = {
         p: [{"depth": d, "shape": {"count": len(subs), "subZones": len(subs)}, "data": data[p]}
             for d, subs, data in per_depth]
@@ -231,22 +251,6 @@ def _zone_data(ctx: Context, request: Request, collection: str | None, zone: str
 
 
 # -- zone query ---------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class ZoneQuery:
-    """The parameters of a zone query, as given (checked by :func:`zones_list`)."""
-
-    zone_level: int | None = None
-    bbox: str | None = None
-    bbox_crs: str | None = None
-    compact: bool = True
-    limit: int | None = None
-    offset: int = 0
-    parent: str | None = None
-    subset: tuple[str, ...] = ()
-    subset_crs: str | None = None
-    geometry: str | None = None
 
 
 def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQuery, f: str | None,
@@ -271,6 +275,7 @@ def zones_list(ctx: Context, request: Request, collection: str | None, q: ZoneQu
     geometry = check_geometry(q.geometry)
     check_crs("bbox-crs", q.bbox_crs)  # /req/zone-query/bbox-crs
     check_crs("subset-crs", q.subset_crs)  # /req/zone-query/subset-crs
+    check_crs("crs", q.crs)
     bbox = parse_bbox(q.bbox)
     subset = parse_subset(q.subset)  # /req/zone-query/subset
     if bbox is not None and subset is not None:
@@ -333,25 +338,9 @@ _F_ZONES = Query(None, description="Output format: json (default), geojson or ui
                                    "a little-endian uint64 count, then the uint64 zone ids); overrides Accept")
 _DEPTH = Query(None, alias="zone-depth", description="Relative depth: d, low-high or a,b,c (default 3)")
 _GEOMETRY = Query(None, description="GeoJSON geometry: zone-region (default), vectorized, zone-centroid or none")
+_PROPERTIES = Query(None, description="Comma-separated properties to return (default: all), e.g. count,pop_sum")
 
 
-def _zone_query(
-    zone_level: int | None = Query(None, alias="zone-level", description="Level of the zones (default: stored)"),
-    bbox: str | None = Query(None, description="w,s,e,n in CRS84 degrees (w > e crosses the antimeridian)"),
-    bbox_crs: str | None = Query(None, alias="bbox-crs", description="CRS of bbox: only CRS84 (the default)"),
-    compact_zones: bool = Query(True, alias="compact-zones", description="Complete sets of children as parent"),
-    limit: int | None = Query(None, description="Return at most this many zones (a page; see offset)"),
-    offset: int = Query(0, description="Skip this many zones (paging; the next link gives it)"),
-    parent_zone: str | None = Query(None, alias="parent-zone", description="Only zones inside this zone"),
-    subset: list[str] | None = Query(None, description="Lat(lo:hi),Lon(lo:hi) in CRS84 degrees; not with bbox"),
-    subset_crs: str | None = Query(None, alias="subset-crs", description="CRS of subset: only CRS84"),
-    geometry: str | None = _GEOMETRY,
-) -> ZoneQuery:
-    return ZoneQuery(zone_level, bbox, bbox_crs, compact_zones, limit, offset, parent_zone,
-                     tuple(subset or ()), subset_crs, geometry)
-
-
-_QUERY = Depends(_zone_query)
 
 
 def register(app: FastAPI, ctx: Context) -> None:
@@ -362,11 +351,13 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, None, parse_zone(zoneId), f, dggrsId)
 
     def data(request: Request, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
+             geometry: str | None = _GEOMETRY, f: str | None = _F_DATA, properties: str | None = _PROPERTIES,
+             crs: str | None = CRS_QUERY) -> Response:
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
+        check_crs("crs", crs)
+        return zone_data(ctx, request, None, parse_zone(zoneId), zone_depth, f, geometry, dggrsId, properties)
 
-    def zones(request: Request, dggrsId: str, q: ZoneQuery = _QUERY, f: str | None = _F_ZONES) -> Response:
+    def zones(request: Request, dggrsId: str, q: ZoneQuery = ZONE_QUERY, f: str | None = _F_ZONES) -> Response:
         check_dggrs(dggrsId)
         return zones_list(ctx, request, None, q, f, dggrsId)
 
@@ -376,12 +367,15 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zone_info(ctx, request, collectionId, parse_zone(zoneId), f, dggrsId)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
-               geometry: str | None = _GEOMETRY, f: str | None = _F_DATA) -> Response:
+               geometry: str | None = _GEOMETRY, f: str | None = _F_DATA,
+               properties: str | None = _PROPERTIES, crs: str | None = CRS_QUERY) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId)
+        check_crs("crs", crs)
+        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
+                         properties)
 
-    def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = _QUERY,
+    def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = ZONE_QUERY,
                 f: str | None = _F_ZONES) -> Response:
         check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
@@ -392,7 +386,10 @@ def register(app: FastAPI, ctx: Context) -> None:
         ("/collections/{collectionId}", "Collection DGGS", (c_zones, c_info, c_data)),
     ):
         root = prefix + "/dggs/{dggrsId}/zones"
-        app.add_api_route(root, handlers[0], methods=["GET"], tags=[tag], summary="Zones holding data (zone query)")
-        app.add_api_route(root + "/{zoneId}", handlers[1], methods=["GET"], tags=[tag], summary="Zone information")
-        app.add_api_route(root + "/{zoneId}/data", handlers[2], methods=["GET"], tags=[tag],
+        guard = [Depends(refuse_unknown)]  # parameters a route does not take: 400 naming them
+        app.add_api_route(root, handlers[0], methods=["GET"], tags=[tag], dependencies=guard,
+                          summary="Zones holding data (zone query)")
+        app.add_api_route(root + "/{zoneId}", handlers[1], methods=["GET"], tags=[tag], dependencies=guard,
+                          summary="Zone information")
+        app.add_api_route(root + "/{zoneId}/data", handlers[2], methods=["GET"], tags=[tag], dependencies=guard,
                           summary="Data of a zone's sub-zones (DGGS-JSON or GeoJSON)")
