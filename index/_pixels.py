@@ -34,6 +34,8 @@ __all__ = ["pixel_pieces", "edge_corrections", "chord_errors", "edge_points", "M
 
 #: Orientation of a ring in the face planes against its orientation on the sphere (Snyder's projection keeps it).
 _CCW = 1.0
+#: Pieces a pixel up to which a correction's piece is looked up one by one (past it: by sorting).
+_PROBE = 24
 #: Square metres of the ellipsoid per unit of planar area in a face frame.
 M2_PER_UNIT = WGS84.area / 20.0 / kpx.FACE_AREA
 #: The widest pixel the kernel takes (degrees of arc from a corner); larger ones are split first.
@@ -104,8 +106,8 @@ def chord_errors(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:
     return out
 
 
-def _point_frames(lat: np.ndarray, lng: np.ndarray, level: int) -> tuple[np.ndarray, ...]:
-    """Per point (WGS84 degrees): its face-plane ``x``, ``y`` on its face, its sector ``3 face + s`` and its cell.
+def _point_frames(lat: np.ndarray, lng: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Per point (WGS84 degrees): its face-plane ``x``, ``y`` on its face and its sector ``3 face + s``.
 
     As the kernel finds them (``pixels.c``: the nearest face, Snyder's forward on it, ``dggs_pixels_region``).
     """
@@ -122,8 +124,7 @@ def _point_frames(lat: np.ndarray, lng: np.ndarray, level: int) -> tuple[np.ndar
     first = (east >= 0.0) & (-0.5 * east - half * north < 0.0) & ~((east == 0.0) & (north < 0.0))
     third = (east < 0.0) & (-0.5 * east + half * north >= 0.0)
     sector = 3 * face + np.where(first, 0, np.where(third, 2, 1))
-    cell = np.asarray(latlng_to_cell(lat, lng, level, as_int=True), dtype=np.uint64).reshape(-1)
-    return x, y, sector, cell
+    return x, y, sector
 
 
 def _segments(x: np.ndarray, y: np.ndarray, sector: np.ndarray) -> np.ndarray:
@@ -154,8 +155,8 @@ def edge_corrections(
     empty = (np.zeros(0, np.int64), np.zeros(0, np.uint64), np.zeros(0))
     if k < 2 or k % 2 or not valid.any():
         return empty
-    hx, hy, hs, hc = (a.reshape(hlat.shape) for a in _point_frames(hlat.ravel(), hlng.ravel(), level))
-    vx, vy, vs, vc = (a.reshape(vlat.shape) for a in _point_frames(vlat.ravel(), vlng.ravel(), level))
+    hx, hy, hs = (a.reshape(hlat.shape) for a in _point_frames(hlat.ravel(), hlng.ravel()))
+    vx, vy, vs = (a.reshape(vlat.shape) for a in _point_frames(vlat.ravel(), vlng.ravel()))
     # orientation of each pixel's ring (top edge left to right, then down its right edge) in the face planes:
     # that of its corners on the sphere (Snyder's projection keeps it), from two triangles (one may be a pole's)
     beta, lam = WGS84.geodetic_to_authalic(np.radians(hlat[:, ::k])), np.radians(hlng[:, ::k])
@@ -165,7 +166,8 @@ def edge_corrections(
     sign = np.where(turn > 0.0, _CCW, -_CCW).ravel()
     th = _segments(hx, hy, hs)  # (rows + 1, cols k / 2): along each line of constant row, left to right
     tv = _segments(vx.T, vy.T, vs.T)  # (cols + 1, rows k / 2): along each line of constant column, downwards
-    mh, mv = hc[:, 1::2], vc[1::2].T  # the pairs' middle points' cells
+    mh = np.asarray(latlng_to_cell(hlat[:, 1::2], hlng[:, 1::2], level, as_int=True), np.uint64)  # middle points' cells
+    mv = np.asarray(latlng_to_cell(vlat[1::2], vlng[1::2], level, as_int=True), np.uint64).T
     half = k // 2
     col_of = np.arange(cols * half) // half
     row_of = np.arange(rows * half) // half
@@ -189,35 +191,49 @@ def _with_corrections(
 ) -> np.ndarray:
     """``area`` with each correction (pixel ``cp``, cell ``cc``, area ``ca``) added to that pixel's piece in that cell.
 
-    A correction whose cell holds no piece of its pixel (its point on a cell's edge or corner), or that would
+    ``pixel`` comes grouped (each pixel's pieces together, in pixel order, as the kernel gives them).  A
+    correction whose cell holds no piece of its pixel (its point on a cell's edge or corner), or that would
     leave a piece below zero, goes to the pixel's largest piece.
     """
     area = area.copy()
     if not cp.size:
         return area
-    cells, inv = np.unique(np.concatenate([cell, cc]), return_inverse=True)
-    n = np.uint64(cells.size)
-    key = pixel.astype(np.uint64) * n + inv[: cell.size].astype(np.uint64)
-    ckey = cp.astype(np.uint64) * n + inv[cell.size:].astype(np.uint64)
-    order = np.argsort(key, kind="stable")
-    at = np.minimum(np.searchsorted(key, ckey, sorter=order), key.size - 1)
-    where = order[at]
-    found = key[where] == ckey
-    largest = _largest_piece(pixel, area)
-    where = np.where(found, where, largest[cp])
-    np.add.at(area, where, ca)
-    low = area < 0.0
-    if low.any():  # a sliver's correction larger than the sliver: back, and onto the largest piece
-        for i in np.nonzero(low)[0]:
-            area[largest[pixel[i]]] += area[i]
-            area[i] = 0.0
+    counts = np.bincount(pixel, minlength=int(max(pixel.max(), cp.max())) + 1)
+    start = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    where = np.full(cp.size, -1, np.int64)
+    one = counts[cp] == 1  # most pixels lie in one cell: their one piece (if the cell is that piece's)
+    where[one] = start[cp[one]]
+    where[one & (cell[np.minimum(where, area.size - 1)] != cc)] = -1
+    rest = np.nonzero(counts[cp] > 1)[0]
+    most = int(counts[cp[rest]].max()) if rest.size else 0
+    if most <= _PROBE:  # a few pieces a pixel: look at each in turn
+        for j in range(most):
+            if not rest.size:
+                break
+            idx = start[cp[rest]] + j
+            hit = (j < counts[cp[rest]]) & (cell[np.minimum(idx, area.size - 1)] == cc[rest])
+            where[rest[hit]] = idx[hit]
+            rest = rest[~hit]
+    else:  # many: by sorting (pixel, cell) keys
+        cells, inv = np.unique(np.concatenate([cell, cc[rest]]), return_inverse=True)
+        n = np.uint64(cells.size)
+        key = pixel.astype(np.uint64) * n + inv[: cell.size].astype(np.uint64)
+        ckey = cp[rest].astype(np.uint64) * n + inv[cell.size:].astype(np.uint64)
+        order = np.argsort(key, kind="stable")
+        at = order[np.minimum(np.searchsorted(key, ckey, sorter=order), key.size - 1)]
+        where[rest] = np.where(key[at] == ckey, at, -1)
+    lost = np.nonzero(where < 0)[0]
+    for i in lost:  # rare: onto the pixel's largest piece
+        where[i] = _largest_piece(area, int(start[cp[i]]), int(counts[cp[i]]))
+    area += np.bincount(where, weights=ca, minlength=area.size)
+    low = np.nonzero(area < 0.0)[0]
+    for i in low:  # a sliver's correction larger than the sliver: back, and onto the largest piece
+        p = int(pixel[i])
+        area[_largest_piece(area, int(start[p]), int(counts[p]))] += area[i]
+        area[i] = 0.0
     return area
 
 
-def _largest_piece(pixel: np.ndarray, area: np.ndarray) -> np.ndarray:
-    """Per pixel number, the index of its largest piece (0 for pixels without pieces)."""
-    order = np.lexsort((area, pixel))  # each pixel's pieces together, its largest last
-    last = np.concatenate([pixel[order][1:] != pixel[order][:-1], [True]])
-    out = np.zeros(int(pixel.max()) + 1, np.int64)
-    out[pixel[order][last]] = order[last]
-    return out
+def _largest_piece(area: np.ndarray, start: int, count: int) -> int:
+    """The index of the largest of the pieces ``start .. start + count``."""
+    return start + int(np.argmax(area[start:start + count]))
