@@ -26,7 +26,7 @@ tile the plane, kinks included.  Two things broke the tiling: (1) tiles of 32 pi
 ``k`` (26 to 102 here) draw their shared edges with different chords, and (2) each pixel's pieces were
 scaled to its Richardson-extrapolated area, moving area between the cells a pixel meets in proportion to
 the pieces, not to where its edges' chords cut (the face centres: pixels with strongly bent edges).  The
-fix (``dggs.index._pixels.edge_corrections``) adds each pair of chords' parabolic segment to the piece of
+fix (``dggs_raster_pieces_arcs``, the kernel's ``arcs``) adds each pair of chords' parabolic segment to the piece of
 the cell it lies in: a shared edge then gives and takes the same area in the same cell; worst cell 1.5e-7.
 """
 
