@@ -56,7 +56,7 @@ QUICK = dict(rows=200, cols=300, fine=15, coarse=11, rounds=1, budget=5.0, table
              cli_timeout=300.0)
 DEG, WEST, NORTH = 0.01, 5.0, 50.0
 MODES = ("one", "default")
-CASES = ("dggs center", "dggs mean", "h3ronpy", "rasterio read", "exactextract mean")
+CASES = ("dggs center", "dggs mean", "pixel centres", "h3ronpy", "rasterio read", "exactextract mean")
 
 
 def h3_res(level: int) -> int:
@@ -99,6 +99,21 @@ def read_band(path: str) -> Any:
         return ds.read(1), ds.transform
 
 
+def pixel_centres(path: str, level: int) -> Any:
+    """Binning every pixel's centre (issue 35's yardstick: what raster2dggs and h3ronpy do): the band read,
+    ``latlng_to_cell`` of each centre, a pandas groupby mean."""
+    import pandas as pd
+
+    import dggs
+
+    band, t = read_band(path)
+    rows, cols = band.shape
+    lat = t.f + t.e * (np.arange(rows) + 0.5)
+    lng = t.c + t.a * (np.arange(cols) + 0.5)
+    cells = dggs.latlng_to_cell(np.repeat(lat, cols), np.tile(lng, rows), level, as_int=True)
+    return pd.Series(band.ravel(), dtype=np.float64).groupby(np.asarray(cells)).mean()
+
+
 def worker_tables(path: str, sizes: dict[str, Any]) -> dict[str, Any]:
     import geopandas as gpd
     import h3ronpy.raster as hr
@@ -129,6 +144,7 @@ def worker_tables(path: str, sizes: dict[str, Any]) -> dict[str, Any]:
         extract_sample(1e-4)[0]()  # first call
         cases = {"dggs center": (lambda lv=lv: raster_to_cells(path, lv, mode="center"), len),
                  "dggs mean": (lambda lv=lv: raster_to_cells(path, lv, mode="mean"), len, mean_sample),
+                 "pixel centres": (lambda lv=lv: pixel_centres(path, lv), len),
                  "h3ronpy": (lambda r=res: hr.raster_to_dataframe(*read_band(path), r, nodata_value=0,
                                                                   compact=False), len),
                  "rasterio read": (lambda: read_band(path), lambda o: 0),
@@ -333,10 +349,14 @@ def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
                ("raster2dggs `--sample nn -g polygon` / `dggs bin-raster --mode center` (>= 1)", "cli",
                 "raster2dggs --sample nn -g polygon", "dggs bin-raster --mode center", 1),
                ('dggs `"mean"` / `"center"` (<= 3)', "tables", "dggs mean", "dggs center", -3),
-               ('exactextract mean / dggs `"mean"` (>= 1)', "tables", "exactextract mean", "dggs mean", 1))
+               ('exactextract mean / dggs `"mean"` (>= 1)', "tables", "exactextract mean", "dggs mean", 1),
+               ('dggs `"mean"` / the slower of `"center"` and pixel centres (<= 3, issue 35)', "tables", "dggs mean",
+                ("dggs center", "pixel centres"), -3))
     for scale in ("fine", "coarse"):
         for name, part, num, den, bar in targets:
-            pair = [(cost(res, part, m, scale, num, px), cost(res, part, m, scale, den, px)) for m in MODES]
+            dens = den if isinstance(den, tuple) else (den,)
+            pair = [(cost(res, part, m, scale, num, px),
+                     max((cost(res, part, m, scale, d, px) or 0.0 for d in dens), default=0.0)) for m in MODES]
             r = [a / b if a and b else None for a, b in pair]
             met = "-" if r[0] is None else ("met" if (r[0] >= bar if bar > 0 else r[0] <= -bar) else "**missed**")
             w.append(f"| {name} | {scale} | {c.fmt_ratio(r[0])} | {c.fmt_ratio(r[1])} | {met} |")

@@ -8,7 +8,7 @@ segment, L the edge's length), ``1/k²`` of that with ``k`` points; so
 :func:`points_per_edge` measures the sagittas of a sample of the block's
 pixels in the face plane and takes the ``k`` that keeps every piece of a
 pixel within :data:`TOLERANCE` of the pixel's area.  The pixel's whole area,
-extrapolated from ``k`` and ``k / 2`` points, is closer still (O(1/k⁴)).
+with each pair of chords' parabolic segment added where it lies (the kernel's arcs), is closer still.
 Pixels wider than the kernel takes are cut into sub-pixels first
 (:func:`split_factor`), which changes no area.
 """
@@ -26,7 +26,7 @@ __all__ = ["TOLERANCE", "arc_degrees", "lnglat", "chord_error", "tile_chord_erro
 
 #: The error a piece may have, as a fraction of its pixel's area.  1e-6 cost 3 times the points of 1e-5
 #: (a global quarter-degree raster: 28 points an edge instead of 9) for no change a user could see, the
-#: pixel's whole area being extrapolated to about 1e-9 anyway.
+#: pixel's whole area being within about 1e-9 anyway (each pair of chords' parabolic segment added).
 TOLERANCE = 1e-5
 #: Sample pixels a tile side for the sagittas (raster.py cuts blocks in tiles of 32: one in four).
 _SAMPLE = 8
@@ -42,7 +42,7 @@ def points_per_edge(chord_error: float) -> int:
     """Points per edge keeping every piece within :data:`TOLERANCE`, given the error of one point an edge.
 
     ``chord_error`` is :func:`chord_error`'s: the area the chords leave out, as a fraction of a pixel's.
-    From 2 points up, an even number (the whole area is extrapolated from k and k / 2).
+    From 2 points up, an even number (the kernel adds each pair of chords' parabolic segment).
 
     Examples
     --------

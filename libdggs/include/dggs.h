@@ -547,6 +547,16 @@ dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const doub
                               int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
                               dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
                               int64_t *need);
+/* dggs_raster_pieces with, for an even k, the area between each pixel's curved edges and their chords added
+ * where it lies: round each pixel, each pair of chords' parabolic segment (a third of the triangle the pair makes)
+ * goes to the piece of the cell holding the pair's middle point (the pixel's largest piece where it has none
+ * there), so an edge shared by two pixels gives one what it takes from the other, in the same cell, and a cell
+ * wholly under the grid gets its whole area. Pairs across a kink of the plane are left as drawn. The same
+ * arguments, errors and resuming as dggs_raster_pieces (the areas are final once it returns DGGS_OK). */
+dggs_error dggs_raster_pieces_arcs(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
+                                   int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
+                                   dggs_pieces *out, double *coarse, void *work, int64_t work_words,
+                                   int64_t *resume, int64_t *need);
 /* The fraction of a pixel's area the chords of its edges leave out, into *out: lat, lng its 16 points round it,
  * four an edge (its first corner, then at a quarter, half and three quarters), degrees. NaN where no half-edge is
  * smooth. DGGS_E_LATLNG (a point not finite or a latitude outside -90..90). */

@@ -23,6 +23,11 @@ cdef extern from "pixels.h" nogil:
     int64_t dggs_pixels_region(int face, double ux, double uy, double uz)
     double dggs_chord_error(const double *lat, const double *lng)
     int64_t dggs_grid_pieces_work_words(int64_t npts, int64_t k, int target)
+    int dggs_grid_pieces_arcs(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols,
+                              const double *vlat, const double *vlng, int64_t vrows, int64_t vcols, int64_t k,
+                              const uint8_t *valid, int64_t rows, int64_t cols, int target, bint arcs,
+                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                              int64_t *need)
     int dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols, const double *vlat,
                          const double *vlng, int64_t vrows, int64_t vcols, int64_t k, const uint8_t *valid,
                          int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
@@ -93,7 +98,7 @@ def pixels_chord_errors(lat, lng):
     return out
 
 
-def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target):
+def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target, bint arcs=False):
     """Cells at level ``target`` met by each pixel of a grid, and the planar area they share.
 
     The pixels' edges, densified with ``k`` points each: ``hlat``, ``hlng`` (R + 1, C k + 1) along the R + 1 grid
@@ -102,7 +107,9 @@ def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target):
     Returns ``(pixel, cell, area, coarse)``, each pixel's pieces together in pixel order, areas in the unit-sphere
     face plane (:data:`PIXELS_FACE_AREA` a face); ``coarse`` (R C) is, for an even ``k``, the planar area of each
     pixel drawn through every other of its points, NaN for pixels across a kink of the plane (and for all with an
-    odd ``k``). A pixel must lie within :data:`PIXELS_MAX_RADIUS` of its corners.
+    odd ``k``). A pixel must lie within :data:`PIXELS_MAX_RADIUS` of its corners. With ``arcs`` (an even ``k``),
+    each piece also gets the area between its pixel's curved edges and their chords where it lies: each pair of
+    chords' parabolic segment, in the cell of the pair's middle point (``dggs_raster_pieces_arcs``).
     """
     h1 = np.ascontiguousarray(hlat, dtype=np.float64)
     h2 = np.ascontiguousarray(hlng, dtype=np.float64)
@@ -138,10 +145,10 @@ def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target):
         mp, mcell, ma = p, c, a
         out.pixel, out.cell, out.area, out.cap = &mp[0], &mcell[0], &ma[0], cap
         with nogil:
-            err = dggs_grid_pieces(&mh1[0] if mh1.shape[0] else &dd, &mh2[0] if mh2.shape[0] else &dd,
-                                   hr, hc, &mv1[0] if mv1.shape[0] else &dd,
-                                   &mv2[0] if mv2.shape[0] else &dd, vr, vc, k,
-                                   &mok[0] if mok.shape[0] else &db, rows, cols, target, &out,
+            err = dggs_grid_pieces_arcs(&mh1[0] if mh1.shape[0] else &dd, &mh2[0] if mh2.shape[0] else &dd,
+                                        hr, hc, &mv1[0] if mv1.shape[0] else &dd,
+                                        &mv2[0] if mv2.shape[0] else &dd, vr, vc, k,
+                                        &mok[0] if mok.shape[0] else &db, rows, cols, target, arcs, &out,
                                    &mc[0] if mc.shape[0] else &dd, &mw[0], mw.shape[0], &resume, &need)
         if err != 5:  # DGGS_E_BUFFER: grow as numba's clip.grow does (doubling, or to what is needed) and go on
             break
@@ -154,3 +161,4 @@ def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target):
     if err:
         raise RuntimeError("grid_pieces: a pixel's clipped polygon outgrew its scratch (a pixel too ragged)")
     return p[:out.n], c[:out.n], a[:out.n], coarse
+

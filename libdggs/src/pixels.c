@@ -210,6 +210,81 @@ int64_t dggs_pixels_ring(int64_t r, int64_t col, int64_t k, int64_t hw, int64_t 
     return m;
 }
 
+/* ---- the arcs' area beyond the chords ---- */
+
+static int64_t largest_piece(const double *area, int64_t first, int64_t last) {
+    int64_t best = first;
+    for (int64_t i = first + 1; i < last; i++) {
+        if (area[i] > area[best]) best = i;
+    }
+    return best;
+}
+
+/* The piece of cell `want` among pieces [first, last), or -1: binary search where the cells are increasing (one
+ * descent gives them in id order), else a scan. */
+static int64_t piece_of(const uint64_t *cell, int64_t first, int64_t last, uint64_t want) {
+    int64_t lo = first, hi = last;
+    while (lo < hi) {
+        int64_t mid = lo + (hi - lo) / 2;
+        if (cell[mid] < want)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < last && cell[lo] == want) return lo;
+    for (int64_t i = first; i < last; i++) {
+        if (cell[i] == want) return i;
+    }
+    return -1;
+}
+
+static double corner_turn(const double *ux, const double *uy, const double *uz, int64_t a, int64_t b, int64_t c) {
+    double px = ux[b] - ux[a], py = uy[b] - uy[a], pz = uz[b] - uz[a];
+    double qx = ux[c] - ux[a], qy = uy[c] - uy[a], qz = uz[c] - uz[a];
+    return (py * qz - pz * qy) * ux[a] + (pz * qx - px * qz) * uy[a] + (px * qy - py * qx) * uz[a];
+}
+
+/* For an even k, adds to each piece the area between its pixel's curved edges and their chords: round the ring,
+ * each pair of chords (points 2i, 2i + 1, 2i + 2, in one sector of one face) bounds with the arc through its
+ * points a third of the triangle they make (Archimedes: the parabolic segment under the long chord is 4/3 of
+ * it); that goes to the piece of the cell holding the middle point (the pixel's largest piece where it has none
+ * there). A neighbour runs the same pair the other way round: what one pixel gains, the other loses, in the same
+ * cell. Pairs across a kink (the kernel cuts their chords at it) are left as drawn. */
+static void arc_pass(const double *ux, const double *uy, const double *uz, const double *fx, const double *fy,
+                     const int64_t *regions, const uint64_t *cells, int64_t k, const uint8_t *valid, int64_t rows,
+                     int64_t cols, int64_t hw, int64_t hsize, int64_t vw, int64_t *ring, dggs_pieces *out) {
+    int64_t at = 0, n = out->n;
+    for (int64_t r = 0; r < rows; r++) {
+        for (int64_t col = 0; col < cols; col++) {
+            int64_t p = r * cols + col;
+            while (at < n && out->pixel[at] < p) at++;
+            int64_t first = at, last = at;
+            while (last < n && out->pixel[last] == p) last++;
+            if (!valid[p] || first == last) continue;
+            int64_t m = dggs_pixels_ring(r, col, k, hw, hsize, vw, ring);
+            /* the ring's orientation in the face planes is its corners' on the sphere (the projection keeps it) */
+            double turn = corner_turn(ux, uy, uz, ring[0], ring[k], ring[2 * k]) +
+                          corner_turn(ux, uy, uz, ring[0], ring[2 * k], ring[3 * k]);
+            double sign = turn > 0.0 ? 1.0 : -1.0;
+            for (int64_t j = 0; j < m; j += 2) {
+                int64_t a = ring[j], b = ring[j + 1], c = ring[(j + 2) % m];
+                if (regions[a] != regions[b] || regions[b] != regions[c]) continue;
+                double t = ((fx[b] - fx[a]) * (fy[c] - fy[a]) - (fx[c] - fx[a]) * (fy[b] - fy[a])) / 6.0;
+                if (t == 0.0) continue;
+                int64_t i = piece_of(out->cell, first, last, cells[b]);
+                if (i < 0) i = largest_piece(out->area, first, last); /* its point on a cell's edge or corner */
+                out->area[i] += sign * t;
+            }
+            for (int64_t i = first; i < last; i++) { /* a sliver's correction larger than the sliver */
+                if (out->area[i] >= 0.0) continue;
+                int64_t big = largest_piece(out->area, first, last);
+                out->area[big] += out->area[i];
+                out->area[i] = 0.0;
+            }
+        }
+    }
+}
+
 /* The scratch sizes of grid_pieces (numba's np.empty calls): ring points m = 4 k, `most` with the kinks'
  * crossings, `width` of a clipped polygon, `levels` of descend's stack. */
 static void work_dims(int64_t k, int target, int64_t *m, int64_t *most, int64_t *width, int64_t *levels) {
@@ -226,10 +301,11 @@ int64_t dggs_grid_pieces_work_words(int64_t npts, int64_t k, int target) {
            DGGS_NUM_FACES;
 }
 
-dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols, const double *vlat,
-                            const double *vlng, int64_t vrows, int64_t vcols, int64_t k, const uint8_t *valid,
-                            int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
-                            int64_t work_words, int64_t *resume, int64_t *need) {
+dggs_error dggs_grid_pieces_arcs(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols,
+                                 const double *vlat, const double *vlng, int64_t vrows, int64_t vcols, int64_t k,
+                                 const uint8_t *valid, int64_t rows, int64_t cols, int target, bool arcs,
+                                 dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                                 int64_t *need) {
     if (k < 1 || target < 0 || target > DGGS_MAX_LEVEL || rows < 0 || cols < 0 || hrows != rows + 1 ||
         hcols != cols * k + 1 || (k > 1 && (vrows != rows * k + 1 || vcols != cols + 1)))
         return DGGS_E_DOMAIN;
@@ -359,7 +435,17 @@ dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrow
     }
     *resume = rows * cols;
     *need = out->n;
+    if (arcs && k >= 2 && k % 2 == 0)
+        arc_pass(ux, uy, uz, fx, fy, regions, cells, k, valid, rows, cols, hcols, hsize, vcols, ring, out);
     return DGGS_OK;
+}
+
+dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols, const double *vlat,
+                            const double *vlng, int64_t vrows, int64_t vcols, int64_t k, const uint8_t *valid,
+                            int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
+                            int64_t work_words, int64_t *resume, int64_t *need) {
+    return dggs_grid_pieces_arcs(hlat, hlng, hrows, hcols, vlat, vlng, vrows, vcols, k, valid, rows, cols, target, false,
+                                 out, coarse, work, work_words, resume, need);
 }
 
 /* ---- the public verbs (dggs.h, "raster pixels"): checked, over the functions above ---- */
@@ -372,10 +458,10 @@ int64_t dggs_raster_pieces_work_words(int64_t rows, int64_t cols, int64_t k, int
     return dggs_grid_pieces_work_words(npts, k, level);
 }
 
-dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
-                              int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
-                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
-                              int64_t *need) {
+static dggs_error raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
+                                int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level, bool arcs,
+                                dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                                int64_t *need) {
     if (level < 0 || level > DGGS_MAX_LEVEL) return DGGS_E_LEVEL;
     if (k < 1 || rows < 0 || cols < 0) return DGGS_E_DOMAIN;
     int64_t hsize = (rows + 1) * (cols * k + 1), vsize = k > 1 ? (rows * k + 1) * (cols + 1) : 0;
@@ -387,8 +473,24 @@ dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const doub
     }
     if (work_words < dggs_raster_pieces_work_words(rows, cols, k, level)) return DGGS_E_BUFFER;
     if (*resume == 0) out->n = 0;
-    return dggs_grid_pieces(hlat, hlng, rows + 1, cols * k + 1, vlat, vlng, rows * k + 1, cols + 1, k, valid, rows,
-                            cols, level, out, coarse, work, work_words, resume, need);
+    return dggs_grid_pieces_arcs(hlat, hlng, rows + 1, cols * k + 1, vlat, vlng, rows * k + 1, cols + 1, k, valid,
+                                 rows, cols, level, arcs, out, coarse, work, work_words, resume, need);
+}
+
+dggs_error dggs_raster_pieces(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
+                              int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
+                              dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                              int64_t *need) {
+    return raster_pieces(hlat, hlng, vlat, vlng, rows, cols, k, valid, level, false, out, coarse, work, work_words,
+                         resume, need);
+}
+
+dggs_error dggs_raster_pieces_arcs(const double *hlat, const double *hlng, const double *vlat, const double *vlng,
+                                   int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
+                                   dggs_pieces *out, double *coarse, void *work, int64_t work_words,
+                                   int64_t *resume, int64_t *need) {
+    return raster_pieces(hlat, hlng, vlat, vlng, rows, cols, k, valid, level, true, out, coarse, work, work_words,
+                         resume, need);
 }
 
 dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *out) {
@@ -398,3 +500,4 @@ dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *
     *out = dggs_chord_error(lat, lng);
     return DGGS_OK;
 }
+

@@ -65,4 +65,12 @@ dggs_error dggs_grid_pieces(const double *hlat, const double *hlng, int64_t hrow
                             int64_t rows, int64_t cols, int target, dggs_pieces *out, double *coarse, void *work,
                             int64_t work_words, int64_t *resume, int64_t *need);
 
+/* grid_pieces, and with `arcs` (an even k) each piece given the area between its pixel's curved edges and their
+ * chords where it lies (pixels.c arc_pass): each pair of chords' parabolic segment, to the cell of its middle point. */
+dggs_error dggs_grid_pieces_arcs(const double *hlat, const double *hlng, int64_t hrows, int64_t hcols,
+                                 const double *vlat, const double *vlng, int64_t vrows, int64_t vcols, int64_t k,
+                                 const uint8_t *valid, int64_t rows, int64_t cols, int target, bool arcs,
+                                 dggs_pieces *out, double *coarse, void *work, int64_t work_words, int64_t *resume,
+                                 int64_t *need);
+
 #endif

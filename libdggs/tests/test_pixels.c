@@ -1182,6 +1182,65 @@ static int64_t pieces(raster_t *g, int level, int64_t cap) {
     return out.n;
 }
 
+/* The pieces with the arcs (dggs_raster_pieces_arcs), growing the buffers from `cap` rows; the count. */
+static int64_t arc_pieces(raster_t *g, int level, int64_t cap) {
+    dggs_pieces out = {g->pixel, g->cell, g->area, cap, 0};
+    int64_t words = dggs_raster_pieces_work_words(g->rows, g->cols, g->k, level);
+    int64_t resume = 0, need = 0;
+    for (;;) {
+        dggs_error err = dggs_raster_pieces_arcs(g->hlat, g->hlng, g->vlat, g->vlng, g->rows, g->cols, g->k,
+                                                 g->valid, level, &out, g->coarse, g->work, words, &resume, &need);
+        if (err != DGGS_E_BUFFER) {
+            CHECK(err == DGGS_OK);
+            break;
+        }
+        out.cap = need > 2 * out.cap ? need : (2 * out.cap < MAXP ? 2 * out.cap : MAXP);
+    }
+    return out.n;
+}
+
+static double total_area(const raster_t *g, int64_t n) {
+    double s = 0.0;
+    for (int64_t i = 0; i < n; i++) s += g->area[i];
+    return s;
+}
+
+/* dggs_raster_pieces_arcs: the same pieces as dggs_raster_pieces (resumed or not), the same areas for an odd k;
+ * and a grid cut in two halves drawn with different k adds up to the whole (the edge the halves share gives and
+ * takes the same area), where the chords alone do not. */
+static void arcs(void) {
+    raster_t *g = &R;
+    static int64_t pixel0[MAXP];
+    static uint64_t cell0[MAXP];
+    static double area0[MAXP];
+    const double lat0 = 62.0, lng0 = -40.0, d = 0.5; /* 0.5 degree pixels, bent enough to need the arcs */
+    for (int64_t k = 3; k <= 4; k++) {
+        make_grid(g, lat0, lng0, d, 6, 6, k);
+        int64_t n = pieces(g, 9, MAXP);
+        for (int64_t i = 0; i < n; i++) pixel0[i] = g->pixel[i], cell0[i] = g->cell[i], area0[i] = g->area[i];
+        CHECK(arc_pieces(g, 9, 8) == n); /* resumed from 8 rows */
+        double moved = 0.0;
+        for (int64_t i = 0; i < n; i++) {
+            CHECK(g->pixel[i] == pixel0[i]);
+            CHECK_EQ_U64(g->cell[i], cell0[i]);
+            CHECK(g->area[i] >= 0.0);
+            moved = fmax(moved, fabs(g->area[i] - area0[i]));
+        }
+        CHECK(k % 2 ? moved == 0.0 : moved > 0.0);
+    }
+    double whole[2], halves[2];
+    for (int with = 0; with < 2; with++) {
+        make_grid(g, lat0, lng0, d, 6, 6, 8);
+        whole[with] = total_area(g, with ? arc_pieces(g, 9, MAXP) : pieces(g, 9, MAXP));
+        make_grid(g, lat0, lng0, d, 6, 3, 2);
+        halves[with] = total_area(g, with ? arc_pieces(g, 9, MAXP) : pieces(g, 9, MAXP));
+        make_grid(g, lat0, lng0 + 3.0 * d, d, 6, 3, 8);
+        halves[with] += total_area(g, with ? arc_pieces(g, 9, MAXP) : pieces(g, 9, MAXP));
+    }
+    CHECK(fabs(halves[0] - whole[0]) > 1e-7 * whole[0]); /* the chords alone: the shared edge drawn twice */
+    CHECK(fabs(halves[1] - whole[1]) < 1e-10 * whole[1]);
+}
+
 static void frozen(void) {
     raster_t *g = &R;
     for (int s = 0; s < COUNT(FROZEN_RASTERS); s++) {
@@ -1364,5 +1423,6 @@ int main(void) {
     sums();
     chord_errors();
     errors();
+    arcs();
     CHECK_DONE();
 }
