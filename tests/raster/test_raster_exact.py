@@ -199,7 +199,7 @@ def test_the_kernels_arcs_are_the_grid_lines_arcs(deg, lat0, lng0, k, level):
     """The kernel's pieces with arcs against its chord pieces plus this module's arcs, computed line by line."""
     from affine import Affine
 
-    from dggs._raster_grid import edge_grid
+    from dggs.raster.grid import edge_grid
     from dggs.index._kernel import pixels as kpx
 
     rows, cols = 10, 12
@@ -218,7 +218,7 @@ def test_a_pixels_area_is_the_closed_form_one():
     """Lat/lng pixels against their area on the authalic sphere, R² (λ2 - λ1)(sin β1 - sin β2) (no cutting code)."""
     from affine import Affine
 
-    from dggs._raster_grid import edge_grid
+    from dggs.raster.grid import edge_grid
     from dggs.index._pixels import pixel_pieces
 
     radius2 = WGS84.area / (4.0 * np.pi)

@@ -18,9 +18,8 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import dggs
-from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent, split_box
 from dggs.arrow import cells_to_table, to_geodataframe, write_cells, write_geoparquet
-from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent
+from dggs.arrow.geoparquet import bbox_filter, bbox_sql, covering_bounds, lng_extent, split_box
 
 from ..strategies import examples
 from .geoparquet_rules import violations
