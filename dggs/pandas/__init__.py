@@ -72,7 +72,7 @@ _MODES = ("center", "contains", "overlaps")
 
 @pd.api.extensions.register_dataframe_accessor("dggs")
 class DggsAccessor(CellVerbs):
-    """The ``df.dggs`` accessor (registered by ``import dggs.pandas``; the per-cell verbs: :mod:`dggs._pandas_cells`)."""
+    """The ``df.dggs`` accessor (registered by ``import dggs.pandas``; the per-cell verbs: :mod:`dggs.pandas.cells`)."""
 
     def __init__(self, frame: pd.DataFrame):
         self._df = frame
