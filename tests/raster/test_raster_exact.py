@@ -199,8 +199,8 @@ def test_the_kernels_arcs_are_the_grid_lines_arcs(deg, lat0, lng0, k, level):
     """The kernel's pieces with arcs against its chord pieces plus this module's arcs, computed line by line."""
     from affine import Affine
 
-    from dggs.raster.grid import edge_grid
     from dggs.index._kernel import pixels as kpx
+    from dggs.raster.grid import edge_grid
 
     rows, cols = 10, 12
     grid = [np.ascontiguousarray(g) for g in edge_grid(None, Affine(deg, 0, lng0, 0, -deg, lat0), 0, 0, rows, cols, k)]
@@ -218,8 +218,8 @@ def test_a_pixels_area_is_the_closed_form_one():
     """Lat/lng pixels against their area on the authalic sphere, R² (λ2 - λ1)(sin β1 - sin β2) (no cutting code)."""
     from affine import Affine
 
-    from dggs.raster.grid import edge_grid
     from dggs.index._pixels import pixel_pieces
+    from dggs.raster.grid import edge_grid
 
     radius2 = WGS84.area / (4.0 * np.pi)
     for deg, lat0, lng0, k, bound in ((0.1, 50.0, 5.0, 2, 1e-9), (0.01, 89.9, 5.0, 2, 1e-8), (0.1, 30.0, 40.0, 4, 1e-9)):
