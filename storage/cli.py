@@ -7,7 +7,6 @@ A thin click layer over :class:`dggs.storage.CellStore`; library errors
 from __future__ import annotations
 
 import json
-import sys
 import warnings
 from pathlib import Path
 from typing import Any
@@ -126,16 +125,11 @@ def bin_(
     Example:
       dggs bin cities.csv --db cities.db --level 7 --value population
     """
-    from tqdm import tqdm
-
     from dggs.storage import CellStore, RejectedRowsWarning
-    from dggs.storage.readers import count_csv_rows, sniff_kind
+    from dggs.storage.readers import sniff_kind
 
     kind = sniff_kind(input_path)
     declared = _value_types(values)
-    show = sys.stderr.isatty() if progress is None else progress
-    total = count_csv_rows(input_path) if (show and kind == "csv") else None
-    bar = tqdm(total=total, unit=" rows", unit_scale=True, disable=not show, desc="binning", file=sys.stderr)
     from dggs.storage.prechecks import check_bin_input
 
     # checked before the store is created: input that can only fail leaves no empty store behind
@@ -146,21 +140,14 @@ def bin_(
     with CellStore(db, projection=projection) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(
-            level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=bar.update
+            level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=progress
         )
-        try:
-            if kind == "csv":
-                result = store.ingest_csv(
-                    input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common
-                )
-            elif kind == "vector":
-                result = store.ingest_vector(
-                    input_path, layer=layer, values=declared or None, crs=crs, **common
-                )
-            else:
-                result = store.ingest_geojson(input_path, values=declared or None, **common)
-        finally:
-            bar.close()
+        if kind == "csv":
+            result = store.ingest_csv(input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common)
+        elif kind == "vector":
+            result = store.ingest_vector(input_path, layer=layer, values=declared or None, crs=crs, **common)
+        else:
+            result = store.ingest_geojson(input_path, values=declared or None, **common)
         stored_level, grid = store.level, store.projection
     click.echo(f"{result.summary()} -> {db} (level {stored_level}{'' if grid == 'ISEA' else ', ' + grid})")
     if result.rows_read and result.seconds:
