@@ -129,8 +129,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
     def __enter__(self) -> CellStore:
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.close()
+    def __exit__(self, error: object, *exc: object) -> None:
+        self._store.close(discard_unused=error is not None)  # a failed first ingest leaves no empty file
 
     def __repr__(self) -> str:
         return f"<CellStore {self.path} level={self.level}>"
