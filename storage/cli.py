@@ -249,7 +249,10 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
 @click.option("--png", "out", required=True, type=click.Path(dir_okay=False), help="PNG file to write.")
 @click.option("--title", default=None, help="Title of the map.")
 @click.option("--log/--linear", "log", default=None, help="Colour scale [default: log for skewed values].")
-def plot(db: str, level: int, column: str | None, stat: str | None, out: str, title: str | None, log: bool | None) -> None:
+@click.option("--land/--no-land", default=None,
+              help="Draw the land (Natural Earth; needs dggs[vector] and the map's files) [default: where installed].")
+def plot(db: str, level: int, column: str | None, stat: str | None, out: str, title: str | None, log: bool | None,
+         land: bool | None) -> None:
     """Draw the --level cells of DB on an equal-area world map (needs matplotlib).
 
     \b
@@ -265,7 +268,7 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
         rows = store.aggregate(level, column, (stat,) if stat == "count" else ("count", stat))
         path, projection = store.path, store.projection
     label = f"{stat} of {column}" if column and stat != "count" else "points"
-    plot_cells(
+    drew_land = plot_cells(
         [r["cell"] for r in rows],
         [r[stat] for r in rows],
         out,
@@ -273,8 +276,10 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
         label=label,
         log=log,
         projection=projection,
+        land=land,
     )
-    click.echo(f"wrote {out} ({len(rows):,} cells)")
+    click.echo(f"wrote {out} ({len(rows):,} cells; "
+               + ("land from Natural Earth)" if drew_land else "no land drawn: it needs dggs[vector] and make static)"))
 
 
 @click.command()
