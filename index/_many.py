@@ -27,7 +27,7 @@ from dggs.geometry._parallel import default_threads
 __all__ = ["each"]
 
 
-def each(fill: Callable[[Any], Any], polygons: Sequence[Any]) -> list[Any]:
+def each(fill: Callable[[Any], Any], polygons: Sequence[Any], tick: Callable[[int], Any] | None = None) -> list[Any]:
     """``fill(polygon)`` for each polygon, in their order, as a loop would give them.
 
     Parameters
@@ -35,6 +35,8 @@ def each(fill: Callable[[Any], Any], polygons: Sequence[Any]) -> list[Any]:
     fill : callable
         Called once for each polygon.
     polygons : sequence of shapely geometries
+    tick : callable, optional
+        Called with 1 as each polygon's result is taken, in their order (a progress bar's ``update``).
 
     Returns
     -------
@@ -54,6 +56,8 @@ def each(fill: Callable[[Any], Any], polygons: Sequence[Any]) -> list[Any]:
             except Exception as exc:  # noqa: BLE001 - handed back to the caller, which raises it
                 out.append(exc)
                 break
+            if tick is not None:
+                tick(1)
         return out
     order = sorted(range(len(polygons)), key=lambda i: -float(shapely.area(polygons[i])))
     with concurrent.futures.ThreadPoolExecutor(max_workers=threads) as pool:
@@ -65,4 +69,6 @@ def each(fill: Callable[[Any], Any], polygons: Sequence[Any]) -> list[Any]:
                 for rest in futures.values():
                     rest.cancel()  # the polygons not started yet: no one will read them
                 break
+            if tick is not None:
+                tick(1)
     return out

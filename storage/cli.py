@@ -7,7 +7,6 @@ A thin click layer over :class:`dggs.storage.CellStore`; library errors
 from __future__ import annotations
 
 import json
-import sys
 import warnings
 from pathlib import Path
 from typing import Any
@@ -126,16 +125,11 @@ def bin_(
     Example:
       dggs bin cities.csv --db cities.db --level 7 --value population
     """
-    from tqdm import tqdm
-
     from dggs.storage import CellStore, RejectedRowsWarning
-    from dggs.storage.readers import count_csv_rows, sniff_kind
+    from dggs.storage.readers import sniff_kind
 
     kind = sniff_kind(input_path)
     declared = _value_types(values)
-    show = sys.stderr.isatty() if progress is None else progress
-    total = count_csv_rows(input_path) if (show and kind == "csv") else None
-    bar = tqdm(total=total, unit=" rows", unit_scale=True, disable=not show, desc="binning", file=sys.stderr)
     from dggs.storage.prechecks import check_bin_input
 
     # checked before the store is created: input that can only fail leaves no empty store behind
@@ -146,21 +140,14 @@ def bin_(
     with CellStore(db, projection=projection) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(
-            level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=bar.update
+            level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=progress
         )
-        try:
-            if kind == "csv":
-                result = store.ingest_csv(
-                    input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common
-                )
-            elif kind == "vector":
-                result = store.ingest_vector(
-                    input_path, layer=layer, values=declared or None, crs=crs, **common
-                )
-            else:
-                result = store.ingest_geojson(input_path, values=declared or None, **common)
-        finally:
-            bar.close()
+        if kind == "csv":
+            result = store.ingest_csv(input_path, lat=lat, lng=lng, values=declared, crs=crs, encoding=encoding, **common)
+        elif kind == "vector":
+            result = store.ingest_vector(input_path, layer=layer, values=declared or None, crs=crs, **common)
+        else:
+            result = store.ingest_geojson(input_path, values=declared or None, **common)
         stored_level, grid = store.level, store.projection
     click.echo(f"{result.summary()} -> {db} (level {stored_level}{'' if grid == 'ISEA' else ', ' + grid})")
     if result.rows_read and result.seconds:
@@ -262,7 +249,10 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
 @click.option("--png", "out", required=True, type=click.Path(dir_okay=False), help="PNG file to write.")
 @click.option("--title", default=None, help="Title of the map.")
 @click.option("--log/--linear", "log", default=None, help="Colour scale [default: log for skewed values].")
-def plot(db: str, level: int, column: str | None, stat: str | None, out: str, title: str | None, log: bool | None) -> None:
+@click.option("--land/--no-land", default=None,
+              help="Draw the land (Natural Earth; needs dggs[vector] and the map's files) [default: where installed].")
+def plot(db: str, level: int, column: str | None, stat: str | None, out: str, title: str | None, log: bool | None,
+         land: bool | None) -> None:
     """Draw the --level cells of DB on an equal-area world map (needs matplotlib).
 
     \b
@@ -278,7 +268,7 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
         rows = store.aggregate(level, column, (stat,) if stat == "count" else ("count", stat))
         path, projection = store.path, store.projection
     label = f"{stat} of {column}" if column and stat != "count" else "points"
-    plot_cells(
+    drew_land = plot_cells(
         [r["cell"] for r in rows],
         [r[stat] for r in rows],
         out,
@@ -286,8 +276,10 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
         label=label,
         log=log,
         projection=projection,
+        land=land,
     )
-    click.echo(f"wrote {out} ({len(rows):,} cells)")
+    click.echo(f"wrote {out} ({len(rows):,} cells; "
+               + ("land from Natural Earth)" if drew_land else "no land drawn: it needs dggs[vector] and make static)"))
 
 
 @click.command()

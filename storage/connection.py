@@ -51,8 +51,10 @@ class Connection:
         self.path, self.readonly, self.timeout = path, readonly, timeout
         self.check_same_thread = check_same_thread
         self.projection = "ISEA"  # the grid of the cells: set by CellStore from meta (storage/projection.py)
+        self.created = False  # this connection made the file (close(discard_unused=True) may take it back)
         if path != ":memory:":
             file = Path(path)
+            self.created = not file.exists() and create and not readonly
             if file.is_dir():
                 raise StorageError(f"{path} is a directory, not a cell store file")
             if not file.exists() and (readonly or not create):
@@ -179,9 +181,24 @@ class Connection:
             upgrade_layout(conn)
         check_meta(conn, self.path)
 
-    def close(self) -> None:
-        """Close the SQLite connection."""
+    def close(self, discard_unused: bool = False) -> None:
+        """Close the SQLite connection.
+
+        With ``discard_unused`` (a ``with`` block left by an error), a file this connection created and into
+        which nothing was ever ingested is removed, with its ``-wal``/``-shm``/``-journal``: a failed first
+        ingest leaves no empty store behind, as ``dggs bin`` checks its input before creating one.
+        """
+        unused = False
+        if discard_unused and self.created:
+            try:
+                unused = not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
+                                 for t in ("sources", "points", "points_pending"))
+            except sqlite3.Error:  # a store half made, or no longer readable: left as it is
+                unused = False
         self._conn.close()
+        if unused:
+            for suffix in ("", "-wal", "-shm", "-journal"):
+                Path(self.path + suffix).unlink(missing_ok=True)
 
     @contextlib.contextmanager
     def transaction(self) -> Iterator[None]:

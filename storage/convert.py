@@ -99,10 +99,12 @@ def _is_number(value: object, from_text: bool) -> bool:
         return True
     if from_text and isinstance(value, str):
         try:
-            float(value)
+            number = float(value)
         except ValueError:
             return False
-        return True
+        # "Nan", "Inf", "Infinity" parse as floats but are words (Nan is a city in Thailand): a text column
+        # holding one is not "numbers and some text"
+        return math.isfinite(number)
     return False
 
 

@@ -31,7 +31,7 @@ from .convert import Prepared, jsonable
 from .crs import make_transformer
 from .errors import BadRowError, RejectedRowsWarning
 from .producer import Producer
-from .progress import RowsBar
+from .progress import Bar, check_progress, shows
 from .projection import grid_locate
 from .readers import RawBatch
 from .rollup_keep import add_partials, check_levels, kept_levels
@@ -59,8 +59,10 @@ class IngestOptions:
         Delete what an earlier ingest of the same source stored first.
     crs : str or pyproj.CRS, optional
         CRS of the coordinates (default WGS84 lat/lng).
-    progress : callable, optional
-        Called with the number of input records after each batch.
+    progress : bool or callable, optional
+        A bar on stderr (``True``; ``None``: on a terminal, after a moment;
+        ``False``: none), or called with the number of input records after each
+        batch (see :mod:`dggs.storage.progress`).
     source : str, optional
         Name that makes an iterable or arrays resumable.
 
@@ -95,12 +97,7 @@ class IngestOptions:
             raise DggsValueError(f"on_error must be 'fail' or 'skip', not {self.on_error!r}")
         if not isinstance(self.replace, bool):
             raise DggsValueError(f"replace must be True or False, not {self.replace!r}")
-        if self.progress is True:
-            object.__setattr__(self, "progress", RowsBar())
-        elif self.progress is False:
-            object.__setattr__(self, "progress", None)
-        elif self.progress is not None and not callable(self.progress):
-            raise DggsValueError(f"progress must be True, False, None or a callable taking a row count, not {self.progress!r}")
+        check_progress(self.progress, "a row count")
         if self.source is not None and not isinstance(self.source, str):
             raise DggsValueError(f"source must be a name (str), not {self.source!r}")
 
@@ -176,8 +173,12 @@ def run_ingest(
     file_info: Mapping[str, Any] | None = None,
     threaded: bool = True,
     ordered: bool = False,
+    total: Callable[[], int | None] | None = None,
 ) -> IngestResult:
     """Ingest batches into ``store`` with per-batch transactions and resume.
+
+    ``total()``, when given, counts the input's records for the progress bar's
+    total and ETA (asked only when a bar is drawn).
 
     ``batches(skip, types)`` must yield the input's batches after its first
     ``skip`` records, the same way on every call; ``types`` is the live
@@ -202,19 +203,45 @@ def run_ingest(
     _check_case(store, name, [*declared, *params.get("values", ())])
     transformer = make_transformer(options.crs)
     crs = options.crs
-    on_error = options.on_error
-    progress = options.progress if callable(options.progress) else None  # True became a RowsBar
     params = {**params, "level": level, "crs": None if crs is None else str(crs)}
     start = time.perf_counter()
     source = open_source(store, key, kind, name, params, file_info or {}, options.replace)
     result = IngestResult(source=name, rows_resumed=source["rows_done"])
     if source["complete"]:
         result.already_complete = True
-        if progress is not None and source["rows_done"]:
-            progress(source["rows_done"])
+        if callable(options.progress) and source["rows_done"]:
+            options.progress(source["rows_done"])
         return result
-    if progress is not None and source["rows_done"]:
-        progress(source["rows_done"])
+    count = total() if total is not None and shows(options.progress) else None  # counted only for a bar
+    with Bar(options.progress, total=count, unit="rows", desc="binning") as bar:
+        if source["rows_done"]:
+            bar.update(source["rows_done"])
+        _ingest_batches(store, source, level, declared, options, merge_rows, batches, threaded, ordered, rollups,
+                        transformer, name, result, bar)
+    result.seconds = time.perf_counter() - start
+    if result.rows_rejected:
+        shown = "; ".join(
+            f"row {r['row']}" + (f" (line {r['line']})" if r["line"] else "")
+            + (f" column {r['column']!r} {r['value']!r}" if r["column"] else "")
+            + f" {r['reason']}"
+            for r in result.rejects[:3]
+        )
+        warnings.warn(
+            f"{name}: skipped {result.rows_rejected:,} bad row(s), kept in table rejects; "
+            f"first: {shown}",
+            RejectedRowsWarning,
+            stacklevel=5,
+        )
+    return result
+
+
+def _ingest_batches(
+    store: Connection, source: Mapping[str, Any], level: int, declared: Mapping[str, str], options: IngestOptions,
+    merge_rows: int, batches: Callable[[int, dict[str, str]], Iterator[RawBatch]], threaded: bool, ordered: bool,
+    rollups: Any, transformer: Any, name: str, result: IngestResult, bar: Bar,
+) -> None:
+    """The batch loop of :func:`run_ingest`, then the final merge and the source marked complete."""
+    on_error = options.on_error
     conn = store.conn
     source_id = source["id"]
     pending = store.pending_count()
@@ -244,36 +271,19 @@ def run_ingest(
             for r in prepared.rejects[: max(0, 5 - len(result.rejects))]:
                 result.rejects.append({k: jsonable(v) for k, v in r.items() if k != "index"})
             pending += len(prepared)
-            if progress is not None:
-                progress(batch.consumed)
+            bar.update(batch.consumed)
             if pending >= max(merge_rows, merged // 4):
-                with store.transaction():
+                with store.transaction(), bar.heartbeat():
                     store.merge_pending()
                 merged += pending
                 pending = 0
     finally:
         work.stop()
-        if isinstance(progress, RowsBar):
-            progress.close()
-    with store.transaction():
+    bar.stage("sorting into the store")
+    with store.transaction(), bar.heartbeat():
         store.merge_pending()
         conn.execute("UPDATE sources SET complete = 1, updated = ? WHERE id = ?", (now(), source_id))
         store.touch()
-    result.seconds = time.perf_counter() - start
-    if result.rows_rejected:
-        shown = "; ".join(
-            f"row {r['row']}" + (f" (line {r['line']})" if r["line"] else "")
-            + (f" column {r['column']!r} {r['value']!r}" if r["column"] else "")
-            + f" {r['reason']}"
-            for r in result.rejects[:3]
-        )
-        warnings.warn(
-            f"{name}: skipped {result.rows_rejected:,} bad row(s), kept in table rejects; "
-            f"first: {shown}",
-            RejectedRowsWarning,
-            stacklevel=5,
-        )
-    return result
 
 
 def _check_case(store: Connection, name: str, columns: list[str]) -> None:

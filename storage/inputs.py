@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import os
 import uuid
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence, Sized
 from pathlib import Path
 from typing import Any
 
 from dggs.errors import DggsValueError
 
-from . import prechecks, readers_arrays, readers_csv, readers_geojson, readers_vector
+from . import prechecks, readers, readers_arrays, readers_csv, readers_geojson, readers_vector
 from .connection import Connection
 from .crs import make_transformer
 from .ingest import IngestOptions, IngestResult, run_ingest
@@ -81,6 +81,7 @@ def ingest_csv(
         options=options,
         merge_rows=merge_rows,
         file_info=info,
+        total=lambda: readers.count_csv_rows(file),
     )
 
 
@@ -119,6 +120,7 @@ def ingest_geojson(
         options=options,
         merge_rows=merge_rows,
         file_info=info,
+        total=lambda: len(features),
     )
 
 
@@ -162,6 +164,7 @@ def ingest_vector(
         ),
         merge_rows=merge_rows,
         file_info=info,
+        total=lambda: readers_vector.feature_count(file, layer),
     )
 
 
@@ -200,6 +203,7 @@ def ingest_records(
         declared=declared,
         options=options,
         merge_rows=merge_rows,
+        total=lambda: len(records) if isinstance(records, Sized) else None,
     )
 
 
@@ -254,6 +258,7 @@ def ingest_points(
         options=options,
         merge_rows=merge_rows,
         ordered=ordered,
+        total=lambda: len(lat_a),
     )
 
 

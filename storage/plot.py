@@ -33,6 +33,55 @@ def _import_matplotlib() -> Any:
 
     return Figure, FigureCanvasAgg
 
+def land_rings() -> list[np.ndarray] | None:
+    """The land's outer rings (lng/lat) from the web map's Natural Earth countries, or None where they are absent.
+
+    The file is world-atlas's ``countries-50m.json`` (TopoJSON, its ``land`` layer), which ``make static`` or a
+    built wheel puts in ``dggs/server/static/vendor``; GDAL reads TopoJSON, through pyogrio (the ``vector``
+    extra). Without either, maps are drawn without land (and say so under the map).
+    """
+    from pathlib import Path
+
+    file = Path(dggs.__file__).parent / "server" / "static" / "vendor" / "world-atlas" / "countries-50m.json"
+    if not file.is_file():
+        return None
+    try:
+        import pyogrio
+    except ImportError:
+        return None
+    try:
+        geometries = pyogrio.read_dataframe(file, layer="land", read_geometry=True).geometry
+    except Exception:  # noqa: BLE001 - a basemap only: a broken file leaves the map without land
+        return None
+    return [piece for g in geometries for ring in _rings(g) for piece in _split_at_antimeridian(ring)]
+
+
+def _split_at_antimeridian(ring: np.ndarray) -> list[np.ndarray]:
+    """A lng/lat ring that crosses 180 degrees as the rings of its parts on either side (one ring if none).
+
+    TopoJSON rings run across the antimeridian (179.9 to -179.9); drawn as they are, their edges streak across
+    the whole map. The ring is unwrapped to continuous longitudes and cut by the map's -180..180 window,
+    shifted a turn either way. A ring around a pole (Antarctica: it does not close in unwrapped longitude) is
+    left as it is.
+    """
+    if np.all(np.abs(np.diff(ring[:, 0])) <= 180):
+        return [ring]
+    lng = np.degrees(np.unwrap(np.radians(ring[:, 0])))
+    if abs(lng[-1] - lng[0]) > 1e-9:
+        return [ring]
+    import shapely
+    from shapely.geometry import Polygon, box
+
+    shape = shapely.make_valid(Polygon(np.column_stack([lng, ring[:, 1]])))
+    window = box(-180, -90, 180, 90)
+    pieces = []
+    for shift in (-360.0, 0.0, 360.0):
+        cut = shapely.intersection(shapely.transform(shape, lambda xy, d=shift: xy + (d, 0.0)), window)
+        pieces += [np.asarray(p.exterior.coords) for p in shapely.get_parts(cut)
+                   if p.geom_type == "Polygon" and p.area > 0]
+    return pieces
+
+
 def _rings(geometry: Any) -> list[np.ndarray]:
     polys = getattr(geometry, "geoms", [geometry])
     return [np.asarray(p.exterior.coords) for p in polys]
@@ -49,7 +98,8 @@ def plot_cells(
     points: tuple[Sequence[float], Sequence[float]] | None = None,
     dpi: int = 150,
     projection: str = "ISEA",
-) -> None:
+    land: bool | None = None,
+) -> bool:
     """Draw ``cells`` coloured by ``values`` on a Mollweide world map, save as PNG.
 
     Parameters
@@ -73,17 +123,26 @@ def plot_cells(
         Resolution of the PNG.
     projection : {"ISEA", "IVEA"}, default "ISEA"
         The grid the cells are drawn on (a store's ``projection``).
+    land : bool, optional
+        Draw the land (Natural Earth 1:50m, :func:`land_rings`) under the cells: ``None`` (default) where it is
+        installed, ``False`` never, ``True`` or fail.
+
+    Returns
+    -------
+    bool
+        Whether land was drawn (the footer says so too).
 
     Raises
     ------
     DggsError
-        If matplotlib is missing.
+        If matplotlib is missing, or ``land=True`` and the land is not installed.
 
     Examples
     --------
     >>> import os, tempfile
     >>> out = os.path.join(tempfile.mkdtemp(), "map.png")
-    >>> plot_cells(["A0", "B3"], [1.0, 10.0], out, title="two cells")
+    >>> plot_cells(["A0", "B3"], [1.0, 10.0], out, title="two cells", land=False)
+    False
     >>> os.path.getsize(out) > 0
     True
     """
@@ -141,6 +200,14 @@ def plot_cells(
         gx, gy = to_map.transform(s, np.full_like(s, lat))
         ax.plot(gx, gy, color="#c8d2dc", lw=0.4, zorder=1)
 
+    rings = land_rings() if land is not False else None
+    if land and rings is None:
+        raise DggsError("land=True, but the land outlines are not installed: they need pyogrio ('dggs[vector]') "
+                        "and the web map's world-atlas files (make static)")
+    for ring in rings or ():
+        lx, ly = to_map.transform(ring[:, 0], ring[:, 1])
+        ax.fill(lx, ly, facecolor="#dcd8cc", edgecolor="#9a9484", lw=0.3, zorder=0.5)
+
     if points is not None and len(points[0]):
         px, py = to_map.transform(np.asarray(points[1], dtype=float), np.asarray(points[0], dtype=float))
         ax.scatter(px, py, s=0.2, color="#6b7785", alpha=0.35, linewidths=0, zorder=1.5)
@@ -169,7 +236,8 @@ def plot_cells(
         fig.text(
             0.5,
             0.015,
-            f"{len(cells):,} cells, level {level} (each {area:,.0f} km\u00b2, equal area); Mollweide projection",
+            f"{len(cells):,} cells, level {level} (each {area:,.0f} km\u00b2, equal area); Mollweide projection; "
+            + ("land: Natural Earth 1:50m" if rings else "no land drawn (needs dggs[vector] and make static)"),
             ha="center",
             fontsize=8,
             color="#506070",
@@ -178,3 +246,4 @@ def plot_cells(
 
     with atomic_path(path, suffix=".png") as tmp:
         fig.savefig(tmp, dpi=dpi, format="png")
+    return bool(rings)

@@ -25,7 +25,6 @@ import hashlib
 import json
 import os
 import sqlite3
-import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -39,6 +38,7 @@ from dggs.errors import DggsValueError, StorageError
 from .bulk import insert_many, max_variables
 from .connection import Connection
 from .ingest import IngestResult
+from .progress import Bar, check_progress
 from .rollup_keep import add_partials, batch_partials, check_levels, kept_levels
 from .schema import add_columns, column_types, now, quote
 from .sources import delete_source, file_info, open_source
@@ -83,21 +83,6 @@ class RasterIngestResult(IngestResult):
         return text
 
 
-class _BlocksBar:
-    """``progress=True``: a tqdm bar of the blocks, on stderr."""
-
-    def __init__(self, total: int) -> None:
-        from tqdm import tqdm
-
-        self.bar = tqdm(total=total, unit=" blocks", desc="binning raster", file=sys.stderr)
-
-    def __call__(self, blocks: int) -> None:
-        self.bar.update(blocks)
-
-    def close(self) -> None:
-        self.bar.close()
-
-
 def ingest_raster(
     store: Connection, source: Any, level: int | None, *, mode: str, band: Any, nodata: Any, window: Any,
     density: bool, block_size: int, replace: bool, progress: Any,
@@ -119,8 +104,7 @@ def ingest_raster(
         raise StorageError(f"{store.path} is open read-only")
     if not isinstance(replace, bool):
         raise DggsValueError(f"replace must be True or False, not {replace!r}")
-    if not (progress is None or isinstance(progress, bool) or callable(progress)):
-        raise DggsValueError(f"progress must be True, False, None or a callable taking a block count, not {progress!r}")
+    check_progress(progress, "a block count")
     level, src = open_checked(source, store.resolve_level(level), mode, band, nodata, window, block_size)
     store.check_level_for_ingest(level)
     check_levels(kept_levels(store.conn), level)
@@ -138,16 +122,13 @@ def ingest_raster(
     with store.transaction():
         for ddl in PARTIALS_DDL:
             store.conn.execute(ddl)
-    bar = _BlocksBar(total) if progress is True else None
-    tick: Callable[[int], Any] | None = bar if bar is not None else (progress or None)
-    try:
-        if tick is not None and row["rows_done"]:
-            tick(row["rows_done"])
-        _blocks(store, src, row, level, mode, bool(density), block_size, total, name, tick, result)
-        result.rows_inserted = _finish(store, row["id"], src.bands, level, mode, total, name)
-    finally:
-        if bar is not None:
-            bar.close()
+    with Bar(progress, total=total, unit="blocks", desc="binning raster") as bar:
+        if row["rows_done"]:
+            bar.update(row["rows_done"])
+        _blocks(store, src, row, level, mode, bool(density), block_size, total, name, bar.update, result)
+        bar.stage("summing into cells")
+        with bar.heartbeat():
+            result.rows_inserted = _finish(store, row["id"], src.bands, level, mode, total, name)
     result.seconds = time.perf_counter() - start
     return result
 
@@ -183,7 +164,7 @@ def _identity(store: Connection, source: Any, src: Any, block_size: int, replace
 
 
 def _blocks(store: Connection, src: Any, row: dict[str, Any], level: int, mode: str, density: bool, block_size: int,
-            total: int, name: str, tick: Callable[[int], Any] | None, result: RasterIngestResult) -> None:
+            total: int, name: str, tick: Callable[[int], Any], result: RasterIngestResult) -> None:
     """Commit each block's partials with the progress; blocks without data ride along with the next commit."""
     from dggs.raster import block_results
 
@@ -195,8 +176,7 @@ def _blocks(store: Connection, src: Any, row: dict[str, Any], level: int, mode: 
         _commit(store, row["id"], part, mode, waiting, done, name, level)
         done += waiting
         result.rows_read += waiting
-        if tick is not None:
-            tick(waiting)
+        tick(waiting)
         waiting = 0
 
 

@@ -20,7 +20,7 @@ from .crs import make_transformer
 from .readers import RawBatch
 from .readers_geojson import geojson_batches
 
-__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "first_features", "vector_batches"]
+__all__ = ["VECTOR_SUFFIXES", "pyogrio_module", "layer_fields", "feature_count", "first_features", "vector_batches"]
 
 #: File name endings read through pyogrio.
 VECTOR_SUFFIXES = (".gpkg", ".shp", ".fgb", ".parquet", ".geoparquet")
@@ -75,6 +75,23 @@ def layer_fields(path: str | Path, layer: str | int | None) -> tuple[list[str], 
 
 def _is_parquet(path: str | Path) -> bool:
     return Path(path).suffix.lower() in (".parquet", ".geoparquet")
+
+
+def feature_count(path: str | Path, layer: str | int | None) -> int | None:
+    """The number of features of a layer, for a progress bar's total (None where the driver would have to count).
+
+    GeoParquet's row count is in its footer; other formats ask GDAL, which knows it (GeoPackage, FlatGeobuf,
+    Shapefile) or answers -1.
+    """
+    if _is_parquet(path):
+        import pyarrow.parquet as pq
+
+        return int(pq.ParquetFile(path).metadata.num_rows)
+    try:
+        count = int(pyogrio_module().read_info(path, layer=layer, force_feature_count=False)["features"])
+    except Exception:  # noqa: BLE001 - only a bar's total: the ingest itself reports a broken file
+        return None
+    return count if count >= 0 else None
 
 
 def _geoparquet(path: str | Path) -> tuple[str, Any, list[str]]:

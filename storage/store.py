@@ -31,6 +31,7 @@ from dggs.errors import DggsValueError
 from . import queries, rollup_query
 from .connection import DEFAULT_LEVEL, Connection, guarded
 from .ingest import MERGE_ROWS
+from .progress import Bar, Progress
 from .projection import ProjectionMethods, settle
 from .queries import STATS
 from .sources import delete_source, list_rejects, list_sources
@@ -128,8 +129,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
     def __enter__(self) -> CellStore:
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.close()
+    def __exit__(self, error: object, *exc: object) -> None:
+        self._store.close(discard_unused=error is not None)  # a failed first ingest leaves no empty file
 
     def __repr__(self) -> str:
         return f"<CellStore {self.path} level={self.level}>"
@@ -261,7 +262,7 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         column: str | None = None,
         stats: Sequence[str] = ("count", "sum", "mean", "min", "max"),
         *, cell: Any = None, order_by: str | None = None, descending: bool = True, limit: int | None = None,
-        as_table: bool = False,
+        as_table: bool = False, progress: Progress = None,
     ) -> Any:
         """Roll stored rows up to ``level`` (the stored level or coarser).
 
@@ -279,14 +280,12 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
             (NULLs ignored, as SQL does).
         cell : str, optional
             Only roll up rows under this cell.
-        order_by : str, optional
-            A stat to sort by; default the cell id.
-        descending : bool, default True
-            Sort ``order_by`` largest first.
-        limit : int, optional
-            Return at most this many cells.
+        order_by, descending, limit : str, bool, int, optional
+            A stat to sort by (default the cell id), largest first (default); at most ``limit`` cells.
         as_table : bool, default False
             Columns (a pyarrow Table) instead of dicts: cheaper.
+        progress : bool or callable, optional
+            Its running time on stderr, as :mod:`dggs.storage.progress` says (default: on a terminal after 2 s).
 
         Returns
         -------
@@ -310,7 +309,8 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         ...     top[0]["count"], top[0]["sum"]
         (2, 12)
         """
-        return rollup_query.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
+        with Bar(progress, unit="", desc=f"rolling up to level {level}") as bar, bar.heartbeat():
+            return rollup_query.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
 
     @guarded
     def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:

@@ -18,6 +18,7 @@ from dggs.arrow.formats import export_format
 from . import queries
 from .atomic import atomic_write, refuse_store
 from .connection import Connection, guarded
+from .progress import Bar, Progress
 from .rollup_memo import state
 
 __all__ = ["ExportMethods"]
@@ -64,16 +65,21 @@ class ExportMethods:
         """
         if path is not None:
             refuse_store(path, self.path)
-        rows = self.aggregate(level, column, queries.export_stats(column, stats))
+        rows = self.aggregate(level, column, queries.export_stats(column, stats), progress=False)
+        collection = self._draw_geojson(rows, densify)
+        if path is not None:
+            with atomic_write(path) as fh:
+                json.dump(collection, fh)
+        return collection
+
+    def _draw_geojson(self, rows: list[dict[str, Any]], densify: int | None) -> dict[str, Any]:
+        """The FeatureCollection of rolled-up ``rows``, drawn on the store's grid."""
         cells = [row["cell"] for row in rows]
         props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
         if self._store.projection == "ISEA":
             collection: dict[str, Any] = dggs.cells_to_geojson(cells, properties=props, densify=densify)
         else:  # drawn with the grid the cells were binned on (storage/projection.py)
             collection = _grid_geojson(self._store.projection, cells, props, densify)
-        if path is not None:
-            with atomic_write(path) as fh:
-                json.dump(collection, fh)
         return collection
 
     @guarded
@@ -83,8 +89,12 @@ class ExportMethods:
         column: str | None = None,
         stats: Sequence[str] | None = None,
         densify: int | None = 16,
+        *,
+        rows: list[dict[str, Any]] | None = None,
     ) -> Any:
         """Roll up to ``level`` and return a GeoParquet-ready pyarrow Table (needs pyarrow).
+
+        ``rows``: the roll-up, when the caller has it already (:meth:`export`).
 
         One row per non-empty cell: ``cell`` (string id), ``cell_id`` (int64
         id), the stats (default count, sum, mean, min, max of ``column``),
@@ -117,7 +127,8 @@ class ExportMethods:
         last = self._last_table
         if last is not None and last[0] == (*key, conn, version, changes):
             return last[1]
-        rows = self.aggregate(level, column, stats)
+        if rows is None:
+            rows = self.aggregate(level, column, stats, progress=False)
         table = cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
         if self._store.projection != "ISEA":  # drawn with the grid the cells were binned on
             table = _grid_geometry(table, self._store.projection, densify)
@@ -136,6 +147,7 @@ class ExportMethods:
         *,
         format: str | None = None,
         densify: int | None = 16,
+        progress: Progress = None,
     ) -> int:
         """Roll up to ``level`` and write the cells with their stats to a file; return the cell count.
 
@@ -146,6 +158,11 @@ class ExportMethods:
         ``.json``, ``.parquet``, ``.geoparquet``, ``.gpkg``, ``.fgb``).  The
         file is written under a temporary name and renamed over ``path``
         when complete: an error leaves the old file (or none).
+
+        ``progress`` shows the three steps (rolling up, drawing the cells,
+        writing) on stderr with the time each takes: ``None`` (default) on a
+        terminal once the export has run 2 s, ``True`` always, ``False`` never;
+        a callable is given 1 as each step ends (:mod:`dggs.storage.progress`).
 
         Raises
         ------
@@ -167,12 +184,26 @@ class ExportMethods:
         """
         fmt = export_format(path, format)
         refuse_store(path, self.path)
-        if fmt == "geojson":
-            return len(self.to_geojson(level, column, path, stats, densify)["features"])
-        from dggs.arrow import write_cells
+        with Bar(progress, total=3, unit="steps", desc="exporting: rolling up") as bar, bar.heartbeat():
+            stats = queries.export_stats(column, stats)
+            rows = self.aggregate(level, column, stats, progress=False)
+            bar.update(1)
+            bar.stage(f"exporting: drawing {len(rows):,} cells")
+            if fmt == "geojson":
+                collection = self._draw_geojson(rows, densify)
+                bar.update(1)
+                bar.stage("exporting: writing")
+                with atomic_write(path) as fh:
+                    json.dump(collection, fh)
+                bar.update(1)
+                return len(rows)
+            from dggs.arrow import write_cells
 
-        table = self.to_arrow(level, column, stats, densify)
-        write_cells(table, path, fmt)
+            table = self.to_arrow(level, column, stats, densify, rows=rows)
+            bar.update(1)
+            bar.stage("exporting: writing")
+            write_cells(table, path, fmt)
+            bar.update(1)
         return int(table.num_rows)
 
 

@@ -120,7 +120,9 @@ class IngestMethods:
         encoding : str, default "utf-8"
             Text encoding of the file (a UTF-8 byte-order mark is skipped).
         progress : bool or callable, optional
-            ``True`` for a progress bar on stderr (tqdm); or called with the
+            A bar on stderr with the total and an ETA: ``None`` (default) on
+            a terminal once the ingest has run 2 s, ``True`` always, ``False``
+            never; or a callable, called with the
             number of input rows after each batch.
 
         Returns

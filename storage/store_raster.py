@@ -60,7 +60,8 @@ class RasterMethods:
         replace : bool
             Forget what an earlier ingest of this raster (or of an older version of the file) stored first.
         progress : bool or callable, optional
-            ``True`` for a progress bar of the blocks on stderr; a callable is given the blocks committed.
+            A bar of the blocks on stderr: ``None`` (default) on a terminal once the work has run 2 s,
+            ``True`` always, ``False`` never; a callable is given the blocks committed.
 
         Returns
         -------

@@ -33,6 +33,7 @@ Examples
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -287,6 +288,7 @@ class DggsAccessor(CellVerbs):
         column: str | None = None,
         as_int: bool = False,
         max_cells: int | None = None,
+        progress: bool | Callable[[int], Any] | None = None,
     ) -> Any:
         """The cells of each (Multi)Polygon feature of a GeoDataFrame.
 
@@ -313,6 +315,11 @@ class DggsAccessor(CellVerbs):
             Integer ids (uint64) instead of strings.
         max_cells : int, optional
             Limit per feature (see :func:`dggs.polygon_to_cells`).
+        progress : bool or callable, optional
+            A bar of the features filled on stderr: ``None`` (default) on a
+            terminal once the fill has run 2 s, ``True`` always, ``False``
+            never; a callable is given the features done
+            (:mod:`dggs.storage.progress`).
 
         Returns
         -------
@@ -356,7 +363,10 @@ class DggsAccessor(CellVerbs):
         polygons = ("Polygon", "MultiPolygon")
         rows = [i for i, g in enumerate(geoms) if g is not None and not g.is_empty and g.geom_type in polygons]
         # the features' fills on all cores (DGGS_THREADS), each result or error in row order
-        outcomes = each(lambda g: polygon_to_cells(g, level, mode, as_int, max_cells), geoms[rows])
+        from dggs.storage.progress import Bar
+
+        with Bar(progress, total=len(rows), unit="polygons", desc="filling") as bar:
+            outcomes = each(lambda g: polygon_to_cells(g, level, mode, as_int, max_cells), geoms[rows], bar.update)
         filled = dict(zip(rows, outcomes, strict=False))  # the outcomes stop at the first error
         found: list[np.ndarray] = []
         for i, geom in enumerate(geoms):

@@ -13,7 +13,7 @@ each mode's formula and the error bounds.  Needs the extra ``raster``
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import numpy as np
@@ -47,7 +47,7 @@ def raster_to_cells(
     density: bool = False,
     as_str: bool = False,
     block_size: int = 512,
-    progress: bool | None = None,
+    progress: bool | Callable[[int], Any] | None = None,
     to: str = "pandas",
 ) -> Any:
     """The cells of ``level`` under a raster, with each band's value by ``mode`` and their covered share.
@@ -80,8 +80,9 @@ def raster_to_cells(
         Add the string ids as column ``cell``.
     block_size : int
         Pixels a block side: the raster is read and cut a block at a time, on all cores.
-    progress : bool, optional
-        A progress bar of the blocks on stderr (default: none).
+    progress : bool or callable, optional
+        A bar of the blocks on stderr: ``None`` (default) on a terminal once the work has run 2 s, ``True``
+        always, ``False`` never; a callable is given the blocks done (:mod:`dggs.storage.progress`).
     to : {"pandas", "xarray"}
         ``"xarray"``: the same table as an ``xarray.Dataset`` on dimension
         ``cells``, its ``cell_ids`` coordinate (uint64) carrying the grid's
@@ -118,21 +119,14 @@ def raster_to_cells(
     if to not in OUTPUTS:
         raise DggsValueError(f"to={to!r} is not one of {', '.join(map(repr, OUTPUTS))}")
     level, src = open_checked(source, level, mode, band, nodata, window, block_size)
-    bar = None
-    if progress:
-        from tqdm import tqdm
+    from dggs.storage.progress import Bar
 
-        bar = tqdm(total=len(windows(src, block_size)), unit="block", desc="raster", leave=False)
     parts = []
-    try:
+    with Bar(progress, total=len(windows(src, block_size)), unit="blocks", desc="binning raster") as bar:
         for part in block_results(src, level, mode, density, block_size):
             if part is not None:
                 parts.append(part)
-            if bar is not None:
-                bar.update(1)
-    finally:
-        if bar is not None:
-            bar.close()
+            bar.update(1)
     frame = finish(parts, src.bands, level, mode, as_str)
     return frame if to == "pandas" else to_xarray(frame, level)
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import sys
 
 import click
 
@@ -55,7 +54,6 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
         raise click.UsageError("give one output: --db STORE or --parquet FOLDER")
     if replace and db is None:
         raise click.UsageError("--replace goes with --db")
-    show = sys.stderr.isatty() if progress is None else progress
     band = list(bands) or None
     if db is not None:
         from dggs.raster import open_checked
@@ -68,7 +66,7 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
         try:
             with CellStore(db) as store:
                 result = store.ingest_raster(raster, level, mode=mode, band=band, nodata=nodata, density=density,
-                                             block_size=block_size, replace=replace, progress=show)
+                                             block_size=block_size, replace=replace, progress=progress)
         except BaseException:
             if new:
                 for tail in ("", "-wal", "-shm", "-journal"):
@@ -81,6 +79,6 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
     from dggs.raster.parquet import write_partitioned
 
     table = raster_to_cells(raster, level, mode=mode, band=band, nodata=nodata, density=density,
-                            block_size=block_size, progress=show)
+                            block_size=block_size, progress=progress)
     counts = write_partitioned(table, str(parquet))
     click.echo(f"{raster}: wrote {len(table):,} cells in {len(counts):,} GeoParquet file(s) under {parquet}")

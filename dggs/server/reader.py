@@ -270,7 +270,7 @@ class StoreReader:
 
             def compute() -> LevelData:
                 stats = ("count",) if column is None or stat == "count" else ("count", stat)
-                rows = store.aggregate(level, column, stats)
+                rows = store.aggregate(level, column, stats, progress=False)  # no bars in a server
                 ids = np.array([r["cell"] for r in rows], dtype=str) if rows else np.array([], dtype="<U1")
                 counts = np.array([r["count"] for r in rows], dtype=np.int64)
                 values = [r[stats[-1]] for r in rows]
@@ -285,7 +285,7 @@ class StoreReader:
     def rollup(self, zone: str, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """``store.aggregate(level, column, stats, cell=zone)`` in one snapshot (not cached)."""
         with self.snapshot() as (store, _marker):
-            rows: list[dict[str, Any]] = store.aggregate(level, column, tuple(stats), cell=zone)
+            rows: list[dict[str, Any]] = store.aggregate(level, column, tuple(stats), cell=zone, progress=False)
             return rows
 
     # -- geometry -----------------------------------------------------------

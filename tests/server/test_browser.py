@@ -684,3 +684,22 @@ def test_the_standalone_page_of_docs_js_draws_cells_from_ids(page: Any, data: di
         thread.join(10)
         page.get(f"{server}/")
         wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+
+
+def test_the_view_is_in_the_url_and_a_link_opens_it(page: Any, server: str) -> None:
+    """Issue 38: a view could not be shared. MapLibre's hash (#zoom/lat/lng/bearing/pitch) writes it into the
+    URL as the map moves, and a page opened with one shows that view instead of framing the data."""
+    set_view(page, {"center": [2.35, 48.85], "zoom": 4.5})
+    wait_for(page, lambda: page.execute_script("return window.location.hash").startswith("#4.5/48.85/2.35"),
+             message="the view did not reach the URL")
+    link = f"{server}/#6.25/48.1/11.2"
+    page.get("about:blank")
+    page.get(link)
+    wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+    zoom, lat, lng = page.execute_script(
+        "const m = window.dggsMap, c = m.getCenter(); return [m.getZoom(), c.lat, c.lng]")
+    assert (round(zoom, 2), round(lat, 2), round(lng, 2)) == (6.25, 48.1, 11.2)
+    assert state(page)["lastError"] is None and state(page)["featureCount"] > 0
+    page.get(f"{server}/")  # the module's page again, framed on the data, for the tests after this one
+    wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+    wait_for(page, lambda: page.execute_script("return window.dggsState.geography") != "loading")

@@ -304,7 +304,7 @@ def test_progress_true_draws_a_bar_and_false_none(tmp_path, capsys):
     frame = pd.DataFrame({"lat": [1.0, 2.0, 3.0], "lng": [4.0, 5.0, 6.0]})
     with CellStore(tmp_path / "p.db") as store:
         store.ingest_dataframe(frame, level=5, progress=True, source="a")
-        assert "3.00 rows" in capsys.readouterr().err
+        assert "3.00/3.00" in capsys.readouterr().err  # with its total (issue 38)
         store.ingest_dataframe(frame, level=5, progress=False, source="b")
         assert capsys.readouterr().err == ""
         with pytest.raises(DggsValueError, match="progress must be True, False, None or a callable"):

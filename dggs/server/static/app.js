@@ -297,7 +297,11 @@ const map = new MapLibreMap({
   zoom: 1.5,
   attributionControl: false,
   maxPitch: 60,
+  // The view in the URL (#zoom/lat/lng/bearing/pitch, MapLibre's own hash): a link shares it, a reload keeps it.
+  hash: true,
 });
+// A page opened with a view in its URL shows that view, not the data's frame.
+const viewInUrl = /^#[-\d.]+\/[-\d.]+\/[-\d.]+/.test(window.location.hash);
 window.dggsMap = map;
 map.addControl(new NavigationControl({ visualizePitch: true }), 'top-right');
 
@@ -769,6 +773,7 @@ function setUpControls() {
 
 // Frame the data: the whole globe around the data's centre, or the data's bbox when it is small.
 function frameData() {
+  if (viewInUrl) return;
   const [w, s, e, n] = layers.bbox || WORLD_BBOX;
   const lngSpan = e >= w ? e - w : e + 360 - w;
   const centre = [wrapLng(w + lngSpan / 2), clamp((s + n) / 2, -60, 60)];
