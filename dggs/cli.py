@@ -31,7 +31,7 @@ def main() -> None:
 def _register() -> None:
     from dggs.cell_cli import cell
     from dggs.experiments.cli import experiments
-    from dggs.raster.cli import bin_raster  # click only: the raster modules load when it runs
+    from dggs.raster_cli import bin_raster  # click only: the raster package loads when it runs
     from dggs.server.cli import serve  # click only: fastapi is imported when the command runs
     from dggs.storage.cli import register as register_storage
 

@@ -13,7 +13,6 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
-from dggs.arrow.formats import export_format
 
 from . import queries
 from .atomic import atomic_write, refuse_store
@@ -182,6 +181,8 @@ class ExportMethods:
         ...     store.export(out, 1)
         2
         """
+        from dggs.arrow.formats import export_format  # here: dggs.arrow loads the grid, which `dggs --help` must not
+
         fmt = export_format(path, format)
         refuse_store(path, self.path)
         with Bar(progress, total=3, unit="steps", desc="exporting: rolling up") as bar, bar.heartbeat():

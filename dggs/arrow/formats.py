@@ -1,7 +1,8 @@
 """The file formats cells are exported to, and the extensions that name them (no heavy imports).
 
 Shared by :mod:`dggs.arrow` (the writers) and :mod:`dggs.storage` (``CellStore.export``,
-``dggs export``), which must not import pyarrow to write GeoJSON.
+``dggs export``), which imports it when it exports (importing it loads :mod:`dggs.arrow`, and a store opened
+only to query should not).
 """
 
 from __future__ import annotations

@@ -283,15 +283,21 @@ def test_gdal_write_failure_leaves_nothing(tmp_path):
     assert os.listdir(tmp_path) == []
 
 
-def test_export_formats_agree_with_the_store():
+def test_export_formats_agree_with_the_store(tmp_path):
     from dggs import arrow
     from dggs.arrow import formats as _formats
-    from dggs.storage import store_export
+    from dggs.storage import CellStore
 
     # one table for both: the writers here and CellStore.export / dggs export
-    assert arrow.export_format is _formats.export_format is store_export.export_format
+    assert arrow.export_format is _formats.export_format
     assert arrow.EXPORT_FORMATS == ("geojson", "geoparquet", "gpkg", "fgb")
-    assert arrow.export_format("a.GPKG") == store_export.export_format("a.GPKG", None) == "gpkg"
+    assert arrow.export_format("a.GPKG") == "gpkg"
+    with pytest.raises(dggs.DggsValueError) as by_arrow:
+        arrow.export_format(tmp_path / "cells.xyz")
+    with CellStore() as store, pytest.raises(dggs.DggsValueError) as by_store:
+        store.ingest_points([1.0], [2.0], 4)
+        store.export(tmp_path / "cells.xyz", 1)
+    assert str(by_store.value) == str(by_arrow.value)
 
 
 def _doc_blocks():

@@ -14,7 +14,7 @@ from click.testing import CliRunner  # noqa: E402
 import dggs  # noqa: E402
 from dggs.cli import main  # noqa: E402
 from dggs.raster import MODES, raster_to_cells  # noqa: E402
-from dggs.raster.cli import CLI_MODES  # noqa: E402
+from dggs.raster_cli import CLI_MODES  # noqa: E402
 from dggs.storage import CellStore  # noqa: E402
 
 from .helpers import field, same_rows, write  # noqa: E402
