@@ -80,6 +80,7 @@ def test_descriptors_stay_flat_over_idle_bursts(store_path):
         urls = [
             f"{base}/dggs/{DGGRS}/zones/{zone}/data?zone-depth=1" for zone in ("C4", "B1", "A", "Q", "T5", "H0")
         ] + [f"{base}/dggs/{DGGRS}/zones?zone-level=2&compact-zones=false", f"{base}/map/layers"]
+        baseline = _descriptors(proc.pid)  # the interpreter, the listening socket, the store's first reader
         counts, statuses = [], []
         with concurrent.futures.ThreadPoolExecutor(CONCURRENCY) as pool:
             for burst in range(BURSTS):
@@ -88,13 +89,13 @@ def test_descriptors_stay_flat_over_idle_bursts(store_path):
                 statuses += list(pool.map(_get, [urls[i % len(urls)] for i in range(PER_BURST)]))
                 counts.append(_descriptors(proc.pid))
         assert not [s for s in statuses if s >= 500], f"5xx answers: {sorted(set(statuses))}"
-        # the pool may fill up to POOL_IDLE stores in the first bursts; from then on the count is flat (a leak
-        # grew it by a store per retired thread, every burst: [16, 24, 32, 43] before issue 32's fix)
+        # the pool keeps at most POOL_IDLE stores however the bursts overlap (how fast it fills depends on the
+        # machine's load), plus a few sockets the server has not yet closed; a leak grew the count by a store per
+        # retired thread, every burst, without bound: [16, 24, 32, 43] before issue 32's fix
         from dggs.server.reader import POOL_IDLE
 
-        where = f"open descriptors after each burst: {counts} (limit {FD_LIMIT})"
-        assert max(counts) <= counts[0] + POOL_IDLE + 2, where
-        assert counts[-1] <= counts[1] + 2, where
+        where = f"open descriptors before the bursts {baseline}, after each: {counts} (limit {FD_LIMIT})"
+        assert max(counts) <= baseline + POOL_IDLE + 4, where
     finally:
         proc.terminate()
         proc.communicate(timeout=30)
