@@ -27,7 +27,8 @@ The rules:
     but ``dggs.errors``, ``dggs.geometry.*`` and the compiled core ``dggs._core``.
 (f) Only the kernel floors bind the compiled core: ``dggs._core`` is imported
     by ``dggs.geometry`` and ``dggs.index._kernel`` modules alone.
-(e) Every module is at most 400 lines.
+(e) Modules are sized by idea: about 400 lines is the guideline (STYLE.md); a module past it holds one idea
+    and says so in :data:`LONG_MODULES`, and none passes :data:`MAX_LINES` (two ideas in one file are split).
 (g) No import circle anywhere: the graph of module -> imported module (every import, at any depth of the
     file, a module's own enclosing packages left out since Python loads them anyway) has no cycle.
 (h) The geometry floor loads nothing above it: importing every ``dggs.geometry`` module in a fresh
@@ -48,7 +49,11 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = {"dggs": ROOT / "dggs", "dggs.index": ROOT / "index", "dggs.storage": ROOT / "storage"}
 VERBS = {f"dggs.index.{m}" for m in ("ids", "cellid", "points", "hierarchy", "grid", "vertex", "lines", "polyfill", "measure")}
-MAX_LINES = 400
+GUIDE_LINES = 400
+MAX_LINES = 700
+#: Modules past GUIDE_LINES, each with the one idea that holds it together (an entry for a module back under the
+#: guideline is stale and fails, so the list stays true).
+LONG_MODULES: dict[str, str] = {}
 
 
 def _modules() -> dict[str, Path]:
@@ -205,14 +210,25 @@ def test_only_the_kernel_floors_bind_the_compiled_core():
 
 
 @pytest.mark.parametrize("folder", list(PACKAGES.values()), ids=list(PACKAGES))
-def test_modules_are_at_most_400_lines(folder):
+def test_modules_are_sized_by_idea(folder):
     offences = []
-    for path in MODULES.values():
-        if path.is_relative_to(folder):
-            n = len(path.read_text(encoding="utf-8").splitlines())
-            if n > MAX_LINES:
-                offences.append(f"{path.relative_to(ROOT)}:{n}: {n} lines, over {MAX_LINES}")
+    for module, path in MODULES.items():
+        if not path.is_relative_to(folder):
+            continue
+        n = len(path.read_text(encoding="utf-8").splitlines())
+        where = f"{path.relative_to(ROOT)}:{n}"
+        if n > MAX_LINES:
+            offences.append(f"{where}: {n} lines, over {MAX_LINES}: more than one idea, split it")
+        elif n > GUIDE_LINES and module not in LONG_MODULES:
+            offences.append(f"{where}: {n} lines, over the guideline {GUIDE_LINES}: split it, or name its one idea in "
+                            "LONG_MODULES")
+        elif n <= GUIDE_LINES and module in LONG_MODULES:
+            offences.append(f"{where}: back under {GUIDE_LINES} lines: take it out of LONG_MODULES")
     _report(offences)
+
+
+def test_long_modules_are_modules():
+    assert set(LONG_MODULES) <= set(MODULES), sorted(set(LONG_MODULES) - set(MODULES))
 
 
 def _import_graph() -> dict[str, set[str]]:

@@ -138,7 +138,7 @@ void list_empty(list_out_t *l, idx_t row);
  * are cell ids, 0 if one is not (*out is then freed and NULL), -1 if malloc failed. */
 int list_ids_get(const col_t *c, id_kind kind, idx_t row, dggs_cell **out, idx_t *n);
 
-/* Registration (ext_main.c): one overload per id kind unless per_kind is 0 (then kind is `kind`). Parameter and
+/* Registration (ext_common.c): one overload per id kind unless per_kind is 0 (then kind is `kind`). Parameter and
  * return codes: I an id, L a list of ids, E a list of ids (same kind) as output, W a list of VARCHAR, D DOUBLE,
  * B BIGINT, N INTEGER, V VARCHAR, X BLOB, G GEOMETRY (WKB, DuckDB 1.5 on: geometry_type_exists), O BOOLEAN,
  * S STRUCT(lat, lng), P a list of STRUCT(lat, lng), J STRUCT(i, j); overloads with other parameters are separated

@@ -82,21 +82,6 @@ void dggs_geodetic_to_unit(double lat, double lng, double p[3]) {
  * Snyder forward and inverse (Snyder 1992, eqs. 6-14)
  * ------------------------------------------------------------------------------------------------------------ */
 
-/* kernel.nearest_face: the face whose centre is nearest; near-ties go to the lower face (icosahedron.face_of). */
-int dggs_nearest_face(const double *centres, double px, double py, double pz) {
-    int best = 0;
-    double best_dot = -4.0;
-    for (int f = 0; f < DGGS_NUM_FACES; f++) {
-        const double *c = centres + 3 * f;
-        double d = px * c[0] + py * c[1] + pz * c[2] + dggs_tie_bias[f];
-        if (d > best_dot) {
-            best_dot = d;
-            best = f;
-        }
-    }
-    return best;
-}
-
 void dggs_sector_forward(double sin_az, double cos_az, double sin_half_z, double *x, double *y) {
     double u = cos_az + sin_az * DGGS_COT_THETA; /* eq. 9 */
     double sin_half_q = sqrt(0.5 * (1.0 - u / sqrt(DGGS_TAN_G2 + u * u)));
@@ -150,15 +135,6 @@ int dggs_snyder_forward_unit(const double *centres, const double *frames, double
     int face = dggs_nearest_face(centres, px, py, pz);
     dggs_snyder_face_forward(frames, face, px, py, pz, x, y);
     return face;
-}
-
-/* kernel.sector_of: 120-degree sector (planar azimuth // 120, clockwise from +y) by half-planes. */
-int dggs_sector_of(double x, double y) {
-    if (x > 0.0 || (x == 0.0 && y >= 0.0)) { /* azimuth in [0, 180] */
-        if (x == 0.0 && y == 0.0) return 0;
-        return -0.5 * x - DGGS_HALF_SQRT3 * y >= 0.0 ? 1 : 0; /* azimuth >= 120 */
-    }
-    return -0.5 * x + DGGS_HALF_SQRT3 * y >= 0.0 ? 2 : 1; /* azimuth >= 240 */
 }
 
 /* kernel.inverse_unit: face-frame (x, y) -> unit vector, by the exact closed form (Snyder 1992 eqs. 6-8 solved

@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "dggs.h"
+#include "faces.h"
 
 /* A longitude reduced exactly to -180..180 (fmod is exact; no radians first). */
 double dggs_wrap_degrees(double lng);
@@ -27,8 +28,8 @@ void dggs_authalic_sincos(double sp, double cp, double *sb, double *cb);
 /* Geodetic WGS84 degrees -> unit vector on the authalic sphere. */
 void dggs_geodetic_to_unit(double lat, double lng, double p[3]);
 
-/* Snyder's forward and inverse in any orientation: `centres` is (20, 3), `frames` (20, 3, 3), row-major. */
-int dggs_nearest_face(const double *centres, double px, double py, double pz);
+/* Snyder's forward and inverse in any orientation: `centres` is (20, 3), `frames` (20, 3, 3), row-major.
+ * dggs_nearest_face and dggs_sector_of, shared with IVEA, are in faces.h. */
 /* Snyder's forward inside one 120-degree sector: (rho sin Az', rho cos Az') (kernel.sector_forward). */
 void dggs_sector_forward(double sin_az, double cos_az, double sin_half_z, double *x, double *y);
 void dggs_snyder_face_forward(const double *frames, int face, double px, double py, double pz, double *x, double *y);
@@ -50,8 +51,6 @@ int dggs_proj_forward(dggs_projection proj, double px, double py, double pz, dou
 void dggs_proj_face_forward(dggs_projection proj, int face, double px, double py, double pz, double *x, double *y);
 void dggs_proj_inverse(dggs_projection proj, int face, double x, double y, double p[3]);
 
-/* 120-degree sector (planar azimuth // 120, clockwise from +y) by half-planes. */
-int dggs_sector_of(double x, double y);
 /* Planar azimuth // 60 degrees by half-planes; the centre gives 0. */
 int dggs_level1_digit(double x, double y);
 /* Level-1 digit and the point in that triangle's canonical frame (*px, *py). */

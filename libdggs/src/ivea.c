@@ -9,6 +9,7 @@
  * "The IVEA projection"). The same faces, face frames and planar triangles as Snyder's (geometry.c). */
 #include <math.h>
 
+#include "faces.h"
 #include "geometry.h"
 #include "tables.h"
 
