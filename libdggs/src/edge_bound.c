@@ -27,6 +27,13 @@
 #include "tables.h"
 
 #define EDGE_PI 3.14159265358979323846
+/* How evenly an edge must bend for the 1 / (d + 1)^2 law (edge_even): its quarter-point bulges within this
+ * fraction of the midpoint's, where a curvature varying by under ~20 % along the edge keeps every piece's bulge
+ * within DGGS_EVEN_SAFETY of the law's. */
+#define DGGS_EVEN 0.05
+#define DGGS_EVEN_SAFETY 1.5
+/* Bulges this small (m) are the points' rounding (gen_edge_bound.py's NOISE is 1e-3): not compared. */
+#define DGGS_EVEN_FLOOR 1e-6
 
 static double edge_dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -68,17 +75,24 @@ static int edge_count(double need) {
     return d >= DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : (int)d;
 }
 
-/* Bound of a piece's bulge on WGS84 from its bulge and length on the authalic sphere (unit vectors a, b, m). */
-static double edge_piece(const double a[3], const double b[3], const double m[3], double *length) {
+/* A piece's bulge on the authalic sphere, m (its point m off the great circle of its ends a, b: unit vectors), and
+ * its length into *length. */
+static double edge_raw(const double a[3], const double b[3], const double m[3], double *length) {
     const double r = DGGS_AUTHALIC_RADIUS;
     double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     double nn = sqrt(edge_dot(n, n));
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double chord = sqrt(edge_dot(d, d));
-    double len = 2.0 * r * asin(chord > 2.0 ? 1.0 : chord / 2.0);
+    *length = 2.0 * r * asin(chord > 2.0 ? 1.0 : chord / 2.0);
     double off = nn > 0.0 ? fabs(edge_dot(m, n)) / nn : 0.0;
+    return r * asin(off > 1.0 ? 1.0 : off);
+}
+
+/* edge_raw's bulge and length bounded on WGS84 (the constants of edge_bound_tables.h). */
+static double edge_piece(const double a[3], const double b[3], const double m[3], double *length) {
+    double len, raw = edge_raw(a, b, m, &len);
     *length = len * (1.0 + DGGS_LENGTH_RATIO);
-    return (1.0 + DGGS_BULGE_RATIO) * r * asin(off > 1.0 ? 1.0 : off) + DGGS_BULGE_FLOOR * len * len / r;
+    return (1.0 + DGGS_BULGE_RATIO) * raw + DGGS_BULGE_FLOOR * len * len / DGGS_AUTHALIC_RADIUS;
 }
 
 /* Whether `d` points per edge meet the tolerances, measured piece by piece: each drawn piece's bulge (its true
@@ -105,21 +119,43 @@ static bool edge_points_meet(dggs_projection proj, uint64_t cell, int d, double 
     return !(area_limit > 0.0) || lune <= area_limit;
 }
 
+/* Whether the edges bend evenly enough for the 1 / (d + 1)^2 law: the bulges at a quarter and three quarters of
+ * each edge within DGGS_EVEN of 3/4 of the midpoint's (a parabola's; a circle's arc to within its sagitta), the
+ * midpoint bulges into b[3] and the lengths into l[3]. Where the projection bends unevenly (by the icosahedron's
+ * vertices, across the sectors of Snyder's construction) they are not, and edge_points_meet decides instead. */
+static bool edge_even(dggs_projection proj, uint64_t cell, double b[3], double l[3]) {
+    double ring[24]; /* (lat, lng): corner, quarter, half, three quarters; three edges */
+    double p[12][3];
+    dggs_one_boundary(proj, cell, 3, ring, 0);
+    for (int k = 0; k < 12; k++) dggs_geodetic_to_unit(ring[2 * k], ring[2 * k + 1], p[k]);
+    bool even = true;
+    for (int i = 0; i < 3; i++) {
+        const double *a = p[4 * i], *z = p[(4 * i + 4) % 12];
+        double unused, q1 = edge_raw(a, z, p[4 * i + 1], &unused), q3 = edge_raw(a, z, p[4 * i + 3], &unused);
+        double half = edge_raw(a, z, p[4 * i + 2], &unused);
+        b[i] = edge_piece(a, z, p[4 * i + 2], &l[i]);
+        double slack = DGGS_EVEN * half + DGGS_EVEN_FLOOR;
+        if (fabs(q1 - 0.75 * half) > slack || fabs(q3 - 0.75 * half) > slack) even = false;
+    }
+    return even;
+}
+
 int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance) {
     double b[3], l[3];
-    dggs_edge_bounds_of(proj, cell, b, l);
+    bool even = edge_even(proj, cell, b, l);
     int out = 0;
     if (tolerance_m > 0.0) {
         double worst = fmax(b[0], fmax(b[1], b[2]));
-        int d = edge_count(worst / tolerance_m);
-        out = d > out ? d : out;
-    }
-    if (area_tolerance > 0.0) {
-        double lune = (2.0 / 3.0) * (b[0] * l[0] + b[1] * l[1] + b[2] * l[2]);
-        int d = edge_count(lune / (edge_cell_area(dggs_level_of(cell)) * area_tolerance));
+        int d = edge_count(DGGS_EVEN_SAFETY * worst / tolerance_m);
         out = d > out ? d : out;
     }
     double area_limit = area_tolerance > 0.0 ? edge_cell_area(dggs_level_of(cell)) * area_tolerance : 0.0;
+    if (area_limit > 0.0) {
+        double lune = (2.0 / 3.0) * (b[0] * l[0] + b[1] * l[1] + b[2] * l[2]);
+        int d = edge_count(DGGS_EVEN_SAFETY * lune / area_limit);
+        out = d > out ? d : out;
+    }
+    if (even) return out;
     while (out < DGGS_EDGE_POINTS_MAX && !edge_points_meet(proj, cell, out, tolerance_m, area_limit)) {
         int next = out + 1 + out / 4;
         out = next > DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : next;
