@@ -16,7 +16,7 @@ import shapely
 from ._checks import check_point_count
 from ._densify import EXACT
 from ._kernel import ivea_points as ki
-from ._shapes import densify_groups, ring_to_geometry, special_rings
+from ._shapes import densify_groups, ragged_geometries, ring_to_geometry, special_rings
 
 __all__ = ["boundaries", "geometries"]
 
@@ -31,6 +31,8 @@ def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False, max_points: 
 
 def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT) -> np.ndarray:
     """Shapely geometries of valid ids on IVEA (as :func:`dggs.index._shapes.geometries`)."""
+    if densify is None:
+        return ragged_geometries(ids, tolerance, max_points, ivea=True)
     out = np.empty(ids.shape[0], dtype=object)
     groups = densify_groups(ids, densify, tolerance, ivea=True)
     for rows, d in groups:

@@ -273,8 +273,49 @@ def wkb(
     return _binary_array(chunks, n), bounds, types
 
 
+def ragged_geometries(ids: np.ndarray, tolerance: Any = EXACT, max_points: int | None = None, ivea: bool = False) -> np.ndarray:
+    """Shapely geometries of valid ids, each with the points per edge ``tolerance`` needs, in one ragged build.
+
+    The core writes every closed (lng, lat) ring into one flat buffer (:func:`dggs.index._kernel.edge_bound.ragged_rings`)
+    and ``shapely.from_ragged_array`` makes the polygons in one call, whatever each cell's count; the few rings
+    at a pole or across the antimeridian are then replaced by their exact geometries, one by one.
+    """
+    from ._kernel import edge_bound
+    from ._kernel import ivea_points as ki
+
+    n = ids.shape[0]
+    if n == 0:
+        return np.empty(0, dtype=object)
+    ids = np.ascontiguousarray(ids, dtype=np.uint64)
+    counts = edge_points(ids, tolerance, ivea)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(3 * (counts + 1) + 1, out=offsets[1:])
+    check_point_count(1, int(offsets[-1]), max_points)
+    coords = np.empty((int(offsets[-1]), 2))
+    edge_bound.ragged_rings(1 if ivea else 0, ids, counts.astype(np.int32), offsets, coords)
+    # special_rings' test on the flat buffer: a longitude step over 90 degrees inside a ring, or a point near a pole
+    jump = np.zeros(coords.shape[0], dtype=bool)
+    jump[:-1] = np.abs(np.diff(coords[:, 0])) > 90.0
+    jump[offsets[1:-1] - 1] = False  # a ring's last point and the next ring's first
+    jump |= np.abs(coords[:, 1]) > 89.0
+    special = np.add.reduceat(jump, offsets[:-1]) > 0
+    out: np.ndarray = shapely.from_ragged_array(shapely.GeometryType.POLYGON, coords, (offsets, np.arange(n + 1)))
+    kernel = ki if ivea else kp
+    for i in np.flatnonzero(special).tolist():
+        d = int(counts[i])
+        buf = np.empty((3 * (d + 1) + kernel.SPECIAL_EXTRA, 2))
+        m = kernel.special_ring(ids[i], d, buf)
+        out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
+    return out
+
+
 def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT) -> np.ndarray:
-    """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call."""
+    """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call.
+
+    Without ``densify``, :func:`ragged_geometries` (each cell its own count, one build).
+    """
+    if densify is None:
+        return ragged_geometries(ids, tolerance, max_points)
     out = np.empty(ids.shape[0], dtype=object)
     for rows, d in _checked_groups(ids, densify, max_points, tolerance):
         coords = boundaries(ids[rows], d, lnglat=True)
