@@ -507,8 +507,9 @@ dggs_error dggs_cell_edge_bounds(dggs_cell cell, dggs_projection proj, double bu
 /* The fewest points per edge (dggs_cell_to_boundary's densify, at most DGGS_EDGE_POINTS_MAX) for which the
  * boundary drawn with geodesics between its points stays within tolerance_m metres of the true edge (0: no
  * distance asked) and the geodesic area of the polygon within area_tolerance of the cell's area, relative
- * (0: none asked), into *points. DGGS_E_CELL, DGGS_E_PROJECTION, DGGS_E_DOMAIN (a tolerance negative, not
- * finite, or both 0). */
+ * (0: none asked), into *points; with an area asked, rounded up to one less than a power of two (at most
+ * DGGS_EDGE_POINTS_MAX - 1), so that neighbours share the coarser one's points and their polygons tile.
+ * DGGS_E_CELL, DGGS_E_PROJECTION, DGGS_E_DOMAIN (a tolerance negative, not finite, or both 0). */
 dggs_error dggs_cell_edge_points(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
                                  int *points);
 

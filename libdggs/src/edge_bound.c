@@ -110,6 +110,15 @@ static bool edge_points_meet(dggs_projection proj, uint64_t cell, int d, double 
     return !(area_limit > 0.0) || lune <= area_limit;
 }
 
+/* For an area asked: d rounded up so that d + 1 is a power of two (at most DGGS_EDGE_POINTS_MAX - 1). Two cells
+ * drawn with different counts then share the coarser one's points on their common edge, so the union of area-exact
+ * polygons leaves no sliver wider than the coarser one's own lune (a tiling, up to the tolerance). */
+static int edge_nested(int d) {
+    int pieces = 1;
+    while (pieces < d + 1 && pieces < DGGS_EDGE_POINTS_MAX / 2 * 2) pieces *= 2;
+    return pieces - 1 > DGGS_EDGE_POINTS_MAX - 1 ? DGGS_EDGE_POINTS_MAX - 1 : pieces - 1;
+}
+
 /* Whether the edges bend evenly enough for the 1 / (d + 1)^2 law: the bulges at a quarter and three quarters of
  * each edge within DGGS_EVEN of 3/4 of the midpoint's (a parabola's; a circle's arc to within its sagitta), the
  * midpoint bulges into b[3] and the lengths into l[3]. Where the projection bends unevenly (by the icosahedron's
@@ -146,11 +155,13 @@ int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m,
         int d = edge_count(DGGS_EVEN_SAFETY * lune / area_limit);
         out = d > out ? d : out;
     }
-    if (even) return out;
-    while (out < DGGS_EDGE_POINTS_MAX && !edge_points_meet(proj, cell, out, tolerance_m, area_limit)) {
-        int next = out + 1 + out / 4;
-        out = next > DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : next;
+    if (!even) {
+        while (out < DGGS_EDGE_POINTS_MAX && !edge_points_meet(proj, cell, out, tolerance_m, area_limit)) {
+            int next = out + 1 + out / 4;
+            out = next > DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : next;
+        }
     }
+    if (area_limit > 0.0) return edge_nested(out);
     return out;
 }
 

@@ -55,7 +55,7 @@ static void test_counts(void) {
     int coarse = -1, fine = -1; /* a level-0 face needs the cap for 1e-6 of its area; a level-14 cell a few */
     CHECK(dggs_cell_edge_points(cell_at(0, 0, 0), DGGS_ISEA, 0.0, 1e-6, &coarse) == DGGS_OK);
     CHECK(dggs_cell_edge_points(cell_at(0, 14, 1), DGGS_ISEA, 0.0, 1e-6, &fine) == DGGS_OK);
-    CHECK(coarse == DGGS_EDGE_POINTS_MAX && fine < coarse);
+    CHECK(coarse == DGGS_EDGE_POINTS_MAX - 1 && fine < coarse && ((fine + 1) & fine) == 0); /* 2^k - 1 */
 }
 
 int main(void) {
