@@ -32,6 +32,8 @@
  * within DGGS_EVEN_SAFETY of the law's. */
 #define DGGS_EVEN 0.05
 #define DGGS_EVEN_SAFETY 1.5
+/* The same for the area, where the pieces' errors average out along the edge (their lunes add up). */
+#define DGGS_EVEN_AREA_SAFETY 1.1
 /* Not modelled: the boundary points' own precision (the projection's inverse; bulges of 0.02-0.3 mm measured on
  * level 24-28 edges, which are straight to far less). No count can go below it, so where 1e-6 of a cell's area is
  * under it (levels 24-28, cells under 50 m^2) "exact" asks for DGGS_EDGE_POINTS_MAX (docs/storage.md). */
@@ -111,12 +113,13 @@ static bool edge_points_meet(dggs_projection proj, uint64_t cell, int d, double 
 }
 
 /* For an area asked: d rounded up so that d + 1 is a power of two (at most DGGS_EDGE_POINTS_MAX - 1). Two cells
- * drawn with different counts then share the coarser one's points on their common edge, so the union of area-exact
- * polygons leaves no sliver wider than the coarser one's own lune (a tiling, up to the tolerance). */
-static int edge_nested(int d) {
+ * drawn with different counts then share the coarser one's points on their common edge (the finer one's pieces
+ * halve the coarser one's), so the union of area-exact polygons leaves no sliver wider than the coarser one's own
+ * lune: they tile, up to the tolerance (the overlaps fill's cover test, tests/index/test_fill_modes.py). */
+static int edge_ladder(int d) {
     int pieces = 1;
-    while (pieces < d + 1 && pieces < DGGS_EDGE_POINTS_MAX / 2 * 2) pieces *= 2;
-    return pieces - 1 > DGGS_EDGE_POINTS_MAX - 1 ? DGGS_EDGE_POINTS_MAX - 1 : pieces - 1;
+    while (pieces < d + 1 && pieces < DGGS_EDGE_POINTS_MAX) pieces *= 2;
+    return pieces - 1;
 }
 
 /* Whether the edges bend evenly enough for the 1 / (d + 1)^2 law: the bulges at a quarter and three quarters of
@@ -152,7 +155,7 @@ int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m,
     double area_limit = area_tolerance > 0.0 ? edge_cell_area(dggs_level_of(cell)) * area_tolerance : 0.0;
     if (area_limit > 0.0) {
         double lune = (2.0 / 3.0) * (b[0] * l[0] + b[1] * l[1] + b[2] * l[2]);
-        int d = edge_count(DGGS_EVEN_SAFETY * lune / area_limit);
+        int d = edge_count(DGGS_EVEN_AREA_SAFETY * lune / area_limit);
         out = d > out ? d : out;
     }
     if (!even) {
@@ -161,7 +164,7 @@ int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m,
             out = next > DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : next;
         }
     }
-    if (area_limit > 0.0) return edge_nested(out);
+    if (area_limit > 0.0) return edge_ladder(out);
     return out;
 }
 
