@@ -26,10 +26,20 @@ import numpy as np
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 
-__all__ = ["needed_densify", "AREA_TOLERANCE", "STEPS"]
+__all__ = [
+    "AREA_TOLERANCE", "DRAW_TOLERANCE", "EXACT", "STEPS", "check_tolerance", "edge_points", "edge_points_metadata",
+    "needed_densify",
+]  # fmt: skip
 
 #: The relative area error :func:`dggs.cell_to_polygon`'s default keeps within.
 AREA_TOLERANCE = 1e-6
+
+#: The exports' default ``tolerance``: metres between a drawn edge and the true one (docs/storage.md,
+#: "Files sized to need"); under a pixel of any web map that shows a cell's edges, and level-10 files near H3's size.
+DRAW_TOLERANCE = 10.0
+
+#: The ``tolerance`` that asks for :func:`dggs.cell_to_polygon`'s area-exact default instead of a distance.
+EXACT = "exact"
 
 #: The point counts used: each a power of two (and 0), the largest the cap.
 STEPS = np.array([0, 1, 2, 4, 8, 16, 32, 64, 128, 256])
@@ -79,3 +89,70 @@ def needed_densify(ids: np.ndarray, area_tolerance: float = AREA_TOLERANCE, ring
     need = (2.0 / 3.0) * (bulge * length).sum(axis=1) / (area * area_tolerance)  # (d + 1)**2 needed
     exact = np.ceil(np.sqrt(need)) - 1.0
     return STEPS[np.minimum(np.searchsorted(STEPS, exact), STEPS.size - 1)]
+
+
+def check_tolerance(tolerance: Any) -> tuple[float, float]:
+    """(metres, relative area) of a ``tolerance``: a positive number of metres, or ``"exact"``.
+
+    Raises
+    ------
+    DggsValueError
+        Anything else, named.
+
+    Examples
+    --------
+    >>> check_tolerance(10), check_tolerance("exact")
+    ((10.0, 0.0), (0.0, 1e-06))
+    """
+    from dggs.errors import DggsValueError
+
+    if isinstance(tolerance, str) and tolerance == EXACT:
+        return 0.0, AREA_TOLERANCE
+    if isinstance(tolerance, (int, float, np.integer, np.floating)) and not isinstance(tolerance, bool):
+        value = float(tolerance)
+        if np.isfinite(value) and value > 0.0:
+            return value, 0.0
+    raise DggsValueError(f"tolerance must be a positive number of metres or {EXACT!r}, not {tolerance!r}")
+
+
+def edge_points(ids: np.ndarray, tolerance: Any = EXACT, ivea: bool = False) -> np.ndarray:
+    """Points per edge each cell of ``ids`` (valid uint64 ids) needs for ``tolerance``, computed in the core.
+
+    ``tolerance`` is metres between each drawn edge (geodesics between its points) and the true edge, or
+    ``"exact"``: each polygon's geodesic area within :data:`AREA_TOLERANCE` of the cell's.  From a bound
+    on each edge's bulge (libdggs/src/edge_bound.c): no geodesic is computed; at most 256.
+
+    Examples
+    --------
+    >>> import dggs
+    >>> ids = np.asarray(dggs.latlng_to_cell([10.0], [20.0], 10, as_int=True), dtype=np.uint64)
+    >>> int(edge_points(ids, 1000.0)[0]), bool(edge_points(ids)[0] > 1)
+    (0, True)
+    """
+    from ._kernel import edge_bound
+
+    metres, area = check_tolerance(tolerance)
+    out = np.empty(ids.shape[0], dtype=np.int32)
+    if ids.shape[0]:
+        edge_bound.edge_point_counts(1 if ivea else 0, np.ascontiguousarray(ids, dtype=np.uint64), metres, area, out)
+    return out.astype(np.int64)
+
+
+def edge_points_metadata(densify: int | None, tolerance: Any) -> dict[str, Any]:
+    """How a file's polygons were drawn, for its metadata: a fixed count, a distance, or area-exact.
+
+    Examples
+    --------
+    >>> edge_points_metadata(None, 10.0)
+    {'edge_points': 'tolerance', 'tolerance_m': 10.0}
+    >>> edge_points_metadata(None, "exact")
+    {'edge_points': 'exact', 'area_tolerance': 1e-06}
+    >>> edge_points_metadata(4, 10.0)
+    {'edge_points': 'densify', 'densify': 4}
+    """
+    if densify is not None:
+        return {"edge_points": "densify", "densify": int(densify)}
+    metres, area = check_tolerance(tolerance)
+    if area:
+        return {"edge_points": EXACT, "area_tolerance": area}
+    return {"edge_points": "tolerance", "tolerance_m": metres}

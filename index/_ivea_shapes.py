@@ -3,18 +3,20 @@
 :func:`boundaries` and :func:`geometries` are :mod:`._shapes`' functions of the same names over the IVEA
 point kernels (:mod:`dggs.index._kernel.ivea_points`): ordinary rings in one ``shapely.polygons`` call, the
 few at a pole or across the antimeridian exactly, and by default the points per edge each cell's own edge
-bulge needs for 1e-6 of its area (:func:`dggs.index._densify.needed_densify` on IVEA's boundaries).
+bulge needs for 1e-6 of its area, or for a distance (:func:`dggs.index._densify.edge_points`).
 """
 
 from __future__ import annotations
+
+from typing import Any
 
 import numpy as np
 import shapely
 
 from ._checks import check_point_count
-from ._densify import needed_densify
+from ._densify import EXACT
 from ._kernel import ivea_points as ki
-from ._shapes import densify_groups, ring_to_geometry, special_rings
+from ._shapes import densify_groups, ragged_geometries, ring_to_geometry, special_rings
 
 __all__ = ["boundaries", "geometries"]
 
@@ -27,14 +29,12 @@ def boundaries(ids: np.ndarray, densify: int, lnglat: bool = False, max_points: 
     return out
 
 
-def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> np.ndarray:
+def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT) -> np.ndarray:
     """Shapely geometries of valid ids on IVEA (as :func:`dggs.index._shapes.geometries`)."""
-    out = np.empty(ids.shape[0], dtype=object)
     if densify is None:
-        need = needed_densify(ids, rings=ki.boundaries)
-        groups = [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
-    else:
-        groups = densify_groups(ids, densify)
+        return ragged_geometries(ids, tolerance, max_points, ivea=True)
+    out = np.empty(ids.shape[0], dtype=object)
+    groups = densify_groups(ids, densify, tolerance, ivea=True)
     for rows, d in groups:
         coords = boundaries(ids[rows], d, True, max_points)
         special = special_rings(coords)

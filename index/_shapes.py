@@ -25,7 +25,7 @@ from shapely.geometry import MultiPolygon, Polygon, box
 from shapely.geometry.polygon import orient
 
 from ._checks import check_densify, check_point_count
-from ._densify import needed_densify
+from ._densify import EXACT, edge_points
 from ._kernel import points as kp
 
 _POLE_TOL = 1e-9  # degrees
@@ -159,15 +159,18 @@ def ring_to_geometry(lat: np.ndarray, lng: np.ndarray) -> Polygon | MultiPolygon
     return geoms[0] if len(geoms) == 1 else MultiPolygon(geoms)
 
 
-def densify_groups(ids: np.ndarray, densify: int | None) -> list[tuple[np.ndarray, int]]:
+def densify_groups(
+    ids: np.ndarray, densify: int | None, tolerance: Any = EXACT, ivea: bool = False
+) -> list[tuple[np.ndarray, int]]:
     """(row indices, densify) per group of rows built alike: one group, or one per count cells need.
 
-    With ``densify=None`` each cell gets the points per edge that keep its
-    geodesic area within 1e-6 of the cell's (:func:`dggs.index._densify.needed_densify`).
+    With ``densify=None`` each cell gets the points per edge ``tolerance`` needs
+    (:func:`dggs.index._densify.edge_points`): by default, ``"exact"``, those that keep its
+    geodesic area within 1e-6 of the cell's.
     """
     if densify is not None:
         return [(np.arange(ids.shape[0]), check_densify(densify))]
-    need = needed_densify(ids)
+    need = edge_points(ids, tolerance, ivea)
     return [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
 
 
@@ -225,9 +228,11 @@ def _binary_array(chunks: list[tuple[np.ndarray, np.ndarray, np.ndarray]], n: in
     return arr.cast(pa.binary()) if ends[-1] < 2**31 - 1 else arr
 
 
-def _checked_groups(ids: np.ndarray, densify: int | None, max_points: int | None) -> list[tuple[np.ndarray, int]]:
+def _checked_groups(
+    ids: np.ndarray, densify: int | None, max_points: int | None, tolerance: Any = EXACT
+) -> list[tuple[np.ndarray, int]]:
     """:func:`densify_groups`, after checking the points of all groups together against ``max_points``."""
-    groups = densify_groups(ids, densify)
+    groups = densify_groups(ids, densify, tolerance)
     if groups:
         widest = max(3 * (d + 1) + 1 for _, d in groups)
         total = sum(rows.shape[0] * (3 * (d + 1) + 1) for rows, d in groups)
@@ -235,13 +240,15 @@ def _checked_groups(ids: np.ndarray, densify: int | None, max_points: int | None
     return groups
 
 
-def wkb(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> tuple[Any, np.ndarray, set[str]]:
-    """WKB of each cell, its (N, 4) bounds and the geometry types present."""
+def wkb(
+    ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT
+) -> tuple[Any, np.ndarray, set[str]]:
+    """WKB of each cell, its (N, 4) bounds and the geometry types present (``tolerance`` as :func:`densify_groups`)."""
     n = ids.shape[0]
     chunks = []
     bounds = np.empty((n, 4))
     types: set[str] = set()
-    for rows, d in _checked_groups(ids, densify, max_points):
+    for rows, d in _checked_groups(ids, densify, max_points, tolerance):
         coords = boundaries(ids[rows], d, lnglat=True)
         special = special_rings(coords)
         plain = rows[~special]
@@ -266,10 +273,51 @@ def wkb(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> 
     return _binary_array(chunks, n), bounds, types
 
 
-def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> np.ndarray:
-    """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call."""
+def ragged_geometries(ids: np.ndarray, tolerance: Any = EXACT, max_points: int | None = None, ivea: bool = False) -> np.ndarray:
+    """Shapely geometries of valid ids, each with the points per edge ``tolerance`` needs, in one ragged build.
+
+    The core writes every closed (lng, lat) ring into one flat buffer (:func:`dggs.index._kernel.edge_bound.ragged_rings`)
+    and ``shapely.from_ragged_array`` makes the polygons in one call, whatever each cell's count; the few rings
+    at a pole or across the antimeridian are then replaced by their exact geometries, one by one.
+    """
+    from ._kernel import edge_bound
+    from ._kernel import ivea_points as ki
+
+    n = ids.shape[0]
+    if n == 0:
+        return np.empty(0, dtype=object)
+    ids = np.ascontiguousarray(ids, dtype=np.uint64)
+    counts = edge_points(ids, tolerance, ivea)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(3 * (counts + 1) + 1, out=offsets[1:])
+    check_point_count(1, int(offsets[-1]), max_points)
+    coords = np.empty((int(offsets[-1]), 2))
+    edge_bound.ragged_rings(1 if ivea else 0, ids, counts.astype(np.int32), offsets, coords)
+    # special_rings' test on the flat buffer: a longitude step over 90 degrees inside a ring, or a point near a pole
+    jump = np.zeros(coords.shape[0], dtype=bool)
+    jump[:-1] = np.abs(np.diff(coords[:, 0])) > 90.0
+    jump[offsets[1:-1] - 1] = False  # a ring's last point and the next ring's first
+    jump |= np.abs(coords[:, 1]) > 89.0
+    special = np.add.reduceat(jump, offsets[:-1]) > 0
+    out: np.ndarray = shapely.from_ragged_array(shapely.GeometryType.POLYGON, coords, (offsets, np.arange(n + 1)))
+    kernel = ki if ivea else kp
+    for i in np.flatnonzero(special).tolist():
+        d = int(counts[i])
+        buf = np.empty((3 * (d + 1) + kernel.SPECIAL_EXTRA, 2))
+        m = kernel.special_ring(ids[i], d, buf)
+        out[i] = ring_to_geometry(buf[:m, 0], buf[:m, 1])
+    return out
+
+
+def geometries(ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT) -> np.ndarray:
+    """Shapely geometries of valid ids: one group per densify, ordinary rings in one ``shapely.polygons`` call.
+
+    Without ``densify``, :func:`ragged_geometries` (each cell its own count, one build).
+    """
+    if densify is None:
+        return ragged_geometries(ids, tolerance, max_points)
     out = np.empty(ids.shape[0], dtype=object)
-    for rows, d in _checked_groups(ids, densify, max_points):
+    for rows, d in _checked_groups(ids, densify, max_points, tolerance):
         coords = boundaries(ids[rows], d, lnglat=True)
         special = special_rings(coords)
         out[rows[~special]] = shapely.polygons(coords[~special])
@@ -327,13 +375,15 @@ def wkb_to_geoarrow(blobs: Any, multi: bool, interleaved: bool = False, name: st
     return pa.Array._import_from_c(out._addr(), storage)
 
 
-def geoarrow(ids: np.ndarray, densify: int | None, max_points: int | None = None) -> tuple[Any, str]:
+def geoarrow(
+    ids: np.ndarray, densify: int | None, max_points: int | None = None, tolerance: Any = EXACT
+) -> tuple[Any, str]:
     """Native GeoArrow polygons (or multipolygons where any cell is split), separated x/y.
 
     geoarrow-c reads the cells' WKB (:func:`wkb`, :func:`wkb_to_geoarrow`): 6.9 us a cell against
     20.5 us for ``shapely.to_ragged_array`` assembled into pyarrow lists (28 us against 38 us at
     densify=16), the same values and types (``benchmarks/bench_handwritten.py``).
     """
-    blobs, _, types = wkb(ids, densify, max_points)
+    blobs, _, types = wkb(ids, densify, max_points, tolerance)
     multi = "MultiPolygon" in types
     return wkb_to_geoarrow(blobs, multi), "geoarrow.multipolygon" if multi else "geoarrow.polygon"

@@ -51,12 +51,10 @@ def _shapes(projection: str) -> tuple[Any, Any, Any]:
     if projection == "ISEA":
         return kp.centres, boundaries, densify_groups
     from . import _ivea_shapes as ivea
-    from ._densify import needed_densify
     from ._kernel import ivea_points as ki
 
     def groups(ids: np.ndarray, densify: None) -> list[tuple[np.ndarray, int]]:
-        need = needed_densify(ids, rings=ki.boundaries)
-        return [(np.flatnonzero(need == n), int(n)) for n in np.unique(need).tolist()]
+        return densify_groups(ids, densify, ivea=True)
 
     return ki.centres, ivea.boundaries, groups
 

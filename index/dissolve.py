@@ -28,7 +28,7 @@ from shapely.geometry.polygon import orient
 
 from ._checks import check_densify, check_projection, check_size
 from ._convert import cells_in
-from ._densify import needed_densify
+from ._densify import EXACT, edge_points
 from ._kernel import dissolve as kd
 from ._kernel import hierarchy as kh
 from ._shapes import geometries
@@ -275,7 +275,7 @@ def cells_to_polygons(cells: Any, densify: int | None = None, *, projection: str
     ivea = check_projection(projection) == "IVEA"
     if ivea:  # the same outline, drawn through IVEA's inverse (loaded on first use)
         from . import _ivea_shapes
-        from ._kernel import ivea_edges, ivea_points
+        from ._kernel import ivea_edges
     ids = np.unique(ids)
     if ids.size == 0:
         return MultiPolygon()
@@ -289,7 +289,7 @@ def cells_to_polygons(cells: Any, densify: int | None = None, *, projection: str
     cell, col = ecell[order], ecol[order]
     if step is None:
         uniq, inv = np.unique(cell, return_inverse=True)
-        steps = (needed_densify(uniq, rings=ivea_points.boundaries if ivea else None) + 1)[inv].astype(np.int64)
+        steps = (edge_points(uniq, EXACT, ivea) + 1)[inv].astype(np.int64)  # as cell_to_polygon draws each cell
     else:
         steps = np.full(cell.shape[0], step, dtype=np.int64)
     out = np.empty((kd.ring_point_bound(steps), 2))

@@ -16,6 +16,7 @@ from shapely.geometry import mapping
 from ._checks import check_densify, check_level, check_projection, property_rows
 from ._convert import CELL as _CELL
 from ._convert import VALUE, Entry, Op, apply, apply_points, cells_in, check_points, format_int
+from ._densify import DRAW_TOLERANCE, EXACT, check_tolerance, edge_points_metadata
 from ._kernel import hierarchy as kh
 from ._kernel import points as kp
 from ._kernel import scalar as ks
@@ -160,7 +161,7 @@ def cell_to_boundary(cell: Any, densify: int = 0, max_points: int | None = None)
     return apply(_BOUNDARY, cell, check_densify(densify), False, max_points)
 
 
-def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | None = None) -> Any:
+def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | None = None, *, tolerance: Any = EXACT) -> Any:
     """A cell as a shapely Polygon in (lng, lat), split at the antimeridian.
 
     Parameters
@@ -168,10 +169,14 @@ def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | Non
     cell : str, int or array_like of ids
         Cell id(s).
     densify : int, optional
-        Points added along each curved edge.  By default enough that the
-        polygon's geodesic area on WGS84 is within 1e-6 of the cell's area.
+        Points added along each curved edge.  By default as many as ``tolerance`` needs.
     max_points : int, optional
         Refuse to build more boundary points than this in all (default 50 million).
+    tolerance : float or "exact", default "exact"
+        Without ``densify``: metres between each drawn edge (geodesics between its points) and the
+        true edge, or ``"exact"``: enough points that the polygon's geodesic area on WGS84 is within
+        1e-6 of the cell's area.  Points per edge come from a bound on each edge's bulge computed in
+        the core (no geodesic per edge).
 
     Returns
     -------
@@ -184,7 +189,8 @@ def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | Non
     InvalidCellError
         A malformed id (the message names it).
     DggsValueError
-        ``densify`` is not None or a non-negative integer, or is over the limit of points per edge.
+        ``densify`` is not None or a non-negative integer, or is over the limit of points per edge;
+        ``tolerance`` is not a positive number or ``"exact"``.
     TooManyCellsError
         Cells x boundary points over ``max_points`` (default
         :data:`dggs.index._checks.MAX_POINTS`, 50 million), checked before allocating.
@@ -194,12 +200,16 @@ def cell_to_polygon(cell: Any, densify: int | None = None, max_points: int | Non
     >>> poly = cell_to_polygon("C401")
     >>> poly.geom_type, poly.is_valid
     ('Polygon', True)
+    >>> len(cell_to_polygon("C401", tolerance=1000.0).exterior.coords) < len(poly.exterior.coords)
+    True
     """
-    return apply(_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
+    check_tolerance(tolerance)
+    return apply(_POLYGON, cell, None if densify is None else check_densify(densify), max_points, tolerance)
 
 
 def cells_to_geojson(
-    cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None, *, projection: str = "ISEA"
+    cells: Any, properties: Any = None, densify: int | None = None, max_points: int | None = None, *,
+    projection: str = "ISEA", tolerance: Any = DRAW_TOLERANCE,
 ) -> dict[str, Any]:
     """A GeoJSON FeatureCollection of cells (RFC 7946: lng/lat, CCW rings).
 
@@ -211,12 +221,15 @@ def cells_to_geojson(
         Per-cell properties (as many as cells); each feature also gets
         ``cell`` and ``level``.
     densify : int or None
-        Points added along each curved edge (default 16, light files); None
-        gives :func:`cell_to_polygon`'s area-exact default.
+        Points added along each curved edge; by default as many as ``tolerance`` needs.
     max_points : int, optional
         Refuse to build more boundary points than this in all (default 50 million).
     projection : {"ISEA", "IVEA"}
         The grid whose cells are drawn (``dggs.Grid(projection).cells_to_geojson`` passes it; docs/grid.md).
+    tolerance : float or "exact", default 10.0
+        Metres between each drawn edge and the true edge (files sized for drawing, near H3's), or
+        ``"exact"``: :func:`cell_to_polygon`'s area-exact default (geodesic areas within 1e-6).
+        The choice is written into the collection's ``"dggs"`` member.
 
     Raises
     ------
@@ -234,12 +247,16 @@ def cells_to_geojson(
     >>> fc = cells_to_geojson(["C401", "C402"], properties={"n": [1, 2]})
     >>> fc["type"], len(fc["features"]), fc["features"][1]["properties"]
     ('FeatureCollection', 2, {'cell': 'C402', 'level': 3, 'n': 2})
+    >>> fc["dggs"], cells_to_geojson(["C401"], tolerance="exact")["dggs"]["edge_points"]
+    ({'edge_points': 'tolerance', 'tolerance_m': 10.0}, 'exact')
     """
     ids, kind = cells_in(cells)
     draw = geometries
     if check_projection(projection) == "IVEA":  # IVEA's shapes floor (loaded on first use)
         from ._ivea_shapes import geometries as draw
-    polys = draw(ids, None if densify is None else check_densify(densify), max_points)
+    densify = None if densify is None else check_densify(densify)
+    drawn = edge_points_metadata(densify, tolerance)
+    polys = draw(ids, densify, max_points, tolerance)
     # RFC 7946's winding in one call (shapely >= 2.1) rather than shapely.geometry.polygon.orient one polygon
     # at a time: the same rings, faster (benchmarks/bench_handwritten.py); mapping() is most of the time
     polys = shapely.orient_polygons(polys, exterior_cw=False)
@@ -258,5 +275,6 @@ def cells_to_geojson(
                 "properties": {"cell": key, "level": level, **props},
             }
         )
-    return {"type": "FeatureCollection", "features": features}
+    # a foreign member (RFC 7946, section 6.1): how the polygons were drawn
+    return {"type": "FeatureCollection", "dggs": drawn, "features": features}
 

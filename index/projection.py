@@ -28,6 +28,7 @@ from . import _ivea_shapes as ivea_shapes
 from . import circles, dissolve, edges, grid, hierarchy, ids, lines, local, measure, paths, points, polyfill, vertex
 from ._checks import check_densify, check_level, is_choice
 from ._convert import CELL, VALUE, Op, apply, apply_points, check_points
+from ._densify import DRAW_TOLERANCE, check_tolerance
 from ._kernel import ivea_points as ki
 from .vertex import vertex_to_latlng as _vertex_to_latlng
 
@@ -150,19 +151,25 @@ class Grid:
         """Corners (and ``densify`` points an edge) as (lat, lng), counter-clockwise; see :func:`dggs.cell_to_boundary`."""
         return apply(_IVEA_BOUNDARY, cell, check_densify(densify), False, max_points)
 
-    def cell_to_polygon(self, cell: Any, densify: int | None = None, max_points: int | None = None) -> Any:
+    def cell_to_polygon(
+        self, cell: Any, densify: int | None = None, max_points: int | None = None, *, tolerance: Any = "exact"
+    ) -> Any:
         """Each cell as a shapely (lng, lat) polygon split at the antimeridian; see :func:`dggs.cell_to_polygon`.
 
         By default each cell gets the points per edge its own edges' bulge needs for a geodesic area within
-        1e-6 of the cell's, as on ISEA.
+        1e-6 of the cell's, as on ISEA; ``tolerance`` in metres asks for a distance to the true edge instead.
         """
-        return apply(_IVEA_POLYGON, cell, None if densify is None else check_densify(densify), max_points)
+        check_tolerance(tolerance)
+        return apply(_IVEA_POLYGON, cell, None if densify is None else check_densify(densify), max_points, tolerance)
 
     def cells_to_geojson(
-        self, cells: Any, properties: Any = None, densify: int | None = 16, max_points: int | None = None
+        self, cells: Any, properties: Any = None, densify: int | None = None, max_points: int | None = None,
+        *, tolerance: Any = DRAW_TOLERANCE,
     ) -> dict[str, Any]:
         """A GeoJSON FeatureCollection of the cells drawn on this grid; see :func:`dggs.cells_to_geojson`."""
-        return points.cells_to_geojson(cells, properties, densify, max_points, projection=self.projection)
+        return points.cells_to_geojson(
+            cells, properties, densify, max_points, projection=self.projection, tolerance=tolerance
+        )
 
     def cells_to_polygons(self, cells: Any, densify: int | None = None) -> Any:
         """The outline of a set of cells (the same edges on both grids, drawn on this one); see :func:`dggs.cells_to_polygons`."""

@@ -161,6 +161,14 @@ def bin_(
         click.echo(f"all of them are in table rejects of {db} (dggs info {db})", err=True)
 
 
+def _tolerance(text: str) -> float | str:
+    """--tolerance's value: 'exact', or metres (checked by the export, which names a bad one)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
 @click.command()
 @click.argument("db", type=click.Path(exists=True, dir_okay=False))
 @click.option("--level", type=int, required=True, help="Level to roll up to (the stored level or coarser).")
@@ -213,10 +221,12 @@ def query(
               help="Output format [default: from the --out extension].")
 @click.option("--geojson", "geojson", type=click.Path(dir_okay=False), default=None,
               help="GeoJSON file to write (the same as --out FILE --format geojson).")
-@click.option("--densify", type=click.IntRange(min=0), default=16, show_default=True,
-              help="Points added along each curved cell edge.")
+@click.option("--densify", type=click.IntRange(min=0), default=None,
+              help="Points added along each curved cell edge [default: as --tolerance needs].")
+@click.option("--tolerance", default="10", show_default=True,
+              help="Metres between each drawn edge and the true one, or 'exact' (geodesic areas within 1e-6).")
 def export(db: str, level: int, column: str | None, out: str | None, fmt: str | None, geojson: str | None,
-           densify: int) -> None:
+           densify: int | None, tolerance: str) -> None:
     """Write the --level cells of DB with their statistics as polygons.
 
     GeoJSON (RFC 7946), GeoParquet 1.1 (WKB geometry, bbox covering, cell
@@ -228,6 +238,7 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
       dggs export cities.db --level 5 --column population --geojson cells.geojson
       dggs export cities.db --level 5 --column population -o cells.parquet
       dggs export cities.db --level 5 --format gpkg -o cells.gpkg
+      dggs export cities.db --level 5 -o exact.parquet --tolerance exact
     """
     if geojson is not None:
         if out is not None or fmt not in (None, "geojson"):
@@ -236,7 +247,7 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
     if out is None:
         raise click.UsageError("give the file to write: --out FILE (or --geojson FILE)")
     with _open(db) as store:
-        written = store.export(out, level, column, format=fmt, densify=densify)
+        written = store.export(out, level, column, format=fmt, densify=densify, tolerance=_tolerance(tolerance))
     click.echo(f"wrote {written:,} cells to {out}")
 
 

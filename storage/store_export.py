@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
+from dggs.index._densify import DRAW_TOLERANCE, edge_points_metadata
 
 from . import queries
 from .atomic import atomic_write, refuse_store
@@ -38,12 +39,18 @@ class ExportMethods:
         column: str | None = None,
         path: str | os.PathLike[str] | None = None,
         stats: Sequence[str] | None = None,
-        densify: int | None = 16,
+        densify: int | None = None,
+        *,
+        tolerance: Any = DRAW_TOLERANCE,
     ) -> dict[str, Any]:
         """Roll up to ``level`` and return (and write) a GeoJSON FeatureCollection.
 
         One Polygon feature per non-empty cell, with properties ``cell`` and
         the stats (default count, sum, mean, min, max of ``column``).
+        ``tolerance`` (metres between each drawn edge and the true edge, default
+        10, files sized for drawing; or ``"exact"``, geodesic areas within 1e-6
+        of the cells') chooses the points per edge unless ``densify`` fixes
+        them; the choice is the collection's ``"dggs"`` member.
 
         Raises
         ------
@@ -65,20 +72,22 @@ class ExportMethods:
         if path is not None:
             refuse_store(path, self.path)
         rows = self.aggregate(level, column, queries.export_stats(column, stats), progress=False)
-        collection = self._draw_geojson(rows, densify)
+        collection = self._draw_geojson(rows, densify, tolerance)
         if path is not None:
             with atomic_write(path) as fh:
                 json.dump(collection, fh)
         return collection
 
-    def _draw_geojson(self, rows: list[dict[str, Any]], densify: int | None) -> dict[str, Any]:
+    def _draw_geojson(self, rows: list[dict[str, Any]], densify: int | None, tolerance: Any) -> dict[str, Any]:
         """The FeatureCollection of rolled-up ``rows``, drawn on the store's grid."""
         cells = [row["cell"] for row in rows]
         props = [{k: v for k, v in row.items() if k != "cell"} for row in rows]
         if self._store.projection == "ISEA":
-            collection: dict[str, Any] = dggs.cells_to_geojson(cells, properties=props, densify=densify)
+            collection: dict[str, Any] = dggs.cells_to_geojson(
+                cells, properties=props, densify=densify, tolerance=tolerance
+            )
         else:  # drawn with the grid the cells were binned on (storage/projection.py)
-            collection = _grid_geojson(self._store.projection, cells, props, densify)
+            collection = _grid_geojson(self._store.projection, cells, props, densify, tolerance)
         return collection
 
     @guarded
@@ -87,13 +96,15 @@ class ExportMethods:
         level: int,
         column: str | None = None,
         stats: Sequence[str] | None = None,
-        densify: int | None = 16,
+        densify: int | None = None,
         *,
+        tolerance: Any = DRAW_TOLERANCE,
         rows: list[dict[str, Any]] | None = None,
     ) -> Any:
         """Roll up to ``level`` and return a GeoParquet-ready pyarrow Table (needs pyarrow).
 
-        ``rows``: the roll-up, when the caller has it already (:meth:`export`).
+        ``densify`` and ``tolerance`` as :meth:`to_geojson`; the choice is the schema
+        metadata's ``dggs`` key (JSON). ``rows``: the roll-up, when the caller has it already (:meth:`export`).
 
         One row per non-empty cell: ``cell`` (string id), ``cell_id`` (int64
         id), the stats (default count, sum, mean, min, max of ``column``),
@@ -122,15 +133,16 @@ class ExportMethods:
         # An analyst exports one roll-up in several formats: the last table is remembered while the file
         # is unchanged (the roll-up memo's file state), so the second format builds no polygons again.
         conn, version, changes = state(self._store.conn)
-        key = (level, column, tuple(stats), densify)
+        key = (level, column, tuple(stats), densify, tolerance)
         last = self._last_table
         if last is not None and last[0] == (*key, conn, version, changes):
             return last[1]
         if rows is None:
             rows = self.aggregate(level, column, stats, progress=False)
-        table = cells_to_table([row["cell"] for row in rows], queries.stat_columns(rows, stats), densify)
+        cells = [row["cell"] for row in rows]
+        table = cells_to_table(cells, queries.stat_columns(rows, stats), densify, tolerance=tolerance)
         if self._store.projection != "ISEA":  # drawn with the grid the cells were binned on
-            table = _grid_geometry(table, self._store.projection, densify)
+            table = _grid_geometry(table, self._store.projection, densify, tolerance)
         # as the memo keeps it: others' commits as of before the roll-up, this connection's own changes
         # after it (a roll-up's temporary tables count as changes; nothing else writes meanwhile)
         self._last_table = ((*key, conn, version, self._store.conn.total_changes), table)
@@ -145,7 +157,8 @@ class ExportMethods:
         stats: Sequence[str] | None = None,
         *,
         format: str | None = None,
-        densify: int | None = 16,
+        densify: int | None = None,
+        tolerance: Any = DRAW_TOLERANCE,
         progress: Progress = None,
     ) -> int:
         """Roll up to ``level`` and write the cells with their stats to a file; return the cell count.
@@ -157,6 +170,13 @@ class ExportMethods:
         ``.json``, ``.parquet``, ``.geoparquet``, ``.gpkg``, ``.fgb``).  The
         file is written under a temporary name and renamed over ``path``
         when complete: an error leaves the old file (or none).
+
+        ``tolerance`` sizes the file to its use: metres between each drawn
+        edge and the true edge (default 10: files near H3's size, for
+        drawing), or ``"exact"``: each polygon's geodesic area within 1e-6 of
+        its cell's (for measuring areas in another tool); ``densify`` fixes the
+        points per edge instead.  GeoJSON and GeoParquet record the choice
+        (the ``"dggs"`` member; the ``dggs`` schema metadata key).
 
         ``progress`` shows the three steps (rolling up, drawing the cells,
         writing) on stderr with the time each takes: ``None`` (default) on a
@@ -178,8 +198,8 @@ class ExportMethods:
         >>> out = os.path.join(tempfile.mkdtemp(), "cells.geojson")
         >>> with dggs.storage.CellStore() as store:
         ...     _ = store.ingest_points([1.0, 50.0], [2.0, 60.0], 4)
-        ...     store.export(out, 1)
-        2
+        ...     store.export(out, 1), store.export(out, 1, tolerance="exact")
+        (2, 2)
         """
         from dggs.arrow.formats import export_format  # here: dggs.arrow loads the grid, which `dggs --help` must not
 
@@ -191,7 +211,7 @@ class ExportMethods:
             bar.update(1)
             bar.stage(f"exporting: drawing {len(rows):,} cells")
             if fmt == "geojson":
-                collection = self._draw_geojson(rows, densify)
+                collection = self._draw_geojson(rows, densify, tolerance)
                 bar.update(1)
                 bar.stage("exporting: writing")
                 with atomic_write(path) as fh:
@@ -200,7 +220,7 @@ class ExportMethods:
                 return len(rows)
             from dggs.arrow import write_cells
 
-            table = self.to_arrow(level, column, stats, densify, rows=rows)
+            table = self.to_arrow(level, column, stats, densify, tolerance=tolerance, rows=rows)
             bar.update(1)
             bar.stage("exporting: writing")
             write_cells(table, path, fmt)
@@ -209,22 +229,22 @@ class ExportMethods:
 
 
 def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]],
-                  densify: int | None) -> dict[str, Any]:
+                  densify: int | None, tolerance: Any) -> dict[str, Any]:
     """A FeatureCollection as :func:`dggs.cells_to_geojson` gives, the cells drawn on ``Grid(projection)``."""
     import shapely
     from shapely.geometry import mapping
 
-    polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if cells else []
+    polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify, tolerance=tolerance) if cells else []
     polys = shapely.orient_polygons(polys, exterior_cw=False) if cells else []
     features = [
         {"type": "Feature", "id": cell, "geometry": mapping(poly),
          "properties": {"cell": cell, "level": len(cell) - 1, **row}}
         for cell, poly, row in zip(cells, polys, props, strict=True)
     ]
-    return {"type": "FeatureCollection", "features": features}
+    return {"type": "FeatureCollection", "dggs": edge_points_metadata(densify, tolerance), "features": features}
 
 
-def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
+def _grid_geometry(table: Any, projection: str, densify: int | None, tolerance: Any) -> Any:
     """``table`` (of :func:`dggs.arrow.cells_to_table`) with its cells drawn on ``Grid(projection)``.
 
     Its ``geometry`` (counter-clockwise WKB), ``bbox`` (split cells -180..180, as dggs.arrow writes them)
@@ -239,7 +259,8 @@ def _grid_geometry(table: Any, projection: str, densify: int | None) -> Any:
     from dggs.arrow.geoparquet import BBOX_TYPE, covering_bounds, file_bbox, geo_metadata, widen_wrapped
 
     cells = np.asarray(table.column("cell").to_pylist(), dtype=str)
-    polys = dggs.Grid(projection).cell_to_polygon(cells, densify=densify) if len(cells) else np.empty(0, object)
+    grid = dggs.Grid(projection)
+    polys = grid.cell_to_polygon(cells, densify=densify, tolerance=tolerance) if len(cells) else np.empty(0, object)
     polys = shapely.orient_polygons(polys, exterior_cw=False)
     geometry = pa.array(shapely.to_wkb(polys, byte_order=1, output_dimension=2).tolist(), type=pa.binary())
     bounds = covering_bounds(geometry, shapely.bounds(polys).reshape(-1, 4))

@@ -62,6 +62,7 @@ from dggs.arrow.geoparquet import (
 from dggs.errors import DggsValueError
 from dggs.index._checks import check_densify
 from dggs.index._convert import cells_in
+from dggs.index._densify import DRAW_TOLERANCE, edge_points_metadata
 from dggs.index._shapes import geoarrow, wkb
 from dggs.index.ids import int_to_str
 
@@ -189,7 +190,9 @@ def _bbox_array(bounds: np.ndarray) -> pa.StructArray:
     return pa.StructArray.from_arrays([pa.array(bounds[:, i]) for i in range(4)], fields=list(BBOX_TYPE))
 
 
-def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densify: int | None = 16) -> pa.Table:
+def cells_to_table(
+    cells: Any, properties: Mapping[str, Any] | Any = None, densify: int | None = None, *, tolerance: Any = DRAW_TOLERANCE
+) -> pa.Table:
     """A GeoParquet 1.1 table of cells: ids, properties, ``bbox`` covering and WKB ``geometry``.
 
     Parameters
@@ -198,8 +201,12 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
         One row per id, in order.
     properties : dict of columns, pyarrow Table or pandas DataFrame, optional
         Extra columns, one value per cell (placed after the ids).
-    densify : int or None, default 16
-        Points per curved edge (as :func:`dggs.cells_to_geojson`).
+    densify : int or None
+        Points per curved edge; by default as many as ``tolerance`` needs (as :func:`dggs.cells_to_geojson`).
+    tolerance : float or "exact", default 10.0
+        Metres between each drawn edge and the true edge, or ``"exact"`` for geodesic areas within 1e-6
+        of the cells' (:func:`dggs.cell_to_polygon`'s default).  Written into the schema metadata's
+        ``dggs`` key (JSON) beside ``geo``.
 
     Returns
     -------
@@ -219,13 +226,16 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
     >>> t = cells_to_table(["C401", "C402"], {"n": [1, 2]})
     >>> t.num_rows, t.column("cell_id").type
     (2, DataType(int64))
+    >>> json.loads(t.schema.metadata[b"dggs"])
+    {'edge_points': 'tolerance', 'tolerance_m': 10.0}
     """
     if densify is not None:
         densify = check_densify(densify)
+    drawn = edge_points_metadata(densify, tolerance)
     ids, _ = cells_in(cells)
     ids = ids.reshape(-1)
     n = ids.shape[0]
-    geometry, bounds, types = wkb(ids, densify)
+    geometry, bounds, types = wkb(ids, densify, None, tolerance)
     columns: dict[str, Any] = {
         "cell": pa.array(int_to_str(ids) if n else np.empty(0, dtype=str), type=pa.string()),
         "cell_id": pa.array(ids.astype(np.int64), type=pa.int64()),
@@ -245,7 +255,7 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
                 raise DggsValueError(f"property {name!r} has {len(arr)} values for {n} cells")
             columns[name] = arr
     bounds = covering_bounds(geometry, bounds)  # RFC 7946 §5: xmin > xmax across the antimeridian
-    columns["bbox"] = _bbox_array(widen_wrapped(bounds))  # ... and -180..180 in the rows (dggs._geoparquet)
+    columns["bbox"] = _bbox_array(widen_wrapped(bounds))  # ... and -180..180 in the rows (dggs.arrow.geoparquet)
     columns["geometry"] = geometry
     table = pa.table(columns)
     fields = [table.schema.field(i) for i in range(table.num_columns)]
@@ -255,7 +265,7 @@ def cells_to_table(cells: Any, properties: Mapping[str, Any] | Any = None, densi
     # Tagged as GeoArrow too (geoarrow.wkb with the CRS as PROJJSON), so GeoDataFrame.from_arrow, DuckDB
     # and lonboard find the geometry in the table itself, not only in a file's "geo" metadata.
     fields[-1] = pa.field("geometry", geometry.type, nullable=False, metadata=_geoarrow_metadata("geoarrow.wkb"))
-    meta = {b"geo": json.dumps(geo_metadata(types, file_bbox(bounds))).encode()}
+    meta = {b"geo": json.dumps(geo_metadata(types, file_bbox(bounds))).encode(), b"dggs": json.dumps(drawn).encode()}
     return table.cast(pa.schema(fields, metadata=meta))
 
 

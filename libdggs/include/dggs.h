@@ -564,6 +564,31 @@ dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *
 
 /* ---- end pixels ---- */
 
+
+
+/* ---- points per edge (edge_bound.c) ------------------------------------------------------------ */
+
+/* Most points per edge dggs_cell_edge_points asks for. */
+#define DGGS_EDGE_POINTS_MAX 256
+
+/* Bounds, in metres on WGS84, of each edge's bulge (the distance of the true edge, straight on the face plane,
+ * from the geodesic of its two corners, at its middle) into bulge_m[3], and of its length into length_m[3]; edge
+ * i runs from corner i to corner i + 1 of dggs_cell_to_boundary. From the edge's midpoint on the authalic sphere,
+ * no geodesic computed (the bound's constants were measured against a geodesic library: edge_bound.c).
+ * DGGS_E_CELL, DGGS_E_PROJECTION. */
+dggs_error dggs_cell_edge_bounds(dggs_cell cell, dggs_projection proj, double bulge_m[3], double length_m[3]);
+
+/* The fewest points per edge (dggs_cell_to_boundary's densify, at most DGGS_EDGE_POINTS_MAX) for which the
+ * boundary drawn with geodesics between its points stays within tolerance_m metres of the true edge (0: no
+ * distance asked) and the geodesic area of the polygon within area_tolerance of the cell's area, relative
+ * (0: none asked), into *points; with an area asked, rounded up to one less than a power of two (at most
+ * DGGS_EDGE_POINTS_MAX - 1), so that neighbours share the coarser one's points and their polygons tile.
+ * DGGS_E_CELL, DGGS_E_PROJECTION, DGGS_E_DOMAIN (a tolerance negative, not finite, or both 0). */
+dggs_error dggs_cell_edge_points(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
+                                 int *points);
+
+/* ---- end points per edge ---- */
+
 #ifdef __cplusplus
 }
 #endif

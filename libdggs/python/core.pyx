@@ -9,7 +9,7 @@ Each part of the grid is one ``.pxi`` file beside this one, included here; the m
 """
 
 from cython.parallel cimport prange
-from libc.stdint cimport int64_t, uint8_t, uint32_t, uint64_t
+from libc.stdint cimport int32_t, int64_t, uint8_t, uint32_t, uint64_t
 
 #: Smallest amount of work (items) that runs on several threads.
 cdef Py_ssize_t PARALLEL_MIN_C = 8192
@@ -67,3 +67,4 @@ include "edges.pxi"
 include "pixels.pxi"
 include "vertex.pxi"
 include "lone.pxi"
+include "edge_bound.pxi"

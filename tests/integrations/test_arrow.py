@@ -93,7 +93,7 @@ def test_bad_arguments():
 
 
 def test_table_columns_bbox_and_geo_metadata():
-    table = cells_to_table(LEVEL3, {"n": np.arange(len(LEVEL3))})
+    table = cells_to_table(LEVEL3, {"n": np.arange(len(LEVEL3))}, 16)
     assert table.column_names == ["cell", "cell_id", "n", "bbox", "geometry"]
     assert table.column("cell").to_pylist() == list(LEVEL3)
     assert table.column("cell_id").type == pa.int64()

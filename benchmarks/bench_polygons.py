@@ -1,0 +1,77 @@
+"""Polygons for export against H3: time a cell (ours by tolerance vs h3ronpy WKB + shapely.from_wkb) and file bytes.
+
+    python benchmarks/bench_polygons.py [n]
+
+Cases interleaved (ours, H3's, ours, ...), best of 3 CPU times on one core; GeoParquet (zstd) and GeoJSON bytes of
+~n level-10 cells and of H3 res-6 cells (similar size) over the same points; load average and commit printed.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+
+def cpu(f):
+    best = float("inf")
+    for _ in range(3):
+        t = time.process_time()
+        f()
+        best = min(best, time.process_time() - t)
+    return best
+
+
+def main(n: int = 40_000) -> None:
+    os.environ.setdefault("DGGS_THREADS", "1")
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+    import shapely
+    from h3ronpy import cells_to_string
+    from h3ronpy.vector import cells_to_wkb_polygons, coordinates_to_cells
+
+    import dggs
+    from dggs.arrow import cells_to_table
+
+    rng = np.random.default_rng(0)
+    lat = np.degrees(np.arcsin(rng.uniform(-1, 1, n * 3)))
+    lng = rng.uniform(-180, 180, n * 3)
+    ours = np.unique(np.asarray(dggs.latlng_to_cell(lat, lng, 10, as_int=True), dtype=np.uint64))[:n]
+    theirs = np.unique(np.asarray(coordinates_to_cells(lat, lng, 6)))[:n]
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    print(f"commit {commit}, load average {os.getloadavg()}, {ours.size} level-10 cells, {theirs.size} H3 res-6 cells")
+    h3_time = cpu(lambda: shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False)))
+    for tol in (10.0, 1.0, "exact"):
+        t = cpu(lambda tol=tol: dggs.cell_to_polygon(ours, tolerance=tol))
+        h3_time = min(h3_time, cpu(lambda: shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False))))
+        coords = np.mean([len(p.exterior.coords) for p in dggs.cell_to_polygon(ours[:5000], tolerance=tol) if p.geom_type == "Polygon"])
+        print(f"cell_to_polygon tolerance={tol!r}: {1e6 * t / ours.size:.2f} us a cell, {coords:.1f} coordinates a ring; "
+              f"h3ronpy WKB + from_wkb {1e6 * h3_time / theirs.size:.2f} us a cell; ratio (H3 / ours) {h3_time / theirs.size / (t / ours.size):.2f}x")
+    with tempfile.TemporaryDirectory() as tmp:
+        hpoly = shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False))
+        names = cells_to_string(pa.array(theirs)).to_pylist()
+        h3_table = pa.table({"cell": names, "geometry": shapely.to_wkb(hpoly)})
+        pq.write_table(h3_table, f"{tmp}/h3.parquet", compression="zstd")
+        h3_json = {"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": shapely.geometry.mapping(p), "properties": {"cell": c}}
+            for c, p in zip(names, hpoly, strict=True)]}
+        with open(f"{tmp}/h3.geojson", "w") as fh:
+            json.dump(h3_json, fh)
+        hp, hj = os.path.getsize(f"{tmp}/h3.parquet"), os.path.getsize(f"{tmp}/h3.geojson")
+        print(f"H3: GeoParquet {hp / 1e6:.2f} MB, GeoJSON {hj / 1e6:.2f} MB")
+        for tol in (10.0, 1.0, "exact"):
+            t = cells_to_table(ours, tolerance=tol).select(["cell", "geometry"])
+            pq.write_table(t, f"{tmp}/o.parquet", compression="zstd")
+            with open(f"{tmp}/o.geojson", "w") as fh:
+                json.dump(dggs.cells_to_geojson(ours, tolerance=tol), fh)
+            op, oj = os.path.getsize(f"{tmp}/o.parquet"), os.path.getsize(f"{tmp}/o.geojson")
+            print(f"ours tolerance={tol!r}: GeoParquet {op / 1e6:.2f} MB ({op / hp:.2f}x H3's), GeoJSON {oj / 1e6:.2f} MB ({oj / hj:.2f}x)")
+
+
+if __name__ == "__main__":
+    main(*(int(a) for a in sys.argv[1:]))

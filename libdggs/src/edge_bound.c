@@ -1,0 +1,187 @@
+/* Points per edge: how many points each edge of a cell needs, from a bound on its bulge, with no geodesic call.
+ *
+ * A cell's edge is straight on the face plane and curved on the globe. Drawn through d evenly spaced points
+ * joined by geodesics (what pyproj.Geod and every GIS measure), it leaves each piece a bulge that shrinks as
+ * 1 / (d + 1)^2 (halving a smooth arc quarters its sagitta), so one number per edge, the bulge b of the edge
+ * against the geodesic of its corners, sets every d: (d + 1)^2 >= b / tolerance for a distance, and, since
+ * each piece's lune is at most 2/3 of its bulge times its length (a parabolic segment), (d + 1)^2 >=
+ * (2/3) sum(b L) / (A area_tolerance) for the cell's area A (opposite bulges not allowed to cancel).
+ *
+ * b is measured on the authalic sphere the grid is drawn on: the distance of the edge's true midpoint from the
+ * great circle through its corners (a dot product), which is exact arithmetic on points the kernel computes
+ * anyway. On WGS84 the geodesic is not the image of that great circle; the difference is bounded by
+ *   b_WGS84 <= (1 + DGGS_BULGE_RATIO) b_sphere + DGGS_BULGE_FLOOR L^2 / R
+ * (for bulges over 1 mm: below, the rounding of the points themselves, ~1e-6 m, is what any measurement sees)
+ * with the constants measured against pyproj.Geod on every cell of levels 0-8 and random cells of levels 9-28 of
+ * both projections by libdggs/tools/gen_edge_bound.py (which writes them) and rechecked by
+ * tests/index/test_edge_bound.py. */
+#include "edge_bound.h"
+
+#include <math.h>
+#include <stdbool.h>
+
+#include "bits.h"
+#include "edge_bound_tables.h"
+#include "geometry.h"
+#include "points.h"
+#include "tables.h"
+
+#define EDGE_PI 3.14159265358979323846
+/* How evenly an edge must bend for the 1 / (d + 1)^2 law (edge_even): its quarter-point bulges within this
+ * fraction of the midpoint's, where a curvature varying by under ~20 % along the edge keeps every piece's bulge
+ * within DGGS_EVEN_SAFETY of the law's. */
+#define DGGS_EVEN 0.05
+#define DGGS_EVEN_SAFETY 1.5
+/* The same for the area, where the pieces' errors average out along the edge (their lunes add up). */
+#define DGGS_EVEN_AREA_SAFETY 1.1
+/* Not modelled: the boundary points' own precision (the projection's inverse; bulges of 0.02-0.3 mm measured on
+ * level 24-28 edges, which are straight to far less). No count can go below it, so where 1e-6 of a cell's area is
+ * under it (levels 24-28, cells under 50 m^2) "exact" asks for DGGS_EDGE_POINTS_MAX (docs/storage.md). */
+/* Bulges this small (m) are the points' rounding (gen_edge_bound.py's NOISE is 1e-3): not compared. */
+#define DGGS_EVEN_FLOOR 1e-6
+
+static double edge_dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Cell area on the authalic sphere, m^2 (the WGS84 ellipsoid's over the level's cell count). */
+static double edge_cell_area(int level) {
+    double n = 20.0;
+    if (level >= 1) n = 120.0 * pow(3.0, (double)(level - 1));
+    return 4.0 * EDGE_PI * DGGS_AUTHALIC_RADIUS * DGGS_AUTHALIC_RADIUS / n;
+}
+
+/* The least d >= 0 with (d + 1)^2 >= need, capped at DGGS_EDGE_POINTS_MAX. */
+static int edge_count(double need) {
+    if (!(need > 1.0)) return 0;
+    double d = ceil(sqrt(need)) - 1.0;
+    while ((d + 1.0) * (d + 1.0) < need) d += 1.0; /* sqrt's rounding */
+    return d >= DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : (int)d;
+}
+
+/* A piece's bulge on the authalic sphere, m (its point m off the great circle of its ends a, b: unit vectors), and
+ * its length into *length. */
+static double edge_raw(const double a[3], const double b[3], const double m[3], double *length) {
+    const double r = DGGS_AUTHALIC_RADIUS;
+    double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    double nn = sqrt(edge_dot(n, n));
+    double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double chord = sqrt(edge_dot(d, d));
+    *length = 2.0 * r * asin(chord > 2.0 ? 1.0 : chord / 2.0);
+    double off = nn > 0.0 ? fabs(edge_dot(m, n)) / nn : 0.0;
+    return r * asin(off > 1.0 ? 1.0 : off);
+}
+
+/* edge_raw's bulge and length bounded on WGS84 (the constants of edge_bound_tables.h). */
+static double edge_piece(const double a[3], const double b[3], const double m[3], double *length) {
+    double len, raw = edge_raw(a, b, m, &len);
+    *length = len * (1.0 + DGGS_LENGTH_RATIO);
+    return (1.0 + DGGS_BULGE_RATIO) * raw + DGGS_BULGE_FLOOR * len * len / DGGS_AUTHALIC_RADIUS;
+}
+
+void dggs_edge_bounds_of(dggs_projection proj, uint64_t cell, double bulge_m[3], double length_m[3]) {
+    double ring[12]; /* (lat, lng): corner, midpoint, corner, midpoint, corner, midpoint */
+    double c[3][3], m[3][3];
+    dggs_one_boundary(proj, cell, 1, ring, 0);
+    for (int i = 0; i < 3; i++) {
+        dggs_geodetic_to_unit(ring[4 * i], ring[4 * i + 1], c[i]);
+        dggs_geodetic_to_unit(ring[4 * i + 2], ring[4 * i + 3], m[i]);
+    }
+    for (int i = 0; i < 3; i++) bulge_m[i] = edge_piece(c[i], c[(i + 1) % 3], m[i], &length_m[i]);
+}
+
+/* Whether `d` points per edge meet the tolerances, measured piece by piece: each drawn piece's bulge (its true
+ * midpoint off the great circle of its ends) bounded as the whole edge's is. Where the projection bends unevenly
+ * (by the icosahedron's vertices) the 1 / (d + 1)^2 law of the first guess errs, and this decides. */
+static bool edge_points_meet(dggs_projection proj, uint64_t cell, int d, double tolerance_m, double area_limit) {
+    double ring[2 * 3 * (2 * DGGS_EDGE_POINTS_MAX + 2)];
+    int per = 2 * d + 2, rows = 3 * per;
+    dggs_one_boundary(proj, cell, 2 * d + 1, ring, 0);
+    double lune = 0.0, first[3], a[3], m[3], b[3];
+    dggs_geodetic_to_unit(ring[0], ring[1], first);
+    a[0] = first[0], a[1] = first[1], a[2] = first[2];
+    for (int k = 1; k < rows; k += 2) {
+        dggs_geodetic_to_unit(ring[2 * k], ring[2 * k + 1], m);
+        if (k + 1 < rows)
+            dggs_geodetic_to_unit(ring[2 * (k + 1)], ring[2 * (k + 1) + 1], b);
+        else
+            b[0] = first[0], b[1] = first[1], b[2] = first[2];
+        double len, bulge = edge_piece(a, b, m, &len);
+        if (tolerance_m > 0.0 && bulge > tolerance_m) return false;
+        lune += (2.0 / 3.0) * bulge * len;
+        a[0] = b[0], a[1] = b[1], a[2] = b[2];
+    }
+    return !(area_limit > 0.0) || lune <= area_limit;
+}
+
+/* For an area asked: d rounded up so that d + 1 is a power of two (at most DGGS_EDGE_POINTS_MAX - 1). Two cells
+ * drawn with different counts then share the coarser one's points on their common edge (the finer one's pieces
+ * halve the coarser one's), so the union of area-exact polygons leaves no sliver wider than the coarser one's own
+ * lune: they tile, up to the tolerance (the overlaps fill's cover test, tests/index/test_fill_modes.py). */
+static int edge_ladder(int d) {
+    int pieces = 1;
+    while (pieces < d + 1 && pieces < DGGS_EDGE_POINTS_MAX) pieces *= 2;
+    return pieces - 1;
+}
+
+/* Whether the edges bend evenly enough for the 1 / (d + 1)^2 law: the bulges at a quarter and three quarters of
+ * each edge within DGGS_EVEN of 3/4 of the midpoint's (a parabola's; a circle's arc to within its sagitta), the
+ * midpoint bulges into b[3] and the lengths into l[3]. Where the projection bends unevenly (by the icosahedron's
+ * vertices, across the sectors of Snyder's construction) they are not, and edge_points_meet decides instead. */
+static bool edge_even(dggs_projection proj, uint64_t cell, double b[3], double l[3]) {
+    double ring[24]; /* (lat, lng): corner, quarter, half, three quarters; three edges */
+    double p[12][3];
+    dggs_one_boundary(proj, cell, 3, ring, 0);
+    for (int k = 0; k < 12; k++) dggs_geodetic_to_unit(ring[2 * k], ring[2 * k + 1], p[k]);
+    bool even = true;
+    for (int i = 0; i < 3; i++) {
+        const double *a = p[4 * i], *z = p[(4 * i + 4) % 12];
+        double unused, q1 = edge_raw(a, z, p[4 * i + 1], &unused), q3 = edge_raw(a, z, p[4 * i + 3], &unused);
+        double half = edge_raw(a, z, p[4 * i + 2], &unused);
+        b[i] = edge_piece(a, z, p[4 * i + 2], &l[i]);
+        double slack = DGGS_EVEN * half + DGGS_EVEN_FLOOR;
+        if (fabs(q1 - 0.75 * half) > slack || fabs(q3 - 0.75 * half) > slack) even = false;
+    }
+    return even;
+}
+
+int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance) {
+    double b[3], l[3];
+    bool even = edge_even(proj, cell, b, l);
+    int out = 0;
+    if (tolerance_m > 0.0) {
+        double worst = fmax(b[0], fmax(b[1], b[2]));
+        int d = edge_count(DGGS_EVEN_SAFETY * worst / tolerance_m);
+        out = d > out ? d : out;
+    }
+    double area_limit = area_tolerance > 0.0 ? edge_cell_area(dggs_level_of(cell)) * area_tolerance : 0.0;
+    if (area_limit > 0.0) {
+        double lune = (2.0 / 3.0) * (b[0] * l[0] + b[1] * l[1] + b[2] * l[2]);
+        int d = edge_count(DGGS_EVEN_AREA_SAFETY * lune / area_limit);
+        out = d > out ? d : out;
+    }
+    if (!even) {
+        while (out < DGGS_EDGE_POINTS_MAX && !edge_points_meet(proj, cell, out, tolerance_m, area_limit)) {
+            int next = out + 1 + out / 4;
+            out = next > DGGS_EDGE_POINTS_MAX ? DGGS_EDGE_POINTS_MAX : next;
+        }
+    }
+    if (area_limit > 0.0) return edge_ladder(out);
+    return out;
+}
+
+dggs_error dggs_cell_edge_bounds(dggs_cell cell, dggs_projection proj, double bulge_m[3], double length_m[3]) {
+    if (!dggs_is_valid(cell)) return DGGS_E_CELL;
+    if (proj != DGGS_ISEA && proj != DGGS_IVEA) return DGGS_E_PROJECTION;
+    dggs_edge_bounds_of(proj, cell, bulge_m, length_m);
+    return DGGS_OK;
+}
+
+dggs_error dggs_cell_edge_points(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
+                                 int *points) {
+    if (!dggs_is_valid(cell)) return DGGS_E_CELL;
+    if (proj != DGGS_ISEA && proj != DGGS_IVEA) return DGGS_E_PROJECTION;
+    if (!(tolerance_m >= 0.0) || !(area_tolerance >= 0.0) || isinf(tolerance_m) || isinf(area_tolerance) ||
+        (tolerance_m == 0.0 && area_tolerance == 0.0))
+        return DGGS_E_DOMAIN;
+    *points = dggs_edge_points_of(proj, cell, tolerance_m, area_tolerance);
+    return DGGS_OK;
+}
