@@ -285,6 +285,21 @@ static void arc_pass(const double *ux, const double *uy, const double *uz, const
     }
 }
 
+/* Drops the pieces the corrections left with no area (a sliver whose correction was larger than it, folded into
+ * its pixel's largest piece above): a pixel's pieces are the cells it shares a positive area with (docs/raster.md),
+ * and the pixels' sums are unchanged. */
+static void drop_empty_pieces(dggs_pieces *out) {
+    int64_t kept = 0;
+    for (int64_t i = 0; i < out->n; i++) {
+        if (!(out->area[i] > 0.0)) continue;
+        out->pixel[kept] = out->pixel[i];
+        out->cell[kept] = out->cell[i];
+        out->area[kept] = out->area[i];
+        kept++;
+    }
+    out->n = kept;
+}
+
 /* The scratch sizes of grid_pieces (numba's np.empty calls): ring points m = 4 k, `most` with the kinks'
  * crossings, `width` of a clipped polygon, `levels` of descend's stack. */
 static void work_dims(int64_t k, int target, int64_t *m, int64_t *most, int64_t *width, int64_t *levels) {
@@ -435,8 +450,11 @@ dggs_error dggs_grid_pieces_arcs(const double *hlat, const double *hlng, int64_t
     }
     *resume = rows * cols;
     *need = out->n;
-    if (arcs && k >= 2 && k % 2 == 0)
+    if (arcs && k >= 2 && k % 2 == 0) {
         arc_pass(ux, uy, uz, fx, fy, regions, cells, k, valid, rows, cols, hcols, hsize, vcols, ring, out);
+        drop_empty_pieces(out);
+        *need = out->n;
+    }
     return DGGS_OK;
 }
 
