@@ -83,9 +83,14 @@ def _children(ids: np.ndarray, level: int, max_cells: int) -> np.ndarray:
 
 
 def _center_children(ids: np.ndarray, level: int) -> np.ndarray:
+    if level < 0:  # one level down from each cell (a level-28 cell is its own centre child)
+        out = np.empty(ids.shape[0], dtype=np.uint64)
+        levels = np.asarray(kh.levels(ids))
+        for lv in np.unique(levels):
+            rows = levels == lv
+            out[rows] = _center_children(np.ascontiguousarray(ids[rows]), min(int(lv) + 1, MAX_LEVEL))
+        return out
     lo, hi = kh.level_bounds(ids)
-    if level < 0:
-        level = min(hi + 1, MAX_LEVEL) if ids.size else 1
     if ids.size and hi > level:
         i = int(np.argmax(kh.levels(ids)))
         raise _level_error(ids, i, f"child level {level} is coarser than cell {{cell!r}} at level {{level}}")

@@ -208,3 +208,19 @@ def test_block_composed_corners_equal_midpoint_construction():
     kern = kernel_corners(mixed)
     scale = np.linalg.norm(tri[:, 0] - tri[:, 1], axis=1)
     assert (np.abs(kern - tri).max(axis=(1, 2)) / scale).max() < 1e-7
+
+
+@given(st.lists(cells(max_level=dggs.MAX_LEVEL), min_size=1, max_size=6), st.booleans())
+def test_center_child_of_many_cells_goes_one_level_down_from_each(many, as_int):
+    """The default level is each cell's own level + 1 (a level-28 cell is its own), in a container as alone: a list
+    of cells of mixed levels went one level below the deepest of them."""
+    ids = dggs.str_to_int(many) if as_int else many
+    got = dggs.cell_to_center_child(ids)
+    got = dggs.int_to_str(got) if as_int else got
+    want = [dggs.cell_to_center_child(c, min(dggs.get_level(c) + 1, dggs.MAX_LEVEL)) for c in many]
+    assert list(got) == want
+    assert all(dggs.get_level(g) == min(dggs.get_level(c) + 1, dggs.MAX_LEVEL) for g, c in zip(got, many, strict=True))
+
+
+def test_center_child_of_mixed_levels_pinned():
+    assert dggs.cell_to_center_child(["C401", "A0000000000"]) == ["C4011", "A00000000001"]
