@@ -77,7 +77,6 @@ def run_dggs(n: int, folder: Path) -> dict[str, Any]:
 
     def imports() -> Any:
         _timed(parts, "import: numpy, pandas, pyarrow", lambda: __import__("pandas") and __import__("pyarrow"))
-        _timed(parts, "import: numba", lambda: __import__("numba"))
         def own() -> Any:
             import dggs
             import dggs.pandas  # noqa: F401 - the accessor
@@ -85,7 +84,7 @@ def run_dggs(n: int, folder: Path) -> dict[str, Any]:
 
             return dggs, CellStore
 
-        dggs, cell_store = _timed(parts, "import: dggs, dggs.pandas, dggs.storage (loads the compiled kernels)", own)
+        dggs, cell_store = _timed(parts, "import: dggs, dggs.pandas, dggs.storage (loads the compiled core)", own)
         _timed(parts, "import: first call", lambda: dggs.latlng_to_cell(0.0, 0.0, 17))
         return dggs, cell_store
 
