@@ -227,7 +227,9 @@ def item(ctx: Context, request: Request, cid: str, feature_id: str, properties: 
     level = dggs.get_level(feature_id)
     with ctx.reader.snapshot():
         summary = ctx.reader.summary()
-        if summary.level is None or level > summary.level:
+        if summary.level is None:
+            raise NotFound(f"no feature {feature_id!r}: the store holds no rows")
+        if level > summary.level:
             raise NotFound(f"no feature {feature_id!r}: zone level {level} is finer than the stored level "
                            f"{summary.level}")
         counted = ctx.reader.rollup(feature_id, level, None, ("count",))

@@ -98,6 +98,7 @@ def collection(ctx: Context, request: Request) -> Collection:
         "description": (
             f"{summary.count} points binned into level-{summary.level} zones"
             f"{'' if not summary.columns else ' with values ' + ', '.join(summary.columns)}."
+            if summary.level is not None else "An empty store: no points binned yet."
         ),
         "extent": {"spatial": {"bbox": [bbox], "crs": CRS84}},
         "crs": [CRS84],
