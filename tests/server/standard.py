@@ -84,16 +84,21 @@ def corrected() -> dict[str, Any]:
     return doc
 
 
-def oas30_validate(schema: dict[str, Any], document: Any, doc: dict[str, Any] | None = None) -> None:
-    """Validate ``document`` against an OpenAPI 3.0 schema of the standard ($refs resolved in ``doc``)."""
-    from openapi_schema_validator import OAS30Validator
+def oas30_validate(schema: dict[str, Any], document: Any, doc: dict[str, Any] | None = None, *,
+                  formats: bool = False) -> None:
+    """Validate ``document`` against an OpenAPI 3.0 schema of the standard ($refs resolved in ``doc``).
+
+    ``formats`` also checks the schema's ``format`` (``date-time``, ...) with the OpenAPI 3.0 format checker.
+    """
+    from openapi_schema_validator import OAS30Validator, oas30_format_checker
     from referencing import Registry, Resource
     from referencing.jsonschema import DRAFT4
 
     root = doc if doc is not None else corrected()
     registry: Registry[Any] = Registry().with_resource("urn:standard", Resource(root, DRAFT4))
     text = json.dumps(schema).replace('"#/components/', '"urn:standard#/components/')
-    OAS30Validator(json.loads(text), registry=registry).validate(document)
+    checker = oas30_format_checker if formats else None
+    OAS30Validator(json.loads(text), registry=registry, format_checker=checker).validate(document)
 
 
 def _component(name: str) -> Any:
