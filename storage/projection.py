@@ -30,28 +30,10 @@ from typing import Any
 
 from dggs.errors import DggsValueError, StorageError
 
-__all__ = ["DEFAULT_PROJECTION", "ProjectionMethods", "check_projection", "grid_locate", "recorded", "settle"]
+__all__ = ["DEFAULT_PROJECTION", "check_projection", "grid_locate", "recorded", "settle"]
 
 #: The projection of a store that records none (all stores before ``meta.projection`` existed).
 DEFAULT_PROJECTION = "ISEA"
-
-
-class ProjectionMethods:
-    """``projection`` and ``grid`` of :class:`~dggs.storage.CellStore` (a mixin)."""
-
-    _store: Any  # the Connection, provided by CellStore
-
-    @property
-    def projection(self) -> str:
-        """The projection the cells were binned with, ``"ISEA"`` or ``"IVEA"`` (``meta.projection``)."""
-        return str(self._store.projection)
-
-    @property
-    def grid(self) -> Any:
-        """The :class:`dggs.Grid` of the stored cells (locates points, draws and queries cells)."""
-        import dggs
-
-        return dggs.Grid(self._store.projection)
 
 
 def check_projection(projection: Any) -> str:

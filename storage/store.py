@@ -1,10 +1,12 @@
 """`CellStore`: points binned into equal-area cells, in one SQLite file.
 
-A thin facade: the connection and its transactions live in
-:mod:`~dggs.storage.connection`, ingest in :mod:`~dggs.storage.inputs` and
-:mod:`~dggs.storage.ingest`, queries in :mod:`~dggs.storage.queries`.
-Every public method turns raw SQLite and operating-system errors into a
-:class:`dggs.StorageError` naming the file (:func:`~dggs.storage.connection.guarded`).
+A thin facade over collaborators it owns, each made in ``__init__`` over the open
+file (:class:`~dggs.storage.connection.Connection`) and testable alone: the
+:class:`~dggs.storage.querier.Querier`, :class:`~dggs.storage.ingester.Ingester`,
+:class:`~dggs.storage.raster_ingester.RasterIngester`, :class:`~dggs.storage.exporter.Exporter`
+and :class:`~dggs.storage.rollup_keeper.RollupKeeper`.  Their public methods here delegate in one
+line with the collaborator's docstring (:func:`_documented_by`).  Every public method turns raw
+SQLite and OS errors into a :class:`dggs.StorageError` naming the file (:func:`~dggs.storage.connection.guarded`).
 
 Examples
 --------
@@ -22,28 +24,44 @@ from __future__ import annotations
 
 import os
 import sqlite3
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import dggs
 from dggs.errors import DggsValueError
 
-from . import queries, rollup_query
 from .connection import DEFAULT_LEVEL, Connection, guarded
-from .ingest import MERGE_ROWS
-from .progress import Bar, Progress
-from .projection import ProjectionMethods, settle
+from .exporter import DRAW_TOLERANCE, Exporter
+from .ingest import MERGE_ROWS, IngestResult
+from .ingester import Ingester, Values
+from .ingester import Progress as IngestProgress
+from .progress import Progress
+from .projection import settle
+from .querier import Querier
 from .queries import STATS
+from .raster_ingester import RasterIngester
+from .rollup_keeper import RollupKeeper
 from .sources import delete_source, list_rejects, list_sources
-from .store_export import ExportMethods
-from .store_ingest import IngestMethods
-from .store_raster import RasterMethods
-from .store_rollups import RollupMethods
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .raster_ingest import RasterIngestResult
 
 __all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
+F = TypeVar("F", bound=Callable[..., Any])
 
-class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, ProjectionMethods):
+
+def _documented_by(method: Any) -> Callable[[F], F]:
+    """Give the decorated public method the docstring (examples included) of ``method``, the one doing the work."""
+
+    def give(face: F) -> F:
+        face.__doc__ = method.__doc__
+        return face
+
+    return give
+
+
+class CellStore:
     """Points binned into cells at one level, stored in SQLite.
 
     Parameters
@@ -109,6 +127,11 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         except BaseException:
             self._store.close()
             raise
+        self._querier = Querier(self._store)
+        self._ingester = Ingester(self._store, merge_rows)
+        self._raster_ingester = RasterIngester(self._store)
+        self._exporter = Exporter(self._store)
+        self._rollup_keeper = RollupKeeper(self._store)
 
     @property
     def conn(self) -> sqlite3.Connection:
@@ -119,8 +142,6 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
     def db(self) -> Any:
         """The store as a :class:`sqlite_utils.Database`, for ad-hoc queries (``store.db.query(sql)``)."""
         return self._store.db
-
-    # -- life cycle ---------------------------------------------------------
 
     def close(self) -> None:
         """Close the connection (the store is unusable afterwards)."""
@@ -135,7 +156,15 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
     def __repr__(self) -> str:
         return f"<CellStore {self.path} level={self.level}>"
 
-    # -- metadata -----------------------------------------------------------
+    @property
+    def projection(self) -> str:
+        """The projection the cells were binned with, ``"ISEA"`` or ``"IVEA"`` (``meta.projection``)."""
+        return str(self._store.projection)
+
+    @property
+    def grid(self) -> Any:
+        """The :class:`dggs.Grid` of the stored cells (locates points, draws and queries cells)."""
+        return dggs.Grid(self._store.projection)
 
     @property
     @guarded
@@ -197,171 +226,34 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
         """
         self._store.check()
 
-    # -- queries ------------------------------------------------------------
+    @_documented_by(Querier.count)
+    def count(self, cell: Any = None) -> int:  # noqa: D102
+        return self._querier.count(cell)
 
-    @guarded
-    def count(self, cell: Any = None) -> int:
-        """Count stored rows, all of them or those in ``cell`` (at any level).
+    @_documented_by(Querier.get)
+    def get(self, cell: Any) -> list[dict[str, Any]]:  # noqa: D102
+        return self._querier.get(cell)
 
-        Raises
-        ------
-        InvalidCellError, LevelMismatchError
-            For a bad cell or one finer than the stored level.
+    @_documented_by(Querier.descendants)
+    def descendants(self, cell: Any) -> list[dict[str, Any]]:  # noqa: D102
+        return self._querier.descendants(cell)
 
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0, 1.0], [2.0, 2.0], 3)
-        ...     store.count(), store.count(dggs.latlng_to_cell(1.0, 2.0, 0))
-        (2, 2)
-        """
-        return queries.count(self._store, cell)
-
-    @guarded
-    def get(self, cell: Any) -> list[dict[str, Any]]:
-        """Return the rows stored in one cell at the stored level.
-
-        Raises
-        ------
-        LevelMismatchError
-            If ``cell`` is not at the stored level (see :meth:`descendants`).
-
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0], [2.0], 3, {"v": [7]})
-        ...     [row["v"] for row in store.get(dggs.latlng_to_cell(1.0, 2.0, 3))]
-        [7]
-        """
-        return queries.get(self._store, cell)
-
-    @guarded
-    def descendants(self, cell: Any) -> list[dict[str, Any]]:
-        """Return the rows in ``cell`` and all its descendants, in id order.
-
-        A range scan on the cell index (``cell >= c AND cell < c || '~'``).
-
-        Raises
-        ------
-        InvalidCellError, LevelMismatchError
-            For a bad cell or one finer than the stored level.
-
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0, -40.0], [2.0, 100.0], 3)
-        ...     len(store.descendants(dggs.latlng_to_cell(1.0, 2.0, 1)))
-        1
-        """
-        return queries.descendants(self._store, cell)
-
-    @guarded
-    def aggregate(
-        self,
-        level: int,
-        column: str | None = None,
-        stats: Sequence[str] = ("count", "sum", "mean", "min", "max"),
+    @_documented_by(Querier.aggregate)
+    def aggregate(  # noqa: D102
+        self, level: int, column: str | None = None, stats: Sequence[str] = ("count", "sum", "mean", "min", "max"),
         *, cell: Any = None, order_by: str | None = None, descending: bool = True, limit: int | None = None,
         as_table: bool = False, progress: Progress = None,
     ) -> Any:
-        """Roll stored rows up to ``level`` (the stored level or coarser).
+        return self._querier.aggregate(level, column, stats, cell=cell, order_by=order_by, descending=descending,
+                                       limit=limit, as_table=as_table, progress=progress)
 
-        Exact as SQL gives it, but a REAL sum is the correctly rounded sum (``math.fsum``'s), a mean that
-        over the non-NULL count; read from kept roll-ups or columns (:mod:`dggs.storage.rollup_query`).
+    @_documented_by(Querier.within)
+    def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:  # noqa: D102
+        return self._querier.within(polygon, level)
 
-        Parameters
-        ----------
-        level : int
-            Target level, ``0..store.level``.
-        column : str, optional
-            Value column for sum/mean/min/max; without it only ``count``.
-        stats : sequence of str
-            Any of ``count`` (rows), ``sum``, ``mean``, ``min``, ``max``
-            (NULLs ignored, as SQL does).
-        cell : str, optional
-            Only roll up rows under this cell.
-        order_by, descending, limit : str, bool, int, optional
-            A stat to sort by (default the cell id), largest first (default); at most ``limit`` cells.
-        as_table : bool, default False
-            Columns (a pyarrow Table) instead of dicts: cheaper.
-        progress : bool or callable, optional
-            Its running time on stderr, as :mod:`dggs.storage.progress` says (default: on a terminal after 2 s).
-
-        Returns
-        -------
-        list of dict or pyarrow.Table
-            ``{"cell": id, "count": n, "sum": ..., ...}`` per non-empty cell, or as columns
-            (``count`` int64, ``mean`` float64, the others the column's type).
-
-        Raises
-        ------
-        LevelMismatchError
-            If ``level`` is finer than the stored level.
-        DggsValueError
-            An unknown column or stat, sum/mean of a text column, a non-bool ``descending``/``as_table``.
-
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0, 1.1, -40.0], [2.0, 2.1, 100.0], 6,
-        ...                             {"pop": [5, 7, 1]})
-        ...     top = store.aggregate(1, "pop", ("count", "sum"), order_by="sum", limit=1)
-        ...     top[0]["count"], top[0]["sum"]
-        (2, 12)
-        """
-        with Bar(progress, unit="", desc=f"rolling up to level {level}") as bar, bar.heartbeat():
-            return rollup_query.aggregate(self._store, level, column, stats, cell, order_by, descending, limit, as_table)
-
-    @guarded
-    def within(self, polygon: Any, level: int) -> list[dict[str, Any]]:
-        """Return rows in the cells at ``level`` whose centres lie in ``polygon``.
-
-        The polygon (shapely, lng/lat) is covered with cells by
-        :func:`dggs.polygon_to_cells`; a finer ``level`` follows its outline
-        more closely.
-
-        Raises
-        ------
-        LevelError, LevelMismatchError
-            If ``level`` is out of range or finer than the stored level.
-        DggsValueError
-            If ``polygon`` is not a shapely (Multi)Polygon.
-
-        Examples
-        --------
-        >>> from shapely.geometry import box
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0, 50.0], [2.0, 60.0], 5)
-        ...     [round(r["lat"]) for r in store.within(box(-10, -10, 10, 10), 3)]
-        [1]
-        """
-        queries.check_query_level(self._store, level)
-        cells = self.grid.polygon_to_cells(polygon, level)
-        return queries.rows_under(self._store, list(cells), level)
-
-    @guarded
-    def disk(self, cell: Any, k: int) -> list[dict[str, Any]]:
-        """Return rows in the cells within ``k`` steps of ``cell`` (:func:`dggs.grid_disk`).
-
-        Raises
-        ------
-        InvalidCellError
-            If ``cell`` is not one valid cell id.
-        LevelMismatchError
-            If ``cell`` is finer than the stored level.
-        DggsValueError
-            If ``k`` is not a whole number >= 0.
-
-        Examples
-        --------
-        >>> with CellStore() as store:
-        ...     _ = store.ingest_points([1.0], [2.0], 5)
-        ...     len(store.disk(dggs.latlng_to_cell(1.0, 2.0, 5), 1))
-        1
-        """
-        cell = queries.one_cell(cell)
-        (level,) = queries.check_cells(self._store, [cell])
-        return queries.rows_under(self._store, list(dggs.grid_disk(cell, k)), level)
+    @_documented_by(Querier.disk)
+    def disk(self, cell: Any, k: int) -> list[dict[str, Any]]:  # noqa: D102
+        return self._querier.disk(cell, k)
 
     @guarded
     def info(self) -> dict[str, Any]:
@@ -398,3 +290,111 @@ class CellStore(IngestMethods, RasterMethods, ExportMethods, RollupMethods, Proj
             "rejects": int(self.conn.execute("SELECT count(*) FROM rejects").fetchone()[0]),
             "size_bytes": size,
         }
+
+
+    @_documented_by(Ingester.ingest)
+    def ingest(self, source: Any, **kwargs: Any) -> IngestResult:  # noqa: D102
+        return self._ingester.ingest(source, **kwargs)
+
+    @_documented_by(Ingester.ingest_csv)
+    def ingest_csv(  # noqa: D102
+        self, path: str | os.PathLike[str], lat: str = "lat", lng: str = "lng", values: Values = (),
+        level: int | None = None, *, crs: Any = None, batch_size: int = 10_000, on_error: str = "fail",
+        replace: bool = False, delimiter: str = ",", encoding: str = "utf-8", progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_csv(path, lat, lng, values, level, crs=crs, batch_size=batch_size,
+                                         on_error=on_error, replace=replace, delimiter=delimiter, encoding=encoding,
+                                         progress=progress)
+
+    @_documented_by(Ingester.ingest_geojson)
+    def ingest_geojson(  # noqa: D102
+        self, path: str | os.PathLike[str], values: Values | None = None, level: int | None = None, *,
+        batch_size: int = 10_000, on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_geojson(path, values, level, batch_size=batch_size, on_error=on_error,
+                                             replace=replace, progress=progress)
+
+    @_documented_by(Ingester.ingest_vector)
+    def ingest_vector(  # noqa: D102
+        self, path: str | os.PathLike[str], layer: str | int | None = None, values: Values | None = None,
+        level: int | None = None, *, crs: Any = None, batch_size: int = 10_000, on_error: str = "fail",
+        replace: bool = False, progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_vector(path, layer, values, level, crs=crs, batch_size=batch_size,
+                                            on_error=on_error, replace=replace, progress=progress)
+
+    @_documented_by(Ingester.ingest_records)
+    def ingest_records(  # noqa: D102
+        self, records: Iterable[Mapping[str, Any]], lat: str = "lat", lng: str = "lng", values: Values = (),
+        level: int | None = None, *, source: str | None = None, crs: Any = None, batch_size: int = 10_000,
+        on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_records(records, lat, lng, values, level, source=source, crs=crs,
+                                             batch_size=batch_size, on_error=on_error, replace=replace,
+                                             progress=progress)
+
+    @_documented_by(Ingester.ingest_points)
+    def ingest_points(  # noqa: D102
+        self, lat: Any, lng: Any, level: int | None = None, values: Mapping[str, Any] | None = None, *,
+        types: Mapping[str, Any] | None = None, source: str | None = None, crs: Any = None,
+        batch_size: int = 100_000, on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_points(lat, lng, level, values, types=types, source=source, crs=crs,
+                                            batch_size=batch_size, on_error=on_error, replace=replace,
+                                            progress=progress)
+
+    @_documented_by(Ingester.ingest_dataframe)
+    def ingest_dataframe(  # noqa: D102
+        self, df: Any, lat: str = "lat", lng: str = "lng", values: Values | None = None, level: int | None = None,
+        *, types: Mapping[str, Any] | None = None, source: str | None = None, crs: Any = None,
+        batch_size: int = 100_000, on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+    ) -> IngestResult:
+        return self._ingester.ingest_dataframe(df, lat, lng, values, level, types=types, source=source, crs=crs,
+                                               batch_size=batch_size, on_error=on_error, replace=replace,
+                                               progress=progress)
+
+    @_documented_by(Ingester.merge)
+    def merge(self) -> None:  # noqa: D102
+        self._ingester.merge()
+
+    @_documented_by(RasterIngester.ingest_raster)
+    def ingest_raster(  # noqa: D102
+        self, source: Any, level: int | None = None, *, mode: str = "mean", band: int | list[int] | None = None,
+        nodata: Any = None, window: Any = None, density: bool = False, block_size: int = 512, replace: bool = False,
+        progress: bool | Callable[[int], Any] | None = None,
+    ) -> RasterIngestResult:
+        return self._raster_ingester.ingest_raster(source, level, mode=mode, band=band, nodata=nodata, window=window,
+                                                   density=density, block_size=block_size, replace=replace,
+                                                   progress=progress)
+
+    @property
+    @_documented_by(RollupKeeper.rollup_levels)
+    def rollup_levels(self) -> tuple[int, ...]:  # noqa: D102
+        return self._rollup_keeper.rollup_levels
+
+    @_documented_by(RollupKeeper.keep_rollups)
+    def keep_rollups(self, levels: int | Iterable[int]) -> tuple[int, ...]:  # noqa: D102
+        return self._rollup_keeper.keep_rollups(levels)
+
+    @_documented_by(Exporter.to_geojson)
+    def to_geojson(  # noqa: D102
+        self, level: int, column: str | None = None, path: str | os.PathLike[str] | None = None,
+        stats: Sequence[str] | None = None, densify: int | None = None, *, tolerance: Any = DRAW_TOLERANCE,
+    ) -> dict[str, Any]:
+        return self._exporter.to_geojson(level, column, path, stats, densify, tolerance=tolerance)
+
+    @_documented_by(Exporter.to_arrow)
+    def to_arrow(  # noqa: D102
+        self, level: int, column: str | None = None, stats: Sequence[str] | None = None, densify: int | None = None,
+        *, tolerance: Any = DRAW_TOLERANCE, rows: list[dict[str, Any]] | None = None,
+    ) -> Any:
+        return self._exporter.to_arrow(level, column, stats, densify, tolerance=tolerance, rows=rows)
+
+    @_documented_by(Exporter.export)
+    def export(  # noqa: D102
+        self, path: str | os.PathLike[str], level: int, column: str | None = None, stats: Sequence[str] | None = None,
+        *, format: str | None = None, densify: int | None = None, tolerance: Any = DRAW_TOLERANCE,
+        progress: Progress = None,
+    ) -> int:
+        return self._exporter.export(path, level, column, stats, format=format, densify=densify, tolerance=tolerance,
+                                     progress=progress)

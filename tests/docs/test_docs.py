@@ -30,7 +30,7 @@ MODULES = [
     "dggs.index.lines",
     "dggs.index._convert.apply",
     "dggs.index._kernel.scalar",
-    "dggs.storage.store_export",
+    "dggs.storage.exporter",
     "dggs.arrow.formats",
 ]
 try:  # the optional arrow extra
@@ -50,7 +50,7 @@ try:  # the optional raster extra
 
     MODULES += ["dggs.raster", "dggs.raster.blocks", "dggs.raster.frames", "dggs.raster.burn", "dggs.raster.parquet",
                 "dggs.raster.grid", "dggs.raster.pieces", "dggs.raster.center", "dggs.index._pixels", "dggs.storage.raster_ingest",
-                "dggs.storage.store_raster"]
+                "dggs.storage.raster_ingester"]
 except ImportError:
     pass
 

@@ -88,3 +88,11 @@ def test_cli_export_tolerance(points_db, tmp_path):
     assert json.loads(pq.read_schema(out).metadata[b"dggs"])["edge_points"] == "exact"
     result = CliRunner().invoke(main, ["export", str(points_db), "--level", "5", "-o", str(out), "--tolerance", "huge"])
     assert result.exit_code != 0 and "huge" in result.output
+
+
+def test_the_stores_default_tolerance_is_the_grids():
+    """storage writes the default down so that opening a store loads no grid; it must be the grid's."""
+    from dggs.index._densify import DRAW_TOLERANCE
+    from dggs.storage import exporter
+
+    assert exporter.DRAW_TOLERANCE == DRAW_TOLERANCE

@@ -335,12 +335,3 @@ def test_import_stays_cheap():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
-
-
-def test_storage_modules_are_small():
-    from pathlib import Path
-
-    import dggs.storage
-
-    for path in Path(dggs.storage.__file__).parent.glob("*.py"):
-        assert len(path.read_text().splitlines()) <= 400, path.name

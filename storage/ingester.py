@@ -1,38 +1,32 @@
-"""The ingest methods of :class:`~dggs.storage.CellStore` (a mixin).
+"""The :class:`Ingester`: rows of every kind of input into one store (``CellStore`` delegates ``ingest*``, ``merge``).
 
-Each method builds one :class:`~dggs.storage.ingest.IngestOptions` (checked
-before the store is touched) and hands it to :mod:`dggs.storage.inputs`.
+Each method builds one :class:`~dggs.storage.ingest.IngestOptions` (checked before the store is touched) and hands
+it to :mod:`dggs.storage.inputs`.  The docstrings are the public methods' (``CellStore`` shows them), with examples.
 """
 
 from __future__ import annotations
 
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from . import inputs, readers
-from .connection import guarded
-from .ingest import IngestOptions, IngestResult
+from .connection import Connection, guarded
+from .ingest import MERGE_ROWS, IngestOptions, IngestResult
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .connection import Connection
-
-__all__ = ["IngestMethods"]
+__all__ = ["Ingester"]
 
 Progress = Callable[[int], Any] | bool
 Values = Sequence[str] | Mapping[str, Any]
 
 
-class IngestMethods:
-    """The ingest methods of :class:`CellStore`.
+class Ingester:
+    """Ingests into ``store`` (a :class:`~dggs.storage.connection.Connection`), merging past ``merge_rows`` pending."""
 
-    ``ingest``, ``ingest_csv``, ``ingest_geojson``, ``ingest_records``,
-    ``ingest_points``, ``ingest_dataframe`` and ``merge``.
-    """
-
-    _store: Connection
-    merge_rows: int
-    path: str
+    def __init__(self, store: Connection, merge_rows: int = MERGE_ROWS) -> None:
+        self._store = store
+        self.path, self.timeout = store.path, store.timeout  # named by the errors of guarded
+        self.merge_rows = merge_rows
 
     def ingest(self, source: Any, **kwargs: Any) -> IngestResult:
         """Ingest a file path (CSV, GeoJSON, GeoPackage...), DataFrame or iterable of dicts.

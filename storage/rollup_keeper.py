@@ -1,7 +1,8 @@
-"""Kept roll-ups on :class:`~dggs.storage.store.CellStore`: ``keep_rollups`` and ``rollup_levels``.
+"""The :class:`RollupKeeper`: which roll-ups a store keeps current, ``keep_rollups`` and ``rollup_levels``.
 
-A mixin, so that ``store.py`` stays a short facade; the table and its
-rules are in :mod:`dggs.storage.rollup_keep`.
+:class:`~dggs.storage.CellStore` owns one and delegates to it; the table and
+its rules are in :mod:`dggs.storage.rollup_keep`.  The docstrings are the
+public methods' (``CellStore`` shows them), examples included.
 """
 
 from __future__ import annotations
@@ -13,13 +14,15 @@ from dggs.errors import StorageError
 from .connection import Connection, guarded
 from .rollup_keep import check_levels, keep, kept_levels
 
-__all__ = ["RollupMethods"]
+__all__ = ["RollupKeeper"]
 
 
-class RollupMethods:
-    """``keep_rollups`` and ``rollup_levels`` (mixed into CellStore)."""
+class RollupKeeper:
+    """``keep_rollups`` and ``rollup_levels`` of one open store (:class:`~dggs.storage.connection.Connection`)."""
 
-    _store: Connection  # provided by CellStore
+    def __init__(self, store: Connection) -> None:
+        self._store = store
+        self.path, self.timeout = store.path, store.timeout  # named by the errors of guarded
 
     @property
     @guarded

@@ -1,23 +1,29 @@
-"""The raster ingest of :class:`~dggs.storage.CellStore` (a mixin): :meth:`RasterMethods.ingest_raster`."""
+"""The :class:`RasterIngester`: a raster binned into one store, a block a transaction.
+
+:class:`~dggs.storage.CellStore` owns one and delegates ``ingest_raster`` to
+it; the work is :func:`dggs.storage.raster_ingest.ingest_raster`'s.  The
+docstring is the public method's (``CellStore`` shows it), example included.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from .connection import guarded
+from .connection import Connection, guarded
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .connection import Connection
     from .raster_ingest import RasterIngestResult
 
-__all__ = ["RasterMethods"]
+__all__ = ["RasterIngester"]
 
 
-class RasterMethods:
-    """``ingest_raster``: a raster binned into the store, a block a transaction (needs the extra ``raster``)."""
+class RasterIngester:
+    """``ingest_raster`` into one open store (:class:`~dggs.storage.connection.Connection`; extra ``raster``)."""
 
-    _store: Connection
+    def __init__(self, store: Connection) -> None:
+        self._store = store
+        self.path, self.timeout = store.path, store.timeout  # named by the errors of guarded
 
     @guarded
     def ingest_raster(

@@ -1,8 +1,10 @@
-"""The output methods of :class:`~dggs.storage.store.CellStore`: GeoJSON, Arrow and files.
+"""The :class:`Exporter`: a store's roll-ups as GeoJSON, Arrow and files.
 
-A mixin, so that ``store.py`` stays a short facade; every method rolls the
-store up with :meth:`CellStore.aggregate` and writes whole files only
-(a temporary name renamed over the target).
+:class:`~dggs.storage.CellStore` owns one and delegates ``to_geojson``,
+``to_arrow`` and ``export`` to it.  Every method rolls the store up as
+:meth:`CellStore.aggregate` does (:func:`dggs.storage.rollup_query.aggregate`)
+and writes whole files only (a temporary name renamed over the target).  The
+docstrings are the public methods' (``CellStore`` shows them), examples included.
 """
 
 from __future__ import annotations
@@ -13,24 +15,36 @@ from collections.abc import Sequence
 from typing import Any
 
 import dggs
-from dggs.index._densify import DRAW_TOLERANCE, edge_points_metadata
 
-from . import queries
+from . import queries, rollup_query
 from .atomic import atomic_write, refuse_store
 from .connection import Connection, guarded
 from .progress import Bar, Progress
 from .rollup_memo import state
 
-__all__ = ["ExportMethods"]
+#: The exports' default ``tolerance``, metres between each drawn edge and the true edge: the grid's drawing
+#: tolerance (``dggs.index._densify.DRAW_TOLERANCE``, equal by test), written here so that opening a store
+#: loads no grid (``dggs --help`` must start without it).
+DRAW_TOLERANCE = 10.0
+
+__all__ = ["Exporter"]
 
 
-class ExportMethods:
-    """``to_geojson``, ``to_arrow`` and ``export`` (mixed into CellStore)."""
+class Exporter:
+    """``to_geojson``, ``to_arrow`` and ``export`` of one open store (:class:`~dggs.storage.connection.Connection`).
 
-    aggregate: Any  # provided by CellStore
-    path: str  # provided by CellStore
-    _store: Connection  # provided by CellStore
-    _last_table: tuple[tuple, Any] | None = None  # the last to_arrow table and what it was built from
+    It remembers the last ``to_arrow`` table and the file state it was built from.
+    """
+
+    def __init__(self, store: Connection) -> None:
+        self._store = store
+        self.path, self.timeout = store.path, store.timeout  # named by the errors of guarded
+        self._last_table: tuple[tuple, Any] | None = None  # the last to_arrow table and what it was built from
+
+    def _rollup(self, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
+        """The rows of ``store.aggregate(level, column, stats, progress=False)``."""
+        rows: list[dict[str, Any]] = rollup_query.aggregate(self._store, level, column, stats, None, None, True, None)
+        return rows
 
     @guarded
     def to_geojson(
@@ -71,7 +85,7 @@ class ExportMethods:
         """
         if path is not None:
             refuse_store(path, self.path)
-        rows = self.aggregate(level, column, queries.export_stats(column, stats), progress=False)
+        rows = self._rollup(level, column, queries.export_stats(column, stats))
         collection = self._draw_geojson(rows, densify, tolerance)
         if path is not None:
             with atomic_write(path) as fh:
@@ -138,7 +152,7 @@ class ExportMethods:
         if last is not None and last[0] == (*key, conn, version, changes):
             return last[1]
         if rows is None:
-            rows = self.aggregate(level, column, stats, progress=False)
+            rows = self._rollup(level, column, stats)
         cells = [row["cell"] for row in rows]
         table = cells_to_table(cells, queries.stat_columns(rows, stats), densify, tolerance=tolerance)
         if self._store.projection != "ISEA":  # drawn with the grid the cells were binned on
@@ -207,7 +221,7 @@ class ExportMethods:
         refuse_store(path, self.path)
         with Bar(progress, total=3, unit="steps", desc="exporting: rolling up") as bar, bar.heartbeat():
             stats = queries.export_stats(column, stats)
-            rows = self.aggregate(level, column, stats, progress=False)
+            rows = self._rollup(level, column, stats)
             bar.update(1)
             bar.stage(f"exporting: drawing {len(rows):,} cells")
             if fmt == "geojson":
@@ -241,6 +255,8 @@ def _grid_geojson(projection: str, cells: list[str], props: list[dict[str, Any]]
          "properties": {"cell": cell, "level": len(cell) - 1, **row}}
         for cell, poly, row in zip(cells, polys, props, strict=True)
     ]
+    from dggs.index._densify import edge_points_metadata
+
     return {"type": "FeatureCollection", "dggs": edge_points_metadata(densify, tolerance), "features": features}
 
 
