@@ -304,7 +304,7 @@ class StoreReader:
             polys = np.empty(len(missing), dtype=object)
             for level in np.unique(levels):
                 sel = np.flatnonzero(levels == level)
-                polys[sel] = self.grid.cell_to_polygon(arr[sel], tolerance=10.0)
+                polys[sel] = self.grid.cell_to_polygon(arr[sel], densify=map_densify(int(level)))
             polys = shapely.transform(polys, lambda xy: np.round(xy, 6))
             texts = shapely.to_geojson(polys)
             with self._lock:

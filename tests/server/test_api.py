@@ -6,7 +6,6 @@ import doctest
 import importlib
 import json
 import re
-import socket
 import subprocess
 import sys
 import time
@@ -29,6 +28,7 @@ from dggs.storage import CellStore
 
 from .conftest import DGGRS, LEVEL, make_client
 from .map_contract import validate_map
+from .serving import free_port
 from .standard import conforms, requires_standard, validate
 
 ROOT = f"/dggs/{DGGRS}"
@@ -530,17 +530,12 @@ def test_a_busy_store_is_rolled_up_at_most_once_per_refresh(store_copy, monkeypa
 # -- a real process -----------------------------------------------------------------
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
 
 def test_dggs_serve_runs_as_a_real_server(store_path, tmp_path):
     exe = Path(sys.executable).parent / "dggs"
     if not exe.exists():
         pytest.skip("the dggs script is not installed next to this Python")
-    port = _free_port()
+    port = free_port()
     proc = subprocess.Popen([str(exe), "serve", str(store_path), "--port", str(port)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:

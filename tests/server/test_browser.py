@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import os
-import socket
 import subprocess
 import sys
 import time
@@ -55,6 +54,8 @@ from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
 from selenium.webdriver.support.ui import Select, WebDriverWait  # noqa: E402
 
+from .serving import free_port  # noqa: E402
+
 
 # --- Fixtures ---------------------------------------------------------------------------------------
 def _cluster(rng: np.random.Generator, n: int, centre: tuple[float, float], sd: tuple[float, float],
@@ -90,11 +91,6 @@ def data(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
     return {"path": path, "lat": lat, "lng": lng, "pop": pop}
 
 
-def _free_port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
 
 def _serve_command(store: Path, port: int) -> list[str]:
     exe = Path(sys.executable).parent / "dggs"
@@ -111,7 +107,7 @@ def _get_json(url: str, timeout: float = 5.0) -> Any:
 
 @pytest.fixture(scope="module")
 def server(data: dict[str, Any], tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
-    port = _free_port()
+    port = free_port()
     log = (tmp_path_factory.mktemp("serve-log") / "serve.log").open("w+")
     proc = subprocess.Popen(_serve_command(data["path"], port), stdout=log, stderr=subprocess.STDOUT)
     base = f"http://127.0.0.1:{port}"
@@ -668,7 +664,7 @@ def test_the_standalone_page_of_docs_js_draws_cells_from_ids(page: Any, data: di
     folder = tmp_path / "static"
     shutil.copytree(STATIC_FOLDER, folder)
     (folder / "cells.html").write_text(html.group(1))
-    port = _free_port()
+    port = free_port()
     srv = uvicorn.Server(uvicorn.Config(create_app(data["path"], static=folder), host="127.0.0.1", port=port,
                                         log_level="warning"))
     thread = threading.Thread(target=srv.run, daemon=True)

@@ -10,7 +10,6 @@ from __future__ import annotations
 import json
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import time
@@ -25,17 +24,13 @@ from dggs.server.reader import StoreReader
 from dggs.storage import CellStore
 
 from .conftest import DGGRS, LEVEL, make_client
+from .serving import free_port
 from .standard import conforms
 
 EXE = Path(sys.executable).parent / "dggs"
 ROUTES = ["/collections", "/collections/sample", f"/dggs/{DGGRS}/zones?zone-level=1",
           f"/dggs/{DGGRS}/zones/C4/data?zone-depth=1", "/map/layers", f"/map/cells?level={LEVEL}"]
 
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def _get(url: str, method: str = "GET") -> tuple[int, str, bytes]:
@@ -55,7 +50,7 @@ def served(tmp_path, store_path) -> Iterator[tuple[str, Path, subprocess.Popen[s
         pytest.skip("the dggs script is not installed next to this Python")
     path = tmp_path / "sample.db"
     shutil.copy(store_path, path)
-    port = _free_port()
+    port = free_port()
     proc = subprocess.Popen([str(EXE), "serve", str(path), "--port", str(port)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     url = f"http://127.0.0.1:{port}"

@@ -9,15 +9,8 @@ test store (``dggs.latlng_to_cell`` and numpy group-bys), and expected bbox resu
 
 from __future__ import annotations
 
-import contextlib
 import json
-import socket
-import subprocess
-import sys
-import time
 import urllib.request
-from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -33,39 +26,13 @@ from tests.server.conftest import LEVEL
 from tests.server.test_api import brute_force_bbox
 from tests.strategies import examples
 
+from .serving import serving
+
 COLLECTION = "sample"  # the stem of conftest's sample.db
 FEATURES_CORE = "http://www.opengis.net/spec/ogcapi-features-1/1.0/conf/core"
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
-
-@contextlib.contextmanager
-def serving(store: Path) -> Iterator[str]:
-    """``dggs serve store`` as a process on a free port of 127.0.0.1: yields its base URL."""
-    exe = Path(sys.executable).parent / "dggs"
-    assert exe.exists(), f"the dggs script is not installed next to {sys.executable}"
-    port = _free_port()
-    proc = subprocess.Popen([str(exe), "serve", str(store), "--port", str(port)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    base = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                with urllib.request.urlopen(base + "/conformance", timeout=5):
-                    break
-            except OSError as exc:
-                if proc.poll() is not None or time.monotonic() > deadline:
-                    raise AssertionError(f"dggs serve did not answer: {proc.stderr.read() if proc.stderr else ''}") from exc
-                time.sleep(0.2)
-        yield base
-    finally:
-        proc.terminate()
-        proc.communicate(timeout=30)
 
 
 @pytest.fixture(scope="module")

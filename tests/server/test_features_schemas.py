@@ -29,8 +29,9 @@ from jsonschema import ValidationError
 
 from dggs.storage import CellStore
 
+from .serving import serving
 from .standard import corrected, geometry_schemas, oas30_validate, requires_standard
-from .test_features_clients import COLLECTION, serving
+from .test_features_clients import COLLECTION
 
 pytestmark = requires_standard
 

@@ -10,10 +10,6 @@ hierarchy; the definitions against the standard's DGGRS definition schema (tests
 from __future__ import annotations
 
 import json
-import socket
-import subprocess
-import sys
-import time
 import urllib.error
 import urllib.request
 from pathlib import Path
@@ -30,6 +26,7 @@ import dggs
 from dggs.server.reader import map_densify
 from dggs.storage import CellStore
 from tests.server.conftest import make_client
+from tests.server.serving import serving
 from tests.server.standard import conforms
 from tests.strategies import cells, examples
 
@@ -39,11 +36,6 @@ LEVEL = 5
 #: Zones at the north pole, the south pole, on the antimeridian, at an icosahedron vertex, anywhere.
 ZONES = ["A4", "Q40", "C401", "F2201", "K3", "T5", "J012"]
 
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 @pytest.fixture(scope="module")
@@ -58,27 +50,8 @@ def ivea_store(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="module")
 def url(ivea_store):
-    exe = Path(sys.executable).parent / "dggs"
-    if not exe.exists():
-        pytest.skip("the dggs script is not installed next to this Python")
-    port = _free_port()
-    proc = subprocess.Popen([str(exe), "serve", str(ivea_store), "--port", str(port)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    base = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                with urllib.request.urlopen(base + "/conformance", timeout=5):
-                    break
-            except OSError as exc:
-                if proc.poll() is not None or time.monotonic() > deadline:
-                    raise AssertionError(f"dggs serve did not answer: {proc.stderr.read() if proc.stderr else ''}") from exc
-                time.sleep(0.2)
+    with serving(ivea_store) as base:
         yield base
-    finally:
-        proc.terminate()
-        proc.communicate(timeout=30)
 
 
 def get(url: str) -> Any:

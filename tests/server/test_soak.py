@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import concurrent.futures
 import os
-import socket
 import subprocess
 import sys
 import time
@@ -26,6 +25,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import DGGRS
+from .serving import free_port
 
 pytestmark = pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="counts descriptors in /proc")
 
@@ -43,11 +43,6 @@ _WRAPPER = (
 )
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
 
 def _get(url: str) -> int:
     try:
@@ -63,7 +58,7 @@ def _descriptors(pid: int) -> int:
 
 
 def test_descriptors_stay_flat_over_idle_bursts(store_path):
-    port = _free_port()
+    port = free_port()
     code = _WRAPPER.format(limit=FD_LIMIT, store=str(store_path), port=port)
     proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     base = f"http://127.0.0.1:{port}"
