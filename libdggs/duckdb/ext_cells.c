@@ -228,13 +228,27 @@ static size_t polygon_wkb(const double *pts, const size_t *sizes, int parts, uin
  * corners counter-clockwise, `densify` points along each edge), _wkt -> VARCHAR (1), _wkb -> BLOB and _geometry
  * -> GEOMETRY (2): the polygon of dggs.cell_to_polygon(cell, densify) (dggs_cell_to_polygon: lng/lat, a
  * MultiPolygon split at +-180 for a cell across the antimeridian, closed along a pole). densify is the second
- * argument, default 0. */
+ * argument; without it the list has the corners (densify 0, as dggs.cell_to_boundary) and the polygons have the
+ * points per edge of dggs.cell_to_polygon(cell)'s default, from the same core function (dggs_cell_edge_points:
+ * the polygon's geodesic area within DEFAULT_AREA_TOLERANCE of the cell's; index/_densify.py). The polygons also
+ * take (cell, projection) for that default on IVEA. */
 #define MAX_SQL_DENSIFY 1000
+#define DEFAULT_AREA_TOLERANCE 1e-6 /* index/_densify.py's AREA_TOLERANCE */
+
+/* Whether column i of the chunk is a VARCHAR (the projection of (cell, projection), not a densify). */
+static bool is_varchar_column(duckdb_data_chunk in, idx_t i) {
+    duckdb_logical_type t = duckdb_vector_get_column_type(duckdb_data_chunk_get_vector(in, i));
+    bool yes = duckdb_get_type_id(t) == DUCKDB_TYPE_VARCHAR;
+    duckdb_destroy_logical_type(&t);
+    return yes;
+}
+
 static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vector outv) {
     const fn_extra *x = extra_of(info);
-    idx_t n = duckdb_data_chunk_get_size(in);
-    int has_densify = duckdb_data_chunk_get_column_count(in) > 1, has_proj = duckdb_data_chunk_get_column_count(in) > 2;
-    col_t c = col_of(in, 0), d = has_densify ? col_of(in, 1) : c, pc = has_proj ? col_of(in, 2) : c;
+    idx_t n = duckdb_data_chunk_get_size(in), ncol = duckdb_data_chunk_get_column_count(in);
+    int has_densify = ncol > 1 && !is_varchar_column(in, 1), proj_at = has_densify ? 2 : 1;
+    int has_proj = ncol > (idx_t)proj_at;
+    col_t c = col_of(in, 0), d = has_densify ? col_of(in, 1) : c, pc = has_proj ? col_of(in, (idx_t)proj_at) : c;
     dggs_projection proj = DGGS_ISEA;
     out_t o = out_of(outv);
     list_out_t l;
@@ -258,14 +272,25 @@ static void boundary(duckdb_function_info info, duckdb_data_chunk in, duckdb_vec
             duckdb_scalar_function_set_error(info, msg);
             break;
         }
+        if (!id_get(&c, x->kind, r, &cell)) {
+            out_null(&o, r);
+            continue;
+        }
+        if (!has_densify && x->variant != 0) { /* dggs.cell_to_polygon(cell)'s default count */
+            int points;
+            if (dggs_cell_edge_points(cell, proj, 0.0, DEFAULT_AREA_TOLERANCE, &points) != DGGS_OK) {
+                out_null(&o, r);
+                continue;
+            }
+            densify = points;
+        }
         if (!shape_room(&b, (int)densify)) {
             duckdb_scalar_function_set_error(info, "dggs_cell_to_boundary: out of memory");
             break;
         }
-        if (!id_get(&c, x->kind, r, &cell) ||
-            (x->variant == 0 ? dggs_cell_to_boundary(cell, (int)densify, proj, b.pts, b.points, &count)
+        if ((x->variant == 0 ? dggs_cell_to_boundary(cell, (int)densify, proj, b.pts, b.points, &count)
                              : dggs_cell_to_polygon(cell, (int)densify, proj, b.pts, b.points, sizes, &parts)) !=
-                DGGS_OK) {
+            DGGS_OK) {
             out_null(&o, r);
             continue;
         }
@@ -342,9 +367,9 @@ void register_cells(duckdb_connection con) {
     reg(con, "dggs_int_to_str", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
     reg(con, "dggs_cell_to_string", "I", 'V', convert_id, 1, K_NONE, K_VARCHAR);
     reg(con, "dggs_cell_to_boundary", "I|IB|IBV", 'P', boundary, 1, K_NONE, 0);
-    reg(con, "dggs_cell_to_boundary_wkt", "I|IB|IBV", 'V', boundary, 1, K_NONE, 1);
-    reg(con, "dggs_cell_to_boundary_wkb", "I|IB|IBV", 'X', boundary, 1, K_NONE, 2);
-    if (geometry_type_exists()) reg(con, "dggs_cell_to_boundary_geometry", "I|IB|IBV", 'G', boundary, 1, K_NONE, 2);
+    reg(con, "dggs_cell_to_boundary_wkt", "I|IB|IBV|IV", 'V', boundary, 1, K_NONE, 1);
+    reg(con, "dggs_cell_to_boundary_wkb", "I|IB|IBV|IV", 'X', boundary, 1, K_NONE, 2);
+    if (geometry_type_exists()) reg(con, "dggs_cell_to_boundary_geometry", "I|IB|IBV|IV", 'G', boundary, 1, K_NONE, 2);
     reg(con, "dggs_cell_to_child_pos", "IB", 'B', cell_to_child_pos, 1, K_NONE, 0);
     reg(con, "dggs_child_pos_to_cell", "BIB", 'I', child_pos_to_cell, 1, K_NONE, 0);
 }

@@ -271,7 +271,7 @@ def test_bad_argument_is_an_error_naming_it(ext: Path) -> None:
 
 def test_boundary_wkt_and_wkb(ext: Path) -> None:
     shapely = pytest.importorskip("shapely")
-    got = rows(ext, "SELECT dggs_cell_to_boundary_wkt('C401') AS wkt, hex(dggs_cell_to_boundary_wkb('C401')) AS wkb, "
+    got = rows(ext, "SELECT dggs_cell_to_boundary_wkt('C401', 0) AS wkt, hex(dggs_cell_to_boundary_wkb('C401', 0)) AS wkb, "
                     "dggs_cell_to_boundary_wkt('C401', 3) AS dense")[0]  # fmt: skip
     ring = np.asarray(dggs.cell_to_boundary("C401"), np.float64)
     shape = shapely.from_wkt(got["wkt"])
@@ -571,17 +571,10 @@ def _shape_ids() -> np.ndarray:
     return np.unique(np.concatenate([*every, *edge, _ids(11)]))
 
 
-@pytest.mark.parametrize(("densify", "projection"), [(0, "ISEA"), (1, "ISEA"), (5, "ISEA"), (1, "IVEA")])
-def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path: Path, densify: int, projection: str) -> None:
-    """dggs_cell_to_boundary_wkb/_wkt(c, d) give dggs.cell_to_polygon(c, densify=d): split at +-180, closed
-    along the poles, counter-clockwise; ordinary cells byte for byte (shapely's WKB of the Python polygon)."""
+def _assert_same_polygons(got: list[dict[str, Any]], ids: np.ndarray, want: np.ndarray) -> int:
+    """Each row's WKB and WKT are ``want``'s polygon: ordinary cells byte for byte (shapely's WKB), split or
+    pole cells part by part within 1e-11 degrees; the number of MultiPolygons compared that way."""
     shapely = pytest.importorskip("shapely")
-    ids = _shape_ids()
-    src = table(tmp_path / "c.csv", {"u": ids})
-    got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb(u, {densify}, '{projection}')) AS wkb, "
-                    f"dggs_cell_to_boundary_wkt(dggs_int_to_str(u), {densify}, '{projection}') AS wkt "
-                    f"FROM {src} ORDER BY i")  # fmt: skip
-    want = dggs.Grid(projection).cell_to_polygon(ids, densify=densify)
     assert len(got) == len(want) == ids.size
     multi = 0
     for r, c, w in zip(got, ids, want, strict=True):
@@ -596,10 +589,62 @@ def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path:
         parts_g, parts_w = list(getattr(g, "geoms", [g])), list(getattr(w, "geoms", [w]))
         assert len(parts_g) == len(parts_w), name
         for a, b in zip(parts_g, parts_w, strict=True):
+            assert len(a.exterior.coords) == len(b.exterior.coords), name
             assert a.exterior.is_ccw, name
             assert shapely.hausdorff_distance(a, b) < 1e-11, name
             assert abs(a.area - b.area) <= 1e-12 * max(b.area, 1e-300), name
-    assert multi > 0  # the split cells were compared (the others byte for byte)
+    return multi
+
+
+@pytest.mark.parametrize(("densify", "projection"), [(0, "ISEA"), (1, "ISEA"), (5, "ISEA"), (1, "IVEA")])
+def test_boundary_wkb_and_wkt_as_cell_to_polygon_row_by_row(ext: Path, tmp_path: Path, densify: int, projection: str) -> None:
+    """dggs_cell_to_boundary_wkb/_wkt(c, d) give dggs.cell_to_polygon(c, densify=d): split at +-180, closed
+    along the poles, counter-clockwise; ordinary cells byte for byte (shapely's WKB of the Python polygon)."""
+    ids = _shape_ids()
+    src = table(tmp_path / "c.csv", {"u": ids})
+    got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb(u, {densify}, '{projection}')) AS wkb, "
+                    f"dggs_cell_to_boundary_wkt(dggs_int_to_str(u), {densify}, '{projection}') AS wkt "
+                    f"FROM {src} ORDER BY i")  # fmt: skip
+    want = dggs.Grid(projection).cell_to_polygon(ids, densify=densify)
+    assert _assert_same_polygons(got, ids, want) > 0  # the split cells were compared (the others byte for byte)
+
+
+def _default_shape_ids(projection: str) -> np.ndarray:
+    """Every cell of levels 0..3, and at levels 8, 15 and 28 the cells round the poles, on the antimeridian and
+    round the 12 icosahedron vertices (the corners of the level-0 cells), with their neighbours."""
+    grid = dggs.Grid(projection)
+    faces = [chr(ord("A") + f) for f in range(20)]
+    every = [np.asarray(dggs.str_to_int(np.asarray(dggs.cell_to_children(f, lv)).ravel().tolist()), np.uint64)
+             for f in faces for lv in range(4)]  # fmt: skip
+    corners = np.asarray(grid.cell_to_boundary(faces), np.float64).reshape(-1, 2)
+    pts = np.concatenate([corners, [(90.0, 0.0), (-90.0, 0.0), (89.99999, 100.0), (-89.99999, -80.0), (0.0, 180.0),
+                                    (30.0, -180.0), (-60.0, 179.999999999), (75.0, 180.0), (-45.0, 180.0)]])  # fmt: skip
+    near = []
+    for level in (8, 15, 28):
+        cells = np.asarray(grid.latlng_to_cell(pts[:, 0], pts[:, 1], level, as_int=True), np.uint64)
+        disk = np.asarray(dggs.grid_disk(cells, 1), np.uint64).ravel()
+        near.append(disk[disk != 0])
+    return np.unique(np.concatenate([*every, *near]))
+
+
+@pytest.mark.parametrize("projection", ["ISEA", "IVEA"])
+def test_boundary_default_is_cell_to_polygon_default_row_by_row(ext: Path, tmp_path: Path, projection: str) -> None:
+    """Without a densify, dggs_cell_to_boundary_wkb/_wkt/_geometry(c) (ISEA) and (c, projection) draw
+    dggs.cell_to_polygon(c)'s default polygon: the same points per edge for each cell (area-exact to 1e-6),
+    the same split at +-180 and closing along a pole."""
+    ids = _default_shape_ids(projection)
+    src = table(tmp_path / "c.csv", {"u": ids})
+    want = dggs.Grid(projection).cell_to_polygon(ids)
+    forms = ["(u)", "(dggs_int_to_str(u))", "(u::BIGINT)"] if projection == "ISEA" else []
+    forms += [f"(u, '{projection}')", f"(dggs_int_to_str(u), '{projection}')"]
+    for form in forms:
+        got = rows(ext, f"SELECT hex(dggs_cell_to_boundary_wkb{form}) AS wkb, dggs_cell_to_boundary_wkt{form} AS wkt, "
+                        f"hex(ST_AsWKB(dggs_cell_to_boundary_geometry{form})) AS g FROM {src} ORDER BY i")  # fmt: skip
+        assert all(r["g"] == r["wkb"] for r in got), form
+        assert _assert_same_polygons(got, ids, want) > 0, form
+    some = rows(ext, f"SELECT dggs_cell_to_boundary_wkb('C401', NULL::VARCHAR) AS a, dggs_cell_to_boundary_wkb(NULL::BIGINT, "
+                     f"'{projection}') AS b, dggs_cell_to_boundary_wkt('nope', '{projection}') AS c")[0]  # fmt: skip
+    assert some == {"a": None, "b": None, "c": None}
 
 
 def test_geometry_in_and_out_as_wkb(ext: Path) -> None:
