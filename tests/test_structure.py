@@ -31,6 +31,10 @@ The rules:
     and says so in :data:`LONG_MODULES`, and none passes :data:`MAX_LINES` (two ideas in one file are split).
 (g) No import circle anywhere: the graph of module -> imported module (every import, at any depth of the
     file, a module's own enclosing packages left out since Python loads them anyway) has no cycle.
+(i) No integration or the store imports another one's private names: an integration (``dggs.raster``,
+    ``dggs.duckdb``, ``dggs.spark``, ``dggs.pandas``, ``dggs.arrow``, ``dggs.polars``, ``dggs.dask``,
+    ``dggs.xdggs``, ``dggs.server``) and ``dggs.storage`` take from each other only public modules and names;
+    what they share of the grid comes from ``dggs.index`` (its verbs and floors).
 (h) The geometry floor loads nothing above it: importing every ``dggs.geometry`` module in a fresh
     interpreter leaves ``dggs.index``, ``dggs.storage`` and the integrations unloaded.
 
@@ -298,6 +302,28 @@ def test_cycle_finder_finds_a_planted_circle():
 
 def test_no_import_circle():
     _report([" -> ".join(component) for component in _cycles(_import_graph())])
+
+
+INTEGRATIONS = ("dggs.raster", "dggs.duckdb", "dggs.spark", "dggs.pandas", "dggs.arrow", "dggs.polars", "dggs.dask",
+                "dggs.xdggs", "dggs.server", "dggs.storage")
+
+
+def _integration_of(module: str) -> str | None:
+    return next((i for i in INTEGRATIONS if module == i or module.startswith(i + ".")), None)
+
+
+def test_no_integration_imports_anothers_private_names():
+    offences = []
+    for module in TREES:
+        own = _integration_of(module)
+        for node, name, _ in _imports(module):
+            other = _integration_of(name)
+            if other is None or other == own:
+                continue
+            private = [p for p in name[len(other):].split(".") if p.startswith("_") and p != "__init__"]
+            if private:
+                offences.append(f"{_where(module, node)}: {module} imports {name}, private to {other}")
+    _report(sorted(set(offences)))
 
 
 def test_geometry_floor_loads_nothing_above_it_in_a_fresh_process():
