@@ -3,7 +3,7 @@
 
 Expected values come from outside the code under test (dggs/xdggs.py and the kernel behind it): ids and the
 hierarchy from the layout docs/grid.md writes out, geometry from the icosahedron in PROJ's isea orientation
-and textbook authalic latitudes (tests/integrations/_xdggs_reference.py), areas from pyproj.Geod, and
+and textbook authalic latitudes (tests/xdggs/_xdggs_reference.py), areas from pyproj.Geod, and
 round trips from xdggs's API contract (``from_dict(to_dict())``, ``to_dict() == attrs``).
 """
 

@@ -2,7 +2,7 @@
 the index class, from_variables, join / reindex_like / equals / align, decode, cell centres), written again for
 the dggs_split26 grid and run on the installed xdggs, and how xdggs finds the grid.
 
-Ids are written by hand from docs/grid.md's layout (tests/integrations/_xdggs_reference.py); centres are the
+Ids are written by hand from docs/grid.md's layout (tests/xdggs/_xdggs_reference.py); centres are the
 icosahedron's face centres in PROJ's isea orientation; the rest is xdggs's API contract.
 """
 
