@@ -43,7 +43,9 @@ class Exporter:
 
     def _rollup(self, level: int, column: str | None, stats: Sequence[str]) -> list[dict[str, Any]]:
         """The rows of ``store.aggregate(level, column, stats, progress=False)``."""
-        rows: list[dict[str, Any]] = rollup_query.aggregate(self._store, level, column, stats, None, None, True, None)
+        rows: list[dict[str, Any]] = rollup_query.aggregate(
+            self._store, level, column, stats, cell=None, order_by=None, descending=True, limit=None
+        )
         return rows
 
     @guarded
