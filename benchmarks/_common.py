@@ -99,7 +99,7 @@ def interleaved(cases: dict[Any, tuple[Callable[[], Any], Any]], repeat: int,
 
     Round-robin rather than case after case, so that a burst of load from other
     processes hits every row of a table alike.  Each case first runs once untimed
-    (a warm-up: numba's compilation or cache load, caches, thread pools), which
+    (a warm-up: imports, caches, thread pools), which
     also counts its units.  A case that raises is dropped with a note, so that a
     missing function never stops the run.  A case whose probe or warm-up says one
     call takes over ``budget`` seconds keeps that one run instead of repeats
@@ -243,15 +243,8 @@ def has_int_api() -> bool:
 
 
 def thread_info() -> dict[str, Any]:
-    """What this process's libraries use: numba's threads, dggs's default, the thread variables."""
+    """What this process's libraries use: dggs's default threads and the thread variables."""
     info: dict[str, Any] = {k: os.environ.get(k, "(unset)") for k in THREAD_VARS}
-    try:
-        import numba
-
-        info["numba_threads"] = numba.get_num_threads()
-        info["numba_layer"] = numba.config.THREADING_LAYER
-    except Exception:
-        info["numba_threads"] = None
     for mod, fn in (("dggs", "get_num_threads"), ("dggs.geometry._parallel", "default_threads")):
         try:
             info["dggs_threads"] = getattr(importlib.import_module(mod), fn)()
@@ -281,7 +274,7 @@ def machine() -> dict[str, Any]:
         nproc = os.cpu_count()
     return {"cpu": cpu, "nproc": nproc, "mem": mem, "python": platform.python_version(),
             "numpy": np.__version__, "platform": platform.platform(),
-            "versions": {d: version(d) for d in ("dggs", "numba", "h3", "h3ronpy", "healpy", "pya5",
+            "versions": {d: version(d) for d in ("dggs", "h3", "h3ronpy", "healpy", "pya5",
                                                  "shapely", "pyproj", "pyarrow")}}
 
 

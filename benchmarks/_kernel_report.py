@@ -48,7 +48,7 @@ def render(res: dict[str, Any]) -> str:
             w(f"- **{name}**: no numbers (the worker failed; see the notes).")
             continue
         t = wk["threads"]
-        w(f"- **{name}**: numba threads {t.get('numba_threads')}, dggs threads {t.get('dggs_threads', '?')}; "
+        w(f"- **{name}**: dggs threads {t.get('dggs_threads', '?')}; "
           + ", ".join(f"{k}={t[k]}" for k in ("DGGS_THREADS", "NUMBA_NUM_THREADS", "RAYON_NUM_THREADS",
                                               "OMP_NUM_THREADS")) + f"; load average {wk['load'][0][0]:.2f} "
           f"at its start, {wk['load'][1][0]:.2f} at its end; int ids API present: {wk['int_api']}; "
@@ -184,18 +184,18 @@ def render_compile(res: dict[str, Any], w) -> None:
     w(f"Two fresh processes in turn (the compiled core has no cache: both are alike; `bench_core.py` times a fresh "
       f"wheel install). ids: {c.get('kind', '?')}. Each number is one run (seconds, wall / CPU).\n")
     w("| cache | `import dggs` | first `latlng_to_cell` (1,000 points) | second call | first `grid_disk(ids, 1)` "
-      "(100 cells) | second call | files in the cache afterwards |")
-    w("|---|---:|---:|---:|---:|---:|---:|")
+      "(100 cells) | second call |")
+    w("|---|---:|---:|---:|---:|---:|")
     for name in ("cold", "warm"):
         d = c.get(name)
         if not d:
             continue
         if "error" in d:
-            w(f"| {name} | failed: {d['error'][:150]} | | | | | |")
+            w(f"| {name} | failed: {d['error'][:150]} | | | | |")
             continue
         cells = [f"{d[k][0]:.2f} / {d[k][1]:.2f}" if d.get(k) else "-"
                  for k in ("import", "latlng_first", "latlng_second", "disk_first", "disk_second")]
-        w(f"| {name} | " + " | ".join(cells) + f" | {d.get('cache_files', '-')} |")
+        w(f"| {name} | " + " | ".join(cells) + " |")
     w("")
 
 

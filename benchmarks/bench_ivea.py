@@ -5,7 +5,7 @@ N random points uniform on the sphere (fixed seed).  Rows: the checked projectio
 then the grids (``dggs.Grid("ISEA")``, which is the module-level verbs, and ``dggs.Grid("IVEA")``):
 point location at level 15, cell centres, and boundaries (3 corners, and ``densify=8``).
 Every case runs in turn in each round (``_common.interleaved``: medians of ``--repeats``), after an
-untimed warm-up (numba's compilation or cache load).  Reports ns per item and IVEA's time over ISEA's.
+untimed warm-up (imports, caches).  Reports ns per item and IVEA's time over ISEA's.
 One thread unless ``--threads`` is given (``DGGS_THREADS`` is read at import).
 
 Run::

@@ -5,8 +5,7 @@ Every table runs twice, each time in a fresh worker process: on one thread
 OPENBLAS_NUM_THREADS=1) and on the default threads (those variables unset).
 Then, each in fresh processes: the threads speed-up of point to cell (1-thread
 and default processes alternating), the peak RSS of point to cell on 10M
-points, and the first call after ``import dggs`` with a cold and a warm numba
-cache.  Prints markdown on stdout; ``--json PATH`` writes the raw numbers and
+points, and the first call after ``import dggs`` in two fresh processes.  Prints markdown on stdout; ``--json PATH`` writes the raw numbers and
 the issue-18 targets (``run_all.py`` reads them).  Wall and CPU time, load
 average and the git commit are reported with the numbers.
 
@@ -27,9 +26,7 @@ import inspect
 import json
 import os
 import resource
-import shutil
 import sys
-import tempfile
 import time
 from pathlib import Path
 from typing import Any
@@ -143,7 +140,7 @@ def rss_now() -> int:
 def reset_peak() -> bool:
     """Reset the kernel's peak-RSS mark to the current RSS (Linux >= 4.0: "5" into /proc/self/clear_refs).
 
-    Without it the high-water mark after the imports (transients of numba, pyproj,
+    Without it the high-water mark after the imports (transients of pyproj,
     the thread pools) sits above the resident size, and a call could use that
     gap unseen.  ``ru_maxrss`` follows the reset.
     """
@@ -176,7 +173,7 @@ def worker_rss(impl: str, n: int) -> dict[str, Any]:
         np.radians(lat, out=lat)
         np.radians(lng, out=lng)
         fn = lambda a, b: healpy.ang2pix(16384, a, b, nest=True)  # noqa: E731
-    fn(lat[:WARM_POINTS], lng[:WARM_POINTS])  # warm-up: numba cache load, the parallel path, thread pools
+    fn(lat[:WARM_POINTS], lng[:WARM_POINTS])  # warm-up: the parallel path, thread pools
     reset = reset_peak()
     base, now = maxrss(), rss_now()
     wall, cpu, res = run_once(lambda: fn(lat, lng))
@@ -200,7 +197,7 @@ def worker_rss(impl: str, n: int) -> dict[str, Any]:
 
 
 def worker_compile() -> dict[str, Any]:
-    """Seconds (wall, CPU) of ``import dggs`` and of the first and second calls, under this NUMBA_CACHE_DIR."""
+    """Seconds (wall, CPU) of ``import dggs`` and of the first and second calls in this fresh process."""
     out: dict[str, Any] = {}
     w, c, dggs = run_once(lambda: __import__("dggs"))
     out["import"] = (w, c)
@@ -259,19 +256,14 @@ def measure_rss(sizes: dict[str, Any]) -> dict[str, Any]:
 
 
 def measure_compile() -> dict[str, Any]:
-    cache = tempfile.mkdtemp(prefix="dggs-numba-cache-")
     out: dict[str, Any] = {}
-    try:
-        for name in ("cold", "warm"):
-            got = spawn(["--compile-worker"], thread_env(False, {"NUMBA_CACHE_DIR": cache}))
-            if got is None:
-                out[name] = {"error": "worker failed (see the notes)"}
-                continue
-            got["cache_files"] = sum(len(f) for _, _, f in os.walk(cache))
-            out["kind"] = got.pop("kind", "?")
-            out[name] = got
-    finally:
-        shutil.rmtree(cache, ignore_errors=True)
+    for name in ("cold", "warm"):  # the page cache warm for the second (the compiled core keeps no other cache)
+        got = spawn(["--compile-worker"], thread_env(False))
+        if got is None:
+            out[name] = {"error": "worker failed (see the notes)"}
+            continue
+        out["kind"] = got.pop("kind", "?")
+        out[name] = got
     return out
 
 

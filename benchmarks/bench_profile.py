@@ -1,6 +1,6 @@
 """Where the time goes in issue 18's missed targets: point location, single calls and polygon output, in parts.
 
-One thread (run it with DGGS_THREADS=NUMBA_NUM_THREADS=1; run_all does), CPU
+One thread (run it with DGGS_THREADS=1; run_all does), CPU
 time (``time.process_time``), medians of interleaved rounds after a warm-up
 (``_common.interleaved``).  Each table splits one missed operation into parts
 that can be timed apart through public entry points and plain baselines:
@@ -10,8 +10,7 @@ that can be timed apart through public entry points and plain baselines:
    vector, authalic latitude, face, Snyder's forward: everything but the
    descent), at levels 10 and 17, and healpy's ``ang2pix(nest=True)``.
 2. One call from a Python loop: a Python function returning its argument,
-   a numba function doing nothing through its dispatcher and through its
-   compiled entry (dggs's single calls use the entry), Python's own bit
+   the compiled core's single-id entry (``parent_of``), Python's own bit
    operations, h3-py's and dggs's ``cell_to_parent`` on int ids.
 3. Polygons of 100,000 level-17 cells: the compiled boundary alone
    (``cell_to_boundary``), shapely building polygons from it, and

@@ -12,8 +12,8 @@ comes back.  Timed once each, in this order (wall seconds, the engine started an
   fewer points: h3-pyspark 1.2.6 itself calls the h3 3.x names, which h3 4 has not, so it cannot run);
 - Dask, a LocalCluster of two worker processes: ``dggs.dask.add_cells`` (string ids, its API), the same
   with int64 ids through ``map_partitions``, and h3ronpy through ``map_partitions``;
-- the first task's cost of compiling: a Spark session whose workers find an empty numba cache, its first
-  and second job on 2,000 points, then a new session on the filled cache.
+- the first tasks' cost: a new Spark session's first and second job on 2,000 points (its Python workers
+  start and import dggs), then a second new session.
 
 H3 runs at resolution 9 and dggs at the level nearest it in mean cell area.  Run::
 
@@ -92,12 +92,12 @@ def _h3_row(lat: float, lng: float) -> int:
     return h3.str_to_int(h3.latlng_to_cell(lat, lng, H3_RES))
 
 
-def spark_session(cache: str | None = None) -> Any:
+def spark_session() -> Any:
     import dggs.spark
 
     conf = {"spark.ui.enabled": "false", "spark.ui.showConsoleProgress": "false", "spark.driver.memory": "2g",
             "spark.sql.shuffle.partitions": "4"}
-    spark = dggs.spark.local_session("local[2]", numba_cache_dir=cache, **conf)
+    spark = dggs.spark.local_session("local[2]", **conf)
     spark.sparkContext.setLogLevel("ERROR")
     return spark
 
@@ -133,15 +133,14 @@ def spark_rows(folder: Path, row_folder: Path, level: int, expected_max: int) ->
 
 
 def first_task(level: int) -> list[tuple[str, float]]:
-    """The first jobs' wall time with an empty numba cache, then a fresh session on the filled cache."""
+    """The first jobs' wall time in a new session, then in a second new session."""
     from pyspark.sql import functions as F
 
     import dggs.spark as ds
 
-    cache = tempfile.mkdtemp(prefix="dggs-bench-numba-")
     out = []
-    for label in ("new session, empty numba cache", "new session, the cache filled"):
-        spark = spark_session(cache)
+    for label in ("first new session", "second new session"):
+        spark = spark_session()
         try:
             df = spark.range(2000, numPartitions=2).select((F.col("id") % 170 - 85).cast("double").alias("lat"),
                                                             (F.col("id") % 350 - 175).cast("double").alias("lng"))
@@ -151,7 +150,7 @@ def first_task(level: int) -> list[tuple[str, float]]:
             t1, _ = timed(job)
             t2, _ = timed(job)
             out.append((f"{label}: first job, an Arrow UDF returning its input (the Python workers start)", t0))
-            out.append((f"{label}: first dggs job (each worker imports dggs, loads or compiles the kernel)", t1))
+            out.append((f"{label}: first dggs job (each worker imports dggs)", t1))
             out.append((f"{label}: second dggs job", t2))
         finally:
             spark.stop()
@@ -245,8 +244,8 @@ def main() -> None:
     print(f"\nSpark's dggs Arrow UDF job takes {spark_dggs / t_np:.2f}x the time of the two-thread numpy call "
           f"(target: within 1.5x); h3ronpy in the same kind of UDF takes {spark_h3 / spark_dggs:.2f}x the dggs "
           "job's time (target: above 1).\n")
-    print("First tasks (2,000 points, 2 partitions, local[2]), in a new session whose workers find an empty "
-          "numba cache (a fresh NUMBA_CACHE_DIR), then in another new session on the cache the first filled.\n")
+    print("First tasks (2,000 points, 2 partitions, local[2]), in a new session, then in a second new "
+          "session.\n")
     print("| job | wall |")
     print("|---|---:|")
     for name, t in firsts:

@@ -115,7 +115,7 @@ def main() -> None:
     w("# Benchmarks\n")
     w(f"- **Machine:** {m['nproc']} cores ({m['cpu']}), {m['mem']} memory, {m['platform']}; "
       f"Python {m['python']}, numpy {m['numpy']}.")
-    w(f"- **Libraries:** dggs {v['dggs']}, numba {v['numba']}; peers h3 {v['h3']}, h3ronpy {v['h3ronpy']}, "
+    w(f"- **Libraries:** dggs {v['dggs']}; peers h3 {v['h3']}, h3ronpy {v['h3ronpy']}, "
       f"healpy {v['healpy']}, pya5 {v['pya5']}, shapely {v['shapely']}, pyproj {v['pyproj']}, pyarrow {v['pyarrow']}.")
     w("- **Command:** `make bench` (that is `.venv-bench/bin/python benchmarks/run_all.py"
       + (" --quick" if args.quick else "") + "`; the venv has dggs editable plus `benchmarks/requirements.txt`).")
