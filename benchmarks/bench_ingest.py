@@ -7,7 +7,7 @@ the last one with the hand-written parser) as a package in a temporary
 directory, writes one CSV of random points, and runs ``CellStore.ingest_csv``
 of the same file with both versions, alternating (old, new, old, new, ...),
 each in a fresh process that first ingests a 1,000-row file so that imports
-and the first calls (imports, warm caches) are not timed.  Prints a markdown table of medians
+and first calls are not timed.  Prints a markdown table of medians
 (wall and CPU time) and the ratio old / new (above 1: the new code is faster).
 
 Run::
