@@ -4,6 +4,7 @@
 
 Cases interleaved (ours, H3's, ours, ...), best of 3 CPU times on one core; GeoParquet (zstd) and GeoJSON bytes of
 ~n level-10 cells and of H3 res-6 cells (similar size) over the same points; load average and commit printed.
+Then the default (10 m) polygons in parts, interleaved with H3's, best of 5: where the time of a cell goes.
 """
 
 from __future__ import annotations
@@ -71,6 +72,47 @@ def main(n: int = 40_000) -> None:
                 json.dump(dggs.cells_to_geojson(ours, tolerance=tol), fh)
             op, oj = os.path.getsize(f"{tmp}/o.parquet"), os.path.getsize(f"{tmp}/o.geojson")
             print(f"ours tolerance={tol!r}: GeoParquet {op / 1e6:.2f} MB ({op / hp:.2f}x H3's), GeoJSON {oj / 1e6:.2f} MB ({oj / hj:.2f}x)")
+    parts(ours, theirs)
+
+
+def parts(ours: np.ndarray, theirs: np.ndarray, tolerance: float = 10.0, rounds: int = 5) -> None:
+    """The default polygons' time a cell in parts (the count, the rings, shapely's build) beside H3's whole."""
+    import pyarrow as pa
+    import shapely
+    from h3ronpy.vector import cells_to_wkb_polygons
+
+    import dggs
+    from dggs.index._densify import edge_points
+    from dggs.index._kernel import edge_bound
+
+    n = ours.size
+    counts = edge_points(ours, tolerance)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(3 * (counts + 1) + 1, out=offsets[1:])
+    coords = np.empty((int(offsets[-1]), 2))
+    cases = {
+        "h3ronpy WKB + shapely.from_wkb (res 6)": (lambda: shapely.from_wkb(
+            pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False)), theirs.size),
+        f"dggs.cell_to_polygon(tolerance={tolerance:g}) (level 10)": (
+            lambda: dggs.cell_to_polygon(ours, tolerance=tolerance), n),
+        "  the count (the core's edge bound: 12 inverse projections a cell)": (lambda: edge_points(ours, tolerance), n),
+        "  the rings (the core, one flat buffer)": (
+            lambda: edge_bound.ragged_rings(0, ours, counts.astype(np.int32), offsets, coords), n),
+        "  shapely.from_ragged_array": (lambda: shapely.from_ragged_array(
+            shapely.GeometryType.POLYGON, coords, (offsets, np.arange(n + 1))), n),
+    }
+    best = dict.fromkeys(cases, float("inf"))
+    for f, _ in cases.values():
+        f()
+    for _ in range(rounds):
+        for name, (f, _) in cases.items():
+            t = time.process_time()
+            f()
+            best[name] = min(best[name], time.process_time() - t)
+    print(f"\nParts, best of {rounds} interleaved rounds, CPU, one thread, load average {os.getloadavg()}:\n")
+    print("| case | per cell |\n|---|---:|")
+    for name, (_, count) in cases.items():
+        print(f"| {name} | {1e6 * best[name] / count:.2f} us |")
 
 
 if __name__ == "__main__":
