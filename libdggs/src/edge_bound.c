@@ -77,37 +77,38 @@ static double edge_piece(const double a[3], const double b[3], const double m[3]
     return (1.0 + DGGS_BULGE_RATIO) * raw + DGGS_BULGE_FLOOR * len * len / DGGS_AUTHALIC_RADIUS;
 }
 
-void dggs_edge_bounds_of(dggs_projection proj, uint64_t cell, double bulge_m[3], double length_m[3]) {
-    double ring[12]; /* (lat, lng): corner, midpoint, corner, midpoint, corner, midpoint */
-    double c[3][3], m[3][3];
-    dggs_one_boundary(proj, cell, 1, ring, 0);
+/* The cell's boundary points as unit vectors on the authalic sphere: dggs_one_boundary's points (the same planar
+ * points, x0 + j (x1 - x0) / step along each edge, step = densify + 1) straight from the projection's inverse,
+ * without the round trip through (lat, lng) that dggs_geodetic_to_unit would undo (it costs more than the
+ * inverse). p holds 3 (densify + 1) rows. */
+static void edge_units(dggs_projection proj, uint64_t cell, int densify, double (*p)[3]) {
+    double t[6];
+    int face = dggs_corners(cell, t), step = densify + 1;
     for (int i = 0; i < 3; i++) {
-        dggs_geodetic_to_unit(ring[4 * i], ring[4 * i + 1], c[i]);
-        dggs_geodetic_to_unit(ring[4 * i + 2], ring[4 * i + 3], m[i]);
+        double x0 = t[2 * i], y0 = t[2 * i + 1], x1 = t[(2 * i + 2) % 6], y1 = t[(2 * i + 3) % 6];
+        double dx = (x1 - x0) / step, dy = (y1 - y0) / step;
+        for (int j = 0; j < step; j++) dggs_proj_inverse(proj, face, x0 + j * dx, y0 + j * dy, p[i * step + j]);
     }
-    for (int i = 0; i < 3; i++) bulge_m[i] = edge_piece(c[i], c[(i + 1) % 3], m[i], &length_m[i]);
+}
+
+void dggs_edge_bounds_of(dggs_projection proj, uint64_t cell, double bulge_m[3], double length_m[3]) {
+    double p[6][3]; /* corner, midpoint, corner, midpoint, corner, midpoint */
+    edge_units(proj, cell, 1, p);
+    for (int i = 0; i < 3; i++) bulge_m[i] = edge_piece(p[2 * i], p[(2 * i + 2) % 6], p[2 * i + 1], &length_m[i]);
 }
 
 /* Whether `d` points per edge meet the tolerances, measured piece by piece: each drawn piece's bulge (its true
  * midpoint off the great circle of its ends) bounded as the whole edge's is. Where the projection bends unevenly
  * (by the icosahedron's vertices) the 1 / (d + 1)^2 law of the first guess errs, and this decides. */
 static bool edge_points_meet(dggs_projection proj, uint64_t cell, int d, double tolerance_m, double area_limit) {
-    double ring[2 * 3 * (2 * DGGS_EDGE_POINTS_MAX + 2)];
-    int per = 2 * d + 2, rows = 3 * per;
-    dggs_one_boundary(proj, cell, 2 * d + 1, ring, 0);
-    double lune = 0.0, first[3], a[3], m[3], b[3];
-    dggs_geodetic_to_unit(ring[0], ring[1], first);
-    a[0] = first[0], a[1] = first[1], a[2] = first[2];
-    for (int k = 1; k < rows; k += 2) {
-        dggs_geodetic_to_unit(ring[2 * k], ring[2 * k + 1], m);
-        if (k + 1 < rows)
-            dggs_geodetic_to_unit(ring[2 * (k + 1)], ring[2 * (k + 1) + 1], b);
-        else
-            b[0] = first[0], b[1] = first[1], b[2] = first[2];
-        double len, bulge = edge_piece(a, b, m, &len);
+    double p[3 * (2 * DGGS_EDGE_POINTS_MAX + 2)][3];
+    int rows = 3 * (2 * d + 2);
+    edge_units(proj, cell, 2 * d + 1, p);
+    double lune = 0.0;
+    for (int k = 1; k < rows; k += 2) { /* piece (k - 1, k + 1) with its midpoint k; the last ends at row 0 */
+        double len, bulge = edge_piece(p[k - 1], p[(k + 1) % rows], p[k], &len);
         if (tolerance_m > 0.0 && bulge > tolerance_m) return false;
         lune += (2.0 / 3.0) * bulge * len;
-        a[0] = b[0], a[1] = b[1], a[2] = b[2];
     }
     return !(area_limit > 0.0) || lune <= area_limit;
 }
@@ -127,10 +128,8 @@ static int edge_ladder(int d) {
  * midpoint bulges into b[3] and the lengths into l[3]. Where the projection bends unevenly (by the icosahedron's
  * vertices, across the sectors of Snyder's construction) they are not, and edge_points_meet decides instead. */
 static bool edge_even(dggs_projection proj, uint64_t cell, double b[3], double l[3]) {
-    double ring[24]; /* (lat, lng): corner, quarter, half, three quarters; three edges */
-    double p[12][3];
-    dggs_one_boundary(proj, cell, 3, ring, 0);
-    for (int k = 0; k < 12; k++) dggs_geodetic_to_unit(ring[2 * k], ring[2 * k + 1], p[k]);
+    double p[12][3]; /* corner, quarter, half, three quarters; three edges */
+    edge_units(proj, cell, 3, p);
     bool even = true;
     for (int i = 0; i < 3; i++) {
         const double *a = p[4 * i], *z = p[(4 * i + 4) % 12];
