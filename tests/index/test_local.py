@@ -264,11 +264,12 @@ def test_local_ij_is_one_lattice_wherever_it_answers(point, offset, level, k, as
 
 
 #: The worst residual of an affine fit of geodetic cell centres to (i, j), in cell sizes (the square root of the
-#: anchor's area), over grid_disk(anchor, k <= 5) where local (i, j) answers: measured 0.142 (every anchor of face C
-#: at level 6, anchors near its vertices at levels 8-13: Snyder's projection is smooth but not affine in a sector,
-#: most near a vertex); before the chart kept to one sector and its mirror image it was 0.39 at K110121, 0.53 at
-#: E222202 (k = 5) and 0.28 at the cells on an icosahedron vertex (k = 3).
-SPHERE_FIT_BOUND = 0.16
+#: anchor's area), over grid_disk(anchor, k <= 5) where local (i, j) answers, per projection. Measured: ISEA 0.142,
+#: IVEA 0.169 (every anchor of face C at level 6, all of level 3, anchors near its vertices at levels 8-13; the
+#: projections are smooth but not affine within a sector, most near a vertex). Before the chart kept to one sector
+#: and its mirror image: ISEA 0.39 at K110121, 0.53 at E222202 (k = 5), 0.28 at the cells on an icosahedron vertex
+#: (k = 3); IVEA 0.38 at E222202.
+SPHERE_FIT_BOUND = {"ISEA": 0.16, "IVEA": 0.2}
 
 
 @settings(max_examples=examples(60), deadline=None)
@@ -278,41 +279,44 @@ SPHERE_FIT_BOUND = 0.16
     level=st.integers(3, 13),
     k=st.integers(1, 5),
     as_int=st.booleans(),
+    projection=st.sampled_from(["ISEA", "IVEA"]),
 )
-@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=False).via("issue 32: K110121")
-@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=True).via("issue 32: E222202")
-@example(point=(90.0, 0.0), offset=(0.0, 0.0), level=9, k=5, as_int=False)
-@example(point=(0.0, 180.0), offset=(0.0, 0.0), level=13, k=5, as_int=True)
-@example(point=special_points()[6], offset=(0.0, 0.0), level=8, k=5, as_int=False)
-def test_local_ij_fits_the_sphere_wherever_it_answers(point, offset, level, k, as_int):
-    """Issue 32 item 4: round poles, the antimeridian, icosahedron vertices and face edges, the (i, j) local
-    coordinates answer for are one affine image of the cells' geodetic centres (in an azimuthal equidistant
-    projection at the anchor, from PROJ), to SPHERE_FIT_BOUND cell sizes; the others are refused with a
-    DistortionError naming anchor and cell, exactly where the chart oracle (sector edges from tests.gridref) says."""
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=False, projection="ISEA").via("issue 32: K110121")
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=True, projection="ISEA").via("issue 32: E222202")
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=True, projection="IVEA")
+@example(point=(90.0, 0.0), offset=(0.0, 0.0), level=9, k=5, as_int=False, projection="ISEA")
+@example(point=(0.0, 180.0), offset=(0.0, 0.0), level=13, k=5, as_int=True, projection="IVEA")
+@example(point=special_points()[6], offset=(0.0, 0.0), level=8, k=5, as_int=False, projection="ISEA")
+def test_local_ij_fits_the_sphere_wherever_it_answers(point, offset, level, k, as_int, projection):
+    """Issue 32 item 4: round poles, the antimeridian, icosahedron vertices and face edges, on both projections, the
+    (i, j) local coordinates answer for are one affine image of the cells' geodetic centres (in an azimuthal
+    equidistant projection at the anchor, from PROJ), to SPHERE_FIT_BOUND cell sizes; the others are refused with a
+    DistortionError naming cell and anchor, exactly where the chart oracle (sector edges from tests.gridref) says."""
     import pyproj
 
+    grid = dggs.Grid(projection)
     if point == (0.0, 0.0):  # the two anchors of the issue
         anchor = "K110121" if not as_int else "E222202"
     else:
         lat = float(np.clip(point[0] + offset[0], -90, 90))
-        anchor = dggs.latlng_to_cell(lat, point[1] + offset[1], level)
+        anchor = grid.latlng_to_cell(lat, point[1] + offset[1], level)
     disk = dggs.grid_disk(anchor, k)
     a = dggs.str_to_int(anchor) if as_int else anchor
     answered, ij = [], []
     for cell, ok in zip(disk, in_chart(anchor, disk), strict=True):
         c = dggs.str_to_int(cell) if as_int else cell
         if ok:
-            ij.append(dggs.cell_to_local_ij(a, c))
+            ij.append(grid.cell_to_local_ij(a, c))
             answered.append(cell)
-            assert dggs.local_ij_to_cell(a, *ij[-1]) == c
+            assert grid.local_ij_to_cell(a, *ij[-1]) == c
         else:
             with pytest.raises(DistortionError, match=f"{cell}.*{anchor}"):
-                dggs.cell_to_local_ij(a, c)
-    lat0, lng0 = dggs.cell_to_latlng(anchor)
+                grid.cell_to_local_ij(a, c)
+    lat0, lng0 = grid.cell_to_latlng(anchor)
     aeqd = pyproj.Proj(proj="aeqd", lat_0=lat0, lon_0=lng0, ellps="WGS84")
-    lat, lng = np.array(dggs.cell_to_latlng(answered)).reshape(2, -1) if len(answered) > 1 else np.array([[lat0], [lng0]])
+    lat, lng = np.array([grid.cell_to_latlng(c) for c in answered]).T
     xy = np.c_[aeqd(lng, lat)]
     design = np.c_[np.array(ij, dtype=float), np.ones(len(answered))]
     coef, *_ = np.linalg.lstsq(design, xy, rcond=None)
-    worst = np.linalg.norm(design @ coef - xy, axis=1).max() / np.sqrt(dggs.cell_area(anchor, unit="m^2"))
-    assert worst < SPHERE_FIT_BOUND, (anchor, k, worst)
+    worst = np.linalg.norm(design @ coef - xy, axis=1).max() / np.sqrt(grid.cell_area(anchor, unit="m^2"))
+    assert worst < SPHERE_FIT_BOUND[projection], (anchor, k, worst)
