@@ -122,8 +122,11 @@ def main() -> None:
             "h3-py per call (str)": (lambda gs=gs: [gs(e) for e in hes], calls),
         }, repeat, "dggs array (uint64)", "h3-py per call (int)")
 
-    # local (i, j): each cell around its first edge neighbour
-    anchors = np.asarray(dggs.edge_neighbors(ids))[:, 0].copy()
+    # local (i, j): each cell around its first edge neighbour in the same level-1 cell (so in the anchor's chart,
+    # one sector of Snyder's projection: docs/grid.md, "Local coordinates")
+    nbs = np.asarray(dggs.edge_neighbors(ids))
+    same = np.asarray(dggs.cell_to_parent(nbs.reshape(-1), 1)).reshape(nbs.shape) == np.asarray(dggs.cell_to_parent(ids, 1))[:, None]
+    anchors = nbs[np.arange(len(ids)), same.argmax(axis=1)].copy()
     a_int, a_str = [int(x) for x in anchors[:calls]], dggs.int_to_str(anchors[:calls]).tolist()
     ha = [hb.grid_ring(c, 1)[0] for c in hx]
     hij = [hb.cell_to_local_ij(a, c) for a, c in zip(ha, hx, strict=True)]

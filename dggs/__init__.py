@@ -34,6 +34,7 @@ from dggs.errors import (
     CoordinateError,
     DggsError,
     DggsValueError,
+    DistortionError,
     ExtensionLoadError,
     InvalidCellError,
     LevelError,
@@ -166,6 +167,7 @@ __all__ = [
     "StorageError",
     "ExtensionLoadError",
     "TooManyCellsError",
+    "DistortionError",
     # indexing
     "MAX_LEVEL",
     "str_to_int",

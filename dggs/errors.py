@@ -24,6 +24,7 @@ __all__ = [
     "LevelMismatchError",
     "InvalidCellError",
     "TooManyCellsError",
+    "DistortionError",
     "StorageError",
     "ExtensionLoadError",
 ]
@@ -59,6 +60,13 @@ class StorageError(DggsError):
 
 class TooManyCellsError(DggsValueError):
     """An operation would return more cells than its ``max_cells`` limit allows."""
+
+
+class DistortionError(DggsValueError):
+    """The grid bends between two cells, so local (i, j) cannot name one from the other.
+
+    As h3's ``E_PENTAGON`` ("pentagon distortion encountered"); docs/grid.md, "Local coordinates".
+    """
 
 
 class ExtensionLoadError(DggsError, RuntimeError):

@@ -67,6 +67,15 @@ def _center_child(s: pl.Series, level: int | None) -> pl.Series:
     return out
 
 
+def _cell_areas(s: pl.Series, unit: str) -> Any:
+    """:func:`dggs.cell_area` of ids only, checked as cells first.
+
+    ``cell_area`` reads a small integer as a level: a column of 0, 1 gave the mean areas of levels 0 and 1.
+    """
+    dggs.get_level(s)  # raises InvalidCellError naming the first value that is no cell id
+    return dggs.cell_area(s, unit)
+
+
 #: The verbs of the namespace: name -> (function of a Series and the arguments, output type of the input expr).
 VERBS: dict[str, tuple[Callable[..., Any], Callable[[pl.Expr], Any]]] = {
     "str_to_int": (lambda s: dggs.str_to_int(s).cast(pl.UInt64), lambda e: pl.UInt64),
@@ -74,7 +83,7 @@ VERBS: dict[str, tuple[Callable[..., Any], Callable[[pl.Expr], Any]]] = {
     "is_valid_cell": (dggs.is_valid_cell, lambda e: pl.Boolean),
     "get_level": (dggs.get_level, lambda e: pl.Int64),
     "get_face": (dggs.get_face, lambda e: pl.Int64),
-    "cell_area": (lambda s, unit="m^2": dggs.cell_area(s, unit), lambda e: pl.Float64),
+    "cell_area": (lambda s, unit="m^2": _cell_areas(s, unit), lambda e: pl.Float64),
     "cell_to_parent": (lambda s, level=None: dggs.cell_to_parent(s, level), _same),
     "cell_to_center_child": (lambda s, level=None: _center_child(s, level), _same),
     "cell_to_latlng": (lambda s: pl.struct(*(pl.lit(v).alias(k) for k, v in zip(("lat", "lng"), dggs.cell_to_latlng(s), strict=True)), eager=True),
@@ -184,6 +193,18 @@ class DggsSeries:
         return call
 
 
+def _degrees(s: pl.Series, name: str) -> pl.Series:
+    """A coordinate column as Float64, or a CoordinateError naming its first value.
+
+    polars' own cast raised its raw InvalidOperationError on text, and read booleans as 0 and 1.
+    """
+    if not s.dtype.is_numeric():
+        first = next((v for v in s.to_list() if v is not None), None)
+        lat_or_lng = "latitude" if name == "lat" else "longitude"
+        raise dggs.CoordinateError(f"{lat_or_lng} {first!r} is not a number (a {s.dtype} column)")
+    return s.cast(pl.Float64)
+
+
 def latlng_to_cell(lat: str | pl.Expr, lng: str | pl.Expr, level: int, as_int: bool = False) -> pl.Expr:
     """:func:`dggs.latlng_to_cell` of two columns (names or expressions), as an expression named ``cell``.
 
@@ -195,7 +216,8 @@ def latlng_to_cell(lat: str | pl.Expr, lng: str | pl.Expr, level: int, as_int: b
     lat_e, lng_e = (pl.col(c) if isinstance(c, str) else c for c in (lat, lng))
 
     def run(s: pl.Series) -> pl.Series:
-        return dggs.latlng_to_cell(s.struct.field("lat"), s.struct.field("lng"), level, as_int).rename("cell")
+        lat_s, lng_s = (_degrees(s.struct.field(f), f) for f in ("lat", "lng"))
+        return dggs.latlng_to_cell(lat_s, lng_s, level, as_int).rename("cell")
 
-    both = pl.struct(lat_e.cast(pl.Float64).alias("lat"), lng_e.cast(pl.Float64).alias("lng"))
+    both = pl.struct(lat_e.alias("lat"), lng_e.alias("lng"))
     return both.map_batches(run, return_dtype=pl.UInt64 if as_int else pl.String, is_elementwise=True).alias("cell")

@@ -4,10 +4,12 @@ Child positions count a parent's descendants at one level in digit order (as
 h3's ``cell_to_child_pos``): the digits below the parent's level read in base
 3, the level-1 digit (0-5) in base 6 when the parent is a face.
 
-Local coordinates name the cells of the anchor's face and of the three faces
-across its edges, unfolded into one plane, by integers (i, j) computed from
-their centroids (docs/grid.md, "Local coordinates"): the anchor is (0, 0), the
-lattice is the same at every level, and a pair (i, j) names at most one cell.
+Local coordinates name the cells of the anchor's chart (its sector of its face
+and the sector across that sector's face edge, unfolded into one plane; at
+level 0 its face and the three across its edges) by integers (i, j) computed
+from their centroids (docs/grid.md, "Local coordinates"): the anchor is (0, 0),
+the lattice is the same at every level, and a pair (i, j) names at most one
+cell.  Beyond the chart the grid bends and a DistortionError says so.
 The kernels are in :mod:`dggs.index._kernel.local`.
 """
 
@@ -19,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from dggs.errors import DggsValueError, LevelMismatchError
+from dggs.errors import DggsValueError, DistortionError, LevelMismatchError
 
 from ._checks import check_level
 from ._convert import CELL, VALUE, Kind, Op, apply, apply_pair, cells_in, cells_out, id_name
@@ -51,9 +53,10 @@ def _local_ij(anchors: np.ndarray, ids: np.ndarray) -> tuple[np.ndarray, np.ndar
     kl.local_ij(ids.shape[0], anchors, ids, i, j)
     if (i == kl.OUT_OF_RANGE).any():
         n = int(np.flatnonzero(i == kl.OUT_OF_RANGE)[0])
-        raise DggsValueError(
-            f"cell {id_name(ids[n])!r} has no local coordinates around anchor {id_name(anchors[n])!r}: it is neither "
-            "on the anchor's face nor on a face across one of its edges"
+        raise DistortionError(
+            f"cell {id_name(ids[n])!r} has no local coordinates around anchor {id_name(anchors[n])!r}: the grid bends "
+            "between them (the chart is the anchor's sector of its face and the sector across that sector's face edge; "
+            "docs/grid.md, \"Local coordinates\")"
         )
     return i, j
 
@@ -244,9 +247,13 @@ def _child_cells(ids: np.ndarray, positions: np.ndarray, level: int) -> np.ndarr
 def cell_to_local_ij(anchor: Any, cell: Any) -> Any:
     """Integer lattice coordinates (i, j) of ``cell`` around ``anchor`` (docs/grid.md, "Local coordinates").
 
-    The anchor is (0, 0).  Cells on the anchor's face and on the three faces
-    across its edges (unfolded into the anchor's face plane) have coordinates,
-    one pair per cell; :func:`local_ij_to_cell` is the exact inverse.
+    The anchor is (0, 0).  The cells of the anchor's chart have coordinates, one
+    pair per cell: at level 0 the anchor's face and the three across its edges;
+    finer, the anchor's 120-degree sector of its face (Snyder's projection is one
+    smooth map there; the sectors are the level-1 digit pairs {0, 1}, {2, 3},
+    {4, 5}) and the sector across the face edge bounding it, unfolded into the
+    anchor's face plane.  Beyond, the projection bends (as h3 refuses across
+    pentagons).  :func:`local_ij_to_cell` is the exact inverse.
 
     Parameters
     ----------
@@ -264,8 +271,8 @@ def cell_to_local_ij(anchor: Any, cell: Any) -> Any:
         A malformed id.
     LevelMismatchError
         A cell and its anchor are at different levels.
-    DggsValueError
-        A cell outside the anchor's face and the faces across its edges (the message names both).
+    DistortionError
+        A cell outside the anchor's chart: the grid bends between them (the message names both).
 
     Examples
     --------
@@ -273,6 +280,10 @@ def cell_to_local_ij(anchor: Any, cell: Any) -> Any:
     (0, 0)
     >>> cell_to_local_ij("C401", ["C402", "C400"])
     ([4, -1], [2, 1])
+    >>> cell_to_local_ij("K110121", "K210121")
+    Traceback (most recent call last):
+    ...
+    dggs.errors.DistortionError: cell 'K210121' has no local coordinates around anchor 'K110121': the grid bends between them (the chart is the anchor's sector of its face and the sector across that sector's face edge; docs/grid.md, "Local coordinates")
     """
     return apply_pair(_LOCAL_IJ, anchor, cell)
 
@@ -298,7 +309,7 @@ def local_ij_to_cell(anchor: Any, i: Any, j: Any) -> Any:
         A malformed anchor.
     DggsValueError
         Coordinates that are no integers, or that name no cell: not a cell's centroid of the lattice, or outside the
-        anchor's face and the faces across its edges (the message names them).
+        anchor's chart (the message names them).
 
     Examples
     --------
@@ -322,7 +333,7 @@ def _local_cells(ids: np.ndarray, ii: np.ndarray, jj: np.ndarray) -> np.ndarray:
         n = int(np.flatnonzero(out == 0)[0])
         raise DggsValueError(
             f"(i, j) = ({int(ii[n])}, {int(jj[n])}) names no cell around anchor {id_name(ids[n])!r}: not a cell of the "
-            "lattice, or outside the anchor's face and the faces across its edges"
+            "lattice, or outside the anchor's chart (its sector of its face and the sector across that sector's face edge)"
         )
     return out
 

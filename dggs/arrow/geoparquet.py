@@ -36,6 +36,7 @@ Examples
 
 from __future__ import annotations
 
+import numbers
 from typing import Any
 
 import numpy as np
@@ -192,9 +193,23 @@ def file_bbox(bounds: np.ndarray) -> list[float] | None:
 
 
 def _check_box(box: Any) -> tuple[float, float, float, float]:
-    values = tuple(float(v) for v in box)
-    if len(values) != 4 or not all(np.isfinite(values)):
-        raise DggsValueError(f"a bbox is 4 finite numbers (xmin, ymin, xmax, ymax), not {box!r}")
+    """(xmin, ymin, xmax, ymax) as floats, or a DggsValueError naming ``box``.
+
+    Text, bytes, bools, non-numbers, numbers too large for a float and any other count than four are refused,
+    not read as numbers (a str or bytes of four characters iterates to four values).
+    """
+    bad = DggsValueError(f"a bbox is 4 finite numbers (xmin, ymin, xmax, ymax), not {box!r}")
+    if isinstance(box, (str, bytes, bytearray, dict)) or not np.iterable(box):
+        raise bad
+    items = list(box)
+    if len(items) != 4 or not all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in items):
+        raise bad
+    try:
+        values = tuple(float(v) for v in items)
+    except (OverflowError, TypeError, ValueError):
+        raise bad from None
+    if not all(np.isfinite(values)):
+        raise bad
     x0, y0, x1, y1 = values
     if not (-180.0 <= x0 <= 180.0 and -180.0 <= x1 <= 180.0 and -90.0 <= y0 <= y1 <= 90.0):
         raise DggsValueError(f"bbox {box!r} is outside lng -180..180, lat -90..90 (or ymin > ymax)")

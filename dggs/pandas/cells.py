@@ -44,6 +44,16 @@ def _explode(frame: pd.DataFrame, lists: list[Any], name: str) -> pd.DataFrame:
     return out.assign(**{name: pd.Series(flat, index=out.index, dtype=object if not flat or isinstance(flat[0], str) else np.uint64)})
 
 
+def _cell_areas(ids: Any, unit: str) -> Any:
+    """:func:`dggs.cell_area` of ids only, checked as cells first.
+
+    ``cell_area`` reads a small integer as a level: an index 0, 1, ... of a frame without a cell column gave the
+    mean areas of levels 0, 1, ...
+    """
+    get_level(ids)  # raises InvalidCellError naming the first value that is no cell id
+    return cell_area(ids, unit)
+
+
 class CellVerbs:
     """The accessor's per-cell verbs (h3pandas's names in the docs' table, docs/pandas.md)."""
 
@@ -84,7 +94,7 @@ class CellVerbs:
 
     def cell_area(self, unit: str = "km^2", column: str | None = None) -> pd.DataFrame:
         """The frame with a column ``cell_area``: :func:`dggs.cell_area` in ``unit`` (default km^2, as h3pandas)."""
-        _, out = self._call(lambda ids: cell_area(ids, unit), column)
+        _, out = self._call(lambda ids: _cell_areas(ids, unit), column)
         return self._df.assign(cell_area=np.asarray(out, dtype=float))
 
     def cell_to_latlng(self, column: str | None = None) -> pd.DataFrame:

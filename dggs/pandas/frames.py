@@ -80,6 +80,10 @@ def one_column(frame: pd.DataFrame, name: Any) -> pd.Series:
     ColumnError
         ``name`` is not a column, or several columns have that name.
     """
+    try:
+        hash(name)
+    except TypeError:  # a list or an array: no label of a column (pandas raises a raw TypeError on it)
+        raise ColumnError(f"column {name!r} is not a column label (a str or another hashable label)") from None
     times = int((frame.columns == name).sum()) if name in frame.columns else 0
     if times == 0:
         raise ColumnError(f"column {name!r} is not in the frame (columns: {list(frame.columns)})")
@@ -136,11 +140,13 @@ def frame_coordinates(frame: pd.DataFrame, name: str) -> np.ndarray:
         A value that is not a number (names the row).
     """
     col = one_column(frame, name)
-    if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype):
+    complex_ = pd.api.types.is_complex_dtype(col.dtype)  # to float64 would drop the imaginary part, silently
+    if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col.dtype) and not complex_:
         numbers: np.ndarray = col.to_numpy(dtype=np.float64, na_value=np.nan)  # pandas is untyped here
         return numbers
-    values = pd.to_numeric(col, errors="coerce")
-    bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
+    values = pd.to_numeric(col, errors="coerce") if not complex_ else col
+    not_numbers = (bool, np.bool_, complex, np.complexfloating, bytes, bytearray)  # as the core: no booleans, ...
+    bad = values.isna() & col.notna() | col.map(lambda v: isinstance(v, not_numbers)).astype(bool)
     if bad.any():
         i = int(np.flatnonzero(bad.to_numpy())[0])
         raise CoordinateError(f"{name} {col.iloc[i]!r} in row {row_label(frame, i)} is not a number")

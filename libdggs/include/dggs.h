@@ -413,12 +413,14 @@ dggs_error dggs_cell_to_child_pos(dggs_cell cell, int parent_level, int64_t *pos
 dggs_error dggs_child_pos_to_cell(int64_t pos, dggs_cell parent, int child_level, dggs_cell *child);
 
 /* Integer lattice coordinates (i, j) of `cell` around `anchor`, a cell of the same level (docs/grid.md, "Local
- * coordinates"): the anchor is (0, 0); the cells of the anchor's face and of the three faces across its edges,
- * unfolded into its plane, have one pair each. Errors: DGGS_E_CELL, DGGS_E_LEVEL_MISMATCH (two levels),
- * DGGS_E_FAILED (a cell outside that range). */
+ * coordinates"): the anchor is (0, 0); the cells of its chart, unfolded into its plane, have one pair each. The
+ * chart is, at level 0, the anchor's face and the three across its edges; finer, the anchor's 120-degree sector of
+ * Snyder's projection (its level-1 digit pair) and the sector across the face edge bounding it (as H3's E_PENTAGON,
+ * the grid bends beyond: across the lines from a face's centre to its vertices). Errors: DGGS_E_CELL,
+ * DGGS_E_LEVEL_MISMATCH (two levels), DGGS_E_FAILED (a cell outside the chart). */
 dggs_error dggs_cell_to_local_ij(dggs_cell anchor, dggs_cell cell, int64_t *i, int64_t *j);
 /* The cell at (i, j) around `anchor` (the exact inverse of dggs_cell_to_local_ij). Errors: DGGS_E_CELL (a bad
- * anchor), DGGS_E_DOMAIN (a pair naming no cell: not a centroid of the lattice, or out of range). */
+ * anchor), DGGS_E_DOMAIN (a pair naming no cell: not a centroid of the lattice, or outside the chart). */
 dggs_error dggs_local_ij_to_cell(dggs_cell anchor, int64_t i, int64_t j, dggs_cell *cell);
 
 /* -- directed edges (edges.c) --

@@ -7,6 +7,7 @@
 
 #include "bits.h"
 #include "dggs.h"
+#include "faces.h"
 #include "local_tables.h"
 #include "points.h"
 
@@ -104,13 +105,38 @@ static int basis(uint64_t anchor, double *ox, double *oy, double *e1x, double *e
     return face;
 }
 
-/* local.py _one_ij. round() is numba's llvm.rint (half to even), then a conversion to int64. */
+/* The face edge k (corner k to corner k + 1 of dggs_local_corners) that bounds Snyder's 120-degree sector s of a
+ * face (dggs_sector_of: planar azimuth // 120 clockwise from +y): sector 0 runs from corner 2 (azimuth 0) to
+ * corner 1 (120), sector 1 from corner 1 to corner 0 (240), sector 2 from corner 0 back to corner 2. */
+static const int edge_of_sector[3] = {1, 0, 2};
+
+/* Whether a cell at level >= 1 on face g with face-frame centroid (px, py) is in the chart of an anchor on face f
+ * in sector s (docs/grid.md, "Local coordinates"): the anchor's sector, or the sector across the face edge that
+ * bounds it (its mirror image on the face across that edge). Snyder's projection is one smooth map within a
+ * sector and mirror-symmetric across a face edge, but bends across the lines from a face's centre to its
+ * vertices (the radial scale's derivative changes sign there, most near the vertex), so no affine map of the
+ * cells' centres on the sphere fits a chart that crosses them (issue 32 item 4). Every cell lies in one sector
+ * (the lines are edges of the level-1 cells), so its centroid decides. */
+static bool in_chart(int f, int s, int g, double px, double py) {
+    int t = dggs_sector_of(px, py);
+    if (g == f) return t == s;
+    return g == dggs_local_unfold_face[f][edge_of_sector[s]] && dggs_local_unfold_face[g][edge_of_sector[t]] == f;
+}
+
+/* local.py _one_ij. round() is numba's llvm.rint (half to even), then a conversion to int64. At level >= 1 only
+ * the cells of the anchor's chart (in_chart) answer; at level 0 the anchor's face and the three across its
+ * edges. */
 bool dggs_one_ij(uint64_t anchor, uint64_t cell, int64_t *i, int64_t *j) {
     double ox, oy, e1x, e1y, e2x, e2y, scale;
     int f = basis(anchor, &ox, &oy, &e1x, &e1y, &e2x, &e2y, &scale);
     double t[6];
     int g = dggs_triangle(cell, t);
     double px = (t[0] + t[2] + t[4]) / 3.0, py = (t[1] + t[3] + t[5]) / 3.0;
+    if (dggs_level_of(anchor) > 0 && !in_chart(f, dggs_sector_of(ox, oy), g, px, py)) {
+        *i = DGGS_OUT_OF_RANGE;
+        *j = 0;
+        return false;
+    }
     if (g != f) {
         int k = -1;
         for (int e = 0; e < 3; e++)

@@ -8,9 +8,11 @@
  * Local coordinates (docs/grid.md, "Local coordinates"): with the anchor's e1 = 2 (C - A) and e2 = e1 turned 60
  * degrees counter-clockwise, a cell's centroid relative to the anchor's centroid is (u e1 + v e2) / 18 with
  * integers u = v (mod 3); i = (2u + v) / 3 and j = (u + 2v) / 3. At level 0 e1 is a face edge and the centroid
- * is (u e1 + v e2) / 3. Cells on the anchor's face and on the three faces across its edges are unfolded into the
- * anchor's face plane by the rigid motion fixing the two shared vertices (local_tables.h); other cells are out of
- * range. A kernel marks what it cannot answer: DGGS_OUT_OF_RANGE in i, or the null id.
+ * is (u e1 + v e2) / 3. Cells on the anchor's face and on the faces across its edges are unfolded into the
+ * anchor's face plane by the rigid motion fixing the two shared vertices (local_tables.h). The chart (the cells
+ * that answer) is, at level 0, the anchor's face and the three across its edges; finer, the anchor's sector of
+ * Snyder's projection and its mirror image across the face edge bounding it (local.c in_chart); other cells are
+ * out of range. A kernel marks what it cannot answer: DGGS_OUT_OF_RANGE in i, or the null id.
  *
  * Ids are valid and levels 0..DGGS_MAX_LEVEL unless a function says otherwise. */
 #ifndef DGGS_LOCAL_H
@@ -37,7 +39,7 @@ uint64_t dggs_child_pos_cell(int64_t pos, uint64_t parent, int level);
 uint64_t dggs_one_child_cell(int64_t parent, int64_t pos, int level);
 
 /* local.py _one_ij: (i, j) of `cell` around `anchor` (valid ids of one level); false with
- * (DGGS_OUT_OF_RANGE, 0) for a cell neither on the anchor's face nor on a face across one of its edges. */
+ * (DGGS_OUT_OF_RANGE, 0) for a cell outside the anchor's chart. */
 bool dggs_one_ij(uint64_t anchor, uint64_t cell, int64_t *i, int64_t *j);
 /* local.py one_local_ij: the single-pair entry: false, with (0, 0), for invalid ids or two levels, and false
  * with (DGGS_OUT_OF_RANGE, 0) for no pair. */

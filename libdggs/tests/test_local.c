@@ -20,6 +20,21 @@ static uint64_t rnd_cell(int face, int level) {
     return c;
 }
 
+/* The chart by ids alone (docs/grid.md, "Local coordinates"): Snyder's sectors are the level-1 digit pairs
+ * {0, 1}, {2, 3}, {4, 5} (the lines from a face's centre to its vertices are edges of the level-1 cells), and pair
+ * p borders face edge edge_of_pair[p] (corner k to k + 1), read off split26's level-1 triangles (the face across
+ * that edge holds both of the pair's vertices; tests/index/test_local.py sector_edges). A cell answers when it shares the anchor's face and pair, or lies on the face
+ * across the edge the anchor's pair borders, in the pair bordering that same edge. Level 0: four faces. */
+static bool in_chart_by_digits(uint64_t anchor, uint64_t cell) {
+    const int8_t *t = dggs_unfold_face_table();
+    int f = dggs_face_of(anchor), g = dggs_face_of(cell);
+    if (dggs_level_of(anchor) == 0) return g == f || t[3 * f] == g || t[3 * f + 1] == g || t[3 * f + 2] == g;
+    int pa = dggs_digit_of(anchor, 1) / 2, pc = dggs_digit_of(cell, 1) / 2;
+    if (g == f) return pa == pc;
+    static const int edge_of_pair[3] = {1, 0, 2};
+    return t[3 * f + edge_of_pair[pa]] == g && t[3 * g + edge_of_pair[pc]] == f;
+}
+
 static void test_docs(void) {
     /* cell_to_child_pos("C421", 1) == 7, cell_to_child_pos("C401", 0) == 4 * 9 + 0 * 3 + 1 == 37 */
     CHECK(dggs_child_pos(sid("C421"), 1) == 7);
@@ -66,6 +81,7 @@ static void test_unfold(void) {
  * changes the cell or names none, and the other 16 faces are out of range. */
 static void test_round_trips(void) {
     const int8_t *t = dggs_unfold_face_table();
+    int answered = 0;
     for (int level = 0; level <= DGGS_MAX_LEVEL; level++) {
         for (int trial = 0; trial < 200; trial++) {
             int f = (int)(rnd() % 20);
@@ -73,6 +89,11 @@ static void test_round_trips(void) {
             int g = trial % 4 == 0 ? f : t[3 * f + (int)(rnd() % 3)];
             uint64_t cell = rnd_cell(g, level);
             int64_t i, j;
+            if (!in_chart_by_digits(anchor, cell)) { /* across a sector line of Snyder's projection: refused */
+                CHECK(!dggs_one_ij(anchor, cell, &i, &j) && i == DGGS_OUT_OF_RANGE);
+                continue;
+            }
+            answered++;
             CHECK(dggs_one_ij(anchor, cell, &i, &j));
             CHECK_EQ_U64(dggs_one_cell(anchor, i, j), cell);
             int64_t u = 2 * i - j, v = 2 * j - i;
@@ -85,18 +106,42 @@ static void test_round_trips(void) {
             }
         }
     }
+    CHECK(answered > 1000); /* of 29 * 200 pairs */
+}
+
+/* Issue 32 item 4: round K110121 and E222202 the cells across a line from the face's centre to a vertex (another
+ * level-1 digit pair) are refused, the rest of the chart answers and round trips; the values are Python's before
+ * the chart kept to one sector (docs/grid.md's examples and the issue's neighbourhoods). */
+static void test_chart_refuses_the_bend(void) {
+    int64_t i, j;
+    CHECK(dggs_one_ij(sid("K110121"), sid("K110021"), &i, &j) && i == 3 && j == 6);
+    CHECK_EQ_U64(dggs_one_cell(sid("K110121"), 3, 6), sid("K110021"));
+    CHECK(!dggs_one_ij(sid("K110121"), sid("K210121"), &i, &j) && i == DGGS_OUT_OF_RANGE);
+    CHECK(!dggs_one_ij(sid("K110121"), sid("K211122"), &i, &j) && i == DGGS_OUT_OF_RANGE);
+    CHECK_EQ_U64(dggs_one_cell(sid("K110121"), 11, 11), 0); /* K210121's pair before */
+    CHECK(!dggs_one_ij(sid("E222202"), sid("E122202"), &i, &j) && i == DGGS_OUT_OF_RANGE);
+    CHECK(dggs_cell_to_local_ij(sid("E222202"), sid("E122202"), &i, &j) == DGGS_E_FAILED);
+    CHECK(dggs_cell_to_local_ij(sid("E222202"), sid("E222200"), &i, &j) == DGGS_OK);
+    CHECK(dggs_one_ij(sid("C5"), sid("C4"), &i, &j) && !dggs_one_ij(sid("C5"), sid("C0"), &i, &j));
 }
 
 static void test_frozen(void) {
     size_t n = sizeof frozen_local / sizeof frozen_local[0];
     for (size_t r = 0; r < n; r++) {
         const frozen_local_row *row = &frozen_local[r];
-        int64_t i, j;
+        int64_t i, j, ti, tj;
         bool ok = dggs_one_ij(row->anchor, row->cell, &i, &j);
-        CHECK(i == row->i && j == row->j);
-        CHECK(ok == (row->i != DGGS_OUT_OF_RANGE));
-        CHECK_EQ_U64(dggs_one_cell(row->anchor, i, j), row->back);
-        CHECK_EQ_U64(dggs_one_cell(row->anchor, ok ? i + 1 : j, j), row->off);
+        CHECK(ok == in_chart_by_digits(row->anchor, row->cell));
+        if (ok) { /* unchanged wherever the chart answers (the frozen values predate its keeping to one sector) */
+            CHECK(i == row->i && j == row->j);
+            CHECK_EQ_U64(dggs_one_cell(row->anchor, i, j), row->back);
+            uint64_t off = dggs_one_cell(row->anchor, i + 1, j);
+            if (off != row->off) /* the frozen neighbour pair now falls across a sector line: refused */
+                CHECK(off == 0 && !in_chart_by_digits(row->anchor, row->off) && !dggs_one_ij(row->anchor, row->off, &ti, &tj));
+        } else {
+            CHECK(i == DGGS_OUT_OF_RANGE);
+            CHECK_EQ_U64(dggs_one_cell(row->anchor, row->i, row->j), row->i == DGGS_OUT_OF_RANGE ? row->back : 0);
+        }
         CHECK(dggs_child_pos(row->cell, row->p1) == row->pos1);
         CHECK(dggs_child_pos(row->cell, row->p2) == row->pos2);
         CHECK_EQ_U64(dggs_child_pos_cell(row->pos1, dggs_parent_at(row->cell, row->p1), dggs_level_of(row->cell)),
@@ -135,6 +180,7 @@ int main(void) {
     test_unfold();
     test_round_trips();
     test_frozen();
+    test_chart_refuses_the_bend();
     test_public();
     CHECK_DONE();
 }

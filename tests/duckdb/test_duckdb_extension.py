@@ -246,6 +246,16 @@ def test_edges_and_local_ij(ext: Path) -> None:
     assert int(got["e_int"]) + (1 << 64) == int(dggs.cells_to_directed_edge(dggs.str_to_int("C401"), dggs.str_to_int("C402")))
 
 
+def test_local_ij_across_the_bend_is_null(ext: Path) -> None:
+    """The C core refuses K210121 around K110121 (across a line from the face's centre to a vertex, as Python's
+    DistortionError): NULL, as the extension answers every pair the core refuses; the pair it keeps agrees."""
+    got = rows(ext, """
+        SELECT dggs_cell_to_local_ij('K110121', 'K210121') AS bend, dggs_cell_to_local_ij('K110121', 'K110021') AS ij,
+               dggs_local_ij_to_cell('K110121', 11, 11) AS gone, dggs_local_ij_to_cell('K110121', 3, 6) AS at""")[0]
+    assert got["bend"] is None and got["gone"] is None and got["at"] == "K110021"
+    assert (got["ij"]["i"], got["ij"]["j"]) == dggs.cell_to_local_ij("K110121", "K110021") == (3, 6)
+
+
 # ---------------------------------------------------------------------------------------------- NULL, invalid, WKT/WKB
 
 

@@ -946,3 +946,150 @@ def test_duckdb_load_of_a_broken_file_or_connection(unsigned_con, tmp_path):
     assert not ok and isinstance(got, dggs.ExtensionLoadError) and isinstance(got, RuntimeError)
     ok, got = outcome(load, unsigned_con, junk)
     assert isinstance(got, dggs.ExtensionLoadError) and "it's" in str(got)
+
+
+# --------------------------------------------------------------------------
+# Integrations the suite skipped (issue 32): dggs.arrow's box, the pandas accessor, the polars namespace
+# --------------------------------------------------------------------------
+
+BOXES = [None, 1, 2.5, "1234", "abcd", b"\x01\x02\x03\x04", bytearray(b"\x01\x02\x03\x04"), {"a": 1, "b": 2, "c": 3, "d": 4},
+         (1, 2, 3), (1, 2, 3, 4, 5), (), np.array([[0, 0, 1, 1]]), (True, 0, 1, 1), (np.True_, 0, 1, 1), (1 << 1100, 0, 1, 1),
+         (1j, 0, 1, 1), (object(), 0, 1, 1)]
+BOXES += [(v, -10, 1, 10) for v in CORRUPT_SCALARS] + [(0, v, 1, 10) for v in BAD_NUMBERS]
+
+
+@pytest.mark.parametrize("box", BOXES, ids=repr)
+def test_split_box_and_bbox_filter(box):
+    """A query box is 4 finite real numbers in range: anything else (text and bytes, which iterate to 4 characters
+    or bytes, booleans, numbers too large for a float) is a DggsValueError naming the box, never a raw error or a
+    box read from the wrong values."""
+    from dggs.arrow import bbox_filter, split_box
+
+    ok, res = outcome(split_box, box)
+    numbers = isinstance(box, tuple) and len(box) == 4 and all(
+        isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, (bool, np.bool_)) for v in box)
+    if ok:
+        assert numbers and res[0][1] == float(box[1]) and all(len(b) == 4 for b in res), (box, res)
+    else:
+        assert isinstance(res, dggs.DggsValueError)
+        assert repr(box) in str(res)
+        assert not outcome(bbox_filter, box)[0]
+
+
+ACCESSOR_ARGS = {"cell_to_children": (4,), "linetrace": (4,), "resample": (2,), "aggregate": (2,)}
+ACCESSOR_CELL_VERBS = ["aggregate", "cell_area", "cell_to_center_child", "cell_to_children", "cell_to_geometry", "cell_to_latlng",
+                       "cell_to_parent", "cell_to_point", "disk_smoothing", "get_face", "get_level", "grid_disk", "grid_ring",
+                       "is_valid_cell", "resample"]
+
+
+def test_every_accessor_method_is_covered():
+    pytest.importorskip("geopandas")
+    import dggs.pandas  # noqa: F401
+
+    methods = {m for m in dir(pd.DataFrame().dggs) if not m.startswith("_")}
+    assert methods == set(ACCESSOR_CELL_VERBS) | {"latlng_to_cell", "linetrace", "polyfill", "sjoin_cells"}
+
+
+@pytest.mark.parametrize("value", CORRUPT_SCALARS, ids=repr)
+@pytest.mark.parametrize("verb", ACCESSOR_CELL_VERBS)
+def test_accessor_cell_verbs_on_corrupt_ids(verb, value):
+    """``df.dggs.<verb>()`` over a cell column holding a corrupt id: a DggsError naming it (is_valid_cell: False),
+    never a raw error nor an answer for the bad row."""
+    pytest.importorskip("geopandas")
+    import dggs.pandas  # noqa: F401
+
+    df = pd.DataFrame({"cell_3": pd.Series([GOOD, value], dtype=object), "x": [1.0, 2.0]})
+    ok, res = outcome(getattr(df.dggs, verb), *ACCESSOR_ARGS.get(verb, ()))
+    if verb == "is_valid_cell":
+        assert ok and res["is_valid"].tolist() == [True, False]
+    else:
+        assert not ok, (verb, value, res)
+        names(res, value)
+
+
+@pytest.mark.parametrize("verb", ACCESSOR_CELL_VERBS)
+def test_accessor_index_of_row_numbers_is_no_cell(verb):
+    """A frame without a cell column reads its index: row numbers 0, 1 are no cell ids (cell_area read them as
+    levels and answered each level's mean area)."""
+    pytest.importorskip("geopandas")
+    import dggs.pandas  # noqa: F401
+
+    ok, res = outcome(getattr(pd.DataFrame({"x": [1.0, 2.0]}).dggs, verb), *ACCESSOR_ARGS.get(verb, ()))
+    if verb == "is_valid_cell":
+        assert ok and res["is_valid"].tolist() == [False, False]
+    else:
+        assert not ok and isinstance(res, dggs.InvalidCellError), (verb, res)
+        names(res, 0)
+
+
+@pytest.mark.parametrize("label", [["cell_3"], np.array(["cell_3"]), {"cell_3"}, "nope", 3, ("cell_3",)], ids=repr)
+@pytest.mark.parametrize("verb", ACCESSOR_CELL_VERBS)
+def test_accessor_column_labels(verb, label):
+    """``column=`` that is no column of the frame (or no label at all: a list, an array) is a DggsError naming it."""
+    pytest.importorskip("geopandas")
+    import dggs.pandas  # noqa: F401
+
+    df = pd.DataFrame({"cell_3": [GOOD, "C402"], "x": [1.0, 2.0]})
+    ok, res = outcome(getattr(df.dggs, verb), *ACCESSOR_ARGS.get(verb, ()), column=label)
+    assert not ok
+    assert repr(label) in str(res) or str(label) in str(res)
+
+
+@pytest.mark.parametrize("value", [1j, np.complex128(1 + 0j), True, "n/a", b"1", object(), math.inf, 91.0], ids=repr)
+@pytest.mark.parametrize("where", ["lat", "lng"])
+def test_accessor_latlng_to_cell_coordinates(where, value):
+    """Complex numbers, booleans, text and objects in a coordinate column are refused naming the value (a complex
+    column lost its imaginary part on the way to float64, and the row got a cell)."""
+    pytest.importorskip("geopandas")
+    import dggs.pandas  # noqa: F401
+
+    cols = {"lat": pd.Series([1.0, 2.0], dtype=object), "lng": pd.Series([3.0, 4.0], dtype=object)}
+    cols[where][1] = value
+    typed = pd.DataFrame({k: (pd.Series(list(v)) if k == where else v) for k, v in cols.items()})  # complex128, bool, ...
+    for df in (pd.DataFrame(cols), typed):
+        ok, res = outcome(df.dggs.latlng_to_cell, 3)
+        if where == "lng" and value == 91.0:  # any finite longitude is on the globe
+            assert ok and res["cell_3"].tolist() == dggs.latlng_to_cell([1.0, 2.0], [3.0, 91.0], 3)
+            continue
+        assert not ok and isinstance(res, dggs.CoordinateError), (value, res)
+        if df is not typed or not isinstance(value, (complex, np.complexfloating)):  # a complex column names its row 0
+            names(res, value)
+
+
+POLARS_SERIES = [["C9", GOOD], ["", None], [" C401"], ["A0\x00"], ["C403"], [GOOD, None]]
+POLARS_INT_SERIES = [[-1, 5], [0, 1], [(1 << 64) - 1], [GOOD_INT, None]]
+
+
+@pytest.mark.parametrize("values", POLARS_SERIES + POLARS_INT_SERIES + [[1.5, math.nan], [True], [b"C9"]], ids=repr)
+def test_polars_namespace_on_corrupt_ids(values):
+    """Every verb of ``pl.col(...).dggs`` and ``Series.dggs`` over a column with a corrupt id: a DggsError naming it
+    (is_valid_cell: False), never a raw polars error nor an answer for the bad row."""
+    pl = pytest.importorskip("polars")
+    import dggs.polars
+
+    dtype = pl.UInt64 if values in POLARS_INT_SERIES and min(v for v in values if v is not None) >= 0 else None
+    s = pl.Series("cell", values, dtype=dtype, strict=False)
+    bad = next(v for v in values if not dggs.is_valid_cell(v))
+    for verb in dggs.polars.VERBS:
+        for run in (lambda verb=verb: getattr(s.dggs, verb)(), lambda verb=verb: pl.DataFrame({"cell": s}).select(getattr(pl.col("cell").dggs, verb)())):
+            ok, res = outcome(run)
+            if verb == "is_valid_cell":
+                got = res.to_list() if ok and isinstance(res, pl.Series) else res["cell"].to_list()
+                assert ok and got == [bool(dggs.is_valid_cell(v)) for v in values], (values, got)
+            else:
+                assert not ok, (verb, values, res)
+                names(res, bad)
+
+
+@pytest.mark.parametrize("column", [["x"], [True], [b"1"], [None]], ids=repr)
+def test_polars_latlng_to_cell_columns(column):
+    """Text, booleans and binary in a coordinate column are a CoordinateError naming the value (polars' strict cast
+    raised its raw InvalidOperationError on text and read booleans as 0 and 1); a null is a missing value, refused."""
+    pl = pytest.importorskip("polars")
+    import dggs.polars
+
+    df = pl.DataFrame({"lat": column, "lng": [0.0]})
+    ok, res = outcome(lambda: df.select(dggs.polars.latlng_to_cell("lat", "lng", 3)))
+    assert not ok and isinstance(res, dggs.CoordinateError), res
+    if column[0] is not None:
+        names(res, column[0])

@@ -21,7 +21,7 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import dggs
-from dggs.errors import DggsValueError, InvalidCellError, LevelMismatchError
+from dggs.errors import DggsValueError, DistortionError, InvalidCellError, LevelMismatchError
 
 from ..strategies import cells, examples, special_points
 
@@ -33,6 +33,40 @@ def all_cells(level):
 def region_faces(anchor: str) -> set[str]:
     """The anchor's face and the three across its edges (from the base cells' adjacency)."""
     return {anchor[0], *dggs.edge_neighbors(anchor[0])}
+
+
+def sector_edges(cells_: list[str]) -> list[frozenset[int]]:
+    """The icosahedron edge (its two vertex numbers) bounding the 120-degree sector of Snyder's projection that holds
+    each cell (level >= 1): the sector between a face's vertices n and n + 1 (``split26.FACE_VERTICES``, at planar
+    azimuths 0, 120 and 240 degrees clockwise from +y), found from the cell's planar centroid by azimuth
+    (tests.gridref, numpy, independent of the kernel)."""
+    from dggs.geometry.icosahedron import ISEA
+
+    from ..gridref import FACES, planar_corners
+
+    fv = ISEA.geometry.face_vertices
+    out = []
+    for cell, (x, y) in zip(cells_, planar_corners(cells_).mean(axis=1), strict=True):
+        t = int((np.degrees(np.arctan2(x, y)) % 360) // 120)
+        f = FACES.index(cell[0])
+        out.append(frozenset((int(fv[f][t]), int(fv[f][(t + 1) % 3]))))
+    return out
+
+
+def in_chart(anchor: str, cells_: list[str]) -> list[bool]:
+    """The cells local (i, j) answers for around ``anchor`` (docs/grid.md, "Local coordinates"): at level 0 the
+    anchor's face and the three across its edges; finer, the cells whose sector is bounded by the same icosahedron
+    edge as the anchor's (the anchor's sector and its mirror image across that face edge)."""
+    if len(anchor) == 1:
+        return [c[0] in region_faces(anchor) for c in cells_]
+    edge = sector_edges([anchor])[0]
+    return [e == edge for e in sector_edges(cells_)]
+
+
+def split_chart(anchor: str, cells_: list[str]) -> tuple[list[str], list[str]]:
+    """(inside, outside) of the anchor's chart, in order."""
+    ok = in_chart(anchor, cells_)
+    return [c for c, o in zip(cells_, ok, strict=True) if o], [c for c, o in zip(cells_, ok, strict=True) if not o]
 
 
 def norm(i, j):
@@ -50,9 +84,7 @@ def test_exhaustive_round_trip_and_uniqueness(level):
     rng = np.random.default_rng(level)
     anchors = sorted(set(special_cells(level)) | set(rng.choice(every, 8).tolist()))
     for anchor in anchors:
-        faces = region_faces(anchor)
-        inside = [c for c in every if c[0] in faces]
-        outside = [c for c in every if c[0] not in faces]
+        inside, outside = split_chart(anchor, every)
         i, j = dggs.cell_to_local_ij(anchor, inside)
         assert dggs.cell_to_local_ij(anchor, anchor) == (0, 0)
         assert len(set(zip(i, j, strict=True))) == len(inside)  # one pair per cell
@@ -60,7 +92,7 @@ def test_exhaustive_round_trip_and_uniqueness(level):
         ai = dggs.str_to_int(anchor)
         assert dggs.local_ij_to_cell(ai, np.array(i), np.array(j)).tolist() == dggs.str_to_int(inside)
         for c in outside[:: max(1, len(outside) // 10)]:
-            with pytest.raises(DggsValueError, match=c):
+            with pytest.raises(DistortionError, match=f"{c}.*{anchor}"):
                 dggs.cell_to_local_ij(anchor, c)
         # every other integer pair in the box names no cell
         taken = set(zip(i, j, strict=True))
@@ -75,8 +107,7 @@ def test_neighbours_are_mirror_images(level):
     """Every cell's three edge neighbours (within the range) at squared lattice lengths {3, 4, 12}, across face edges too."""
     every = all_cells(level)
     for anchor in special_cells(level)[:6]:
-        faces = region_faces(anchor)
-        inside = [c for c in every if c[0] in faces]
+        inside, _ = split_chart(anchor, every)
         ij = dict(zip(inside, zip(*dggs.cell_to_local_ij(anchor, inside), strict=True), strict=True))
         crossings = 0
         for c in inside:
@@ -100,9 +131,7 @@ def test_neighbours_are_mirror_images(level):
 def test_round_trip_around_any_anchor(anchor, k, as_int):
     """All cells of a disk around the anchor: on the range, exact inverses; off it, refused (their face tells)."""
     disk = dggs.grid_disk(anchor, k)
-    faces = region_faces(anchor)
-    inside = [c for c in disk if c[0] in faces]
-    outside = [c for c in disk if c[0] not in faces]
+    inside, outside = split_chart(anchor, disk)
     a = dggs.str_to_int(anchor) if as_int else anchor
     ids = dggs.str_to_int(inside) if as_int else inside
     i, j = dggs.cell_to_local_ij(a, ids)
@@ -115,7 +144,7 @@ def test_round_trip_around_any_anchor(anchor, k, as_int):
                 dj = j[inside.index(m)] - j[inside.index(c)]
                 assert norm(di, dj) in ({3, 4, 12} if len(anchor) > 1 else {1})
     for c in outside:
-        with pytest.raises(DggsValueError):
+        with pytest.raises(DistortionError):
             dggs.cell_to_local_ij(a, dggs.str_to_int(c) if as_int else c)
 
 
@@ -123,7 +152,7 @@ def test_round_trip_around_any_anchor(anchor, k, as_int):
 def test_special_cells(level):
     """Anchors at poles, the antimeridian, icosahedron vertices and edges: their neighbours and back."""
     for anchor in special_cells(level):
-        ring = [c for c in dggs.grid_disk(anchor, 2) if c[0] in region_faces(anchor)]
+        ring, _ = split_chart(anchor, dggs.grid_disk(anchor, 2))
         i, j = dggs.cell_to_local_ij(anchor, ring)
         assert dggs.local_ij_to_cell(anchor, i, j) == ring
         assert {norm(a, b) for a, b, c in zip(i, j, ring, strict=True) if c in dggs.edge_neighbors(anchor)} <= {3, 4, 12}
@@ -224,11 +253,70 @@ def test_local_ij_is_one_lattice_wherever_it_answers(point, offset, level, k, as
         try:
             ij.append(dggs.cell_to_local_ij(a, dggs.str_to_int(cell) if as_int else cell))
             answered.append(cell)
-        except DggsValueError:
-            assert cell[0] not in region_faces(anchor)
+        except DistortionError:
+            assert not in_chart(anchor, [cell])[0]
     assert anchor in answered and len(answered) >= 3
     xy = _unfolded_centroids(anchor, answered)
     design = np.c_[xy, np.ones(len(answered))]
     target = np.array(ij, dtype=float)
     coef, *_ = np.linalg.lstsq(design, target, rcond=None)
     assert np.abs(design @ coef - target).max() < 1e-9
+
+
+#: The worst residual of an affine fit of geodetic cell centres to (i, j), in cell sizes (the square root of the
+#: anchor's area), over grid_disk(anchor, k <= 5) where local (i, j) answers, per projection. Measured: ISEA 0.142,
+#: IVEA 0.169 (every anchor of face C at level 6, all of level 3, anchors near its vertices at levels 8-13; the
+#: projections are smooth but not affine within a sector, most near a vertex). Before the chart kept to one sector
+#: and its mirror image: ISEA 0.39 at K110121, 0.53 at E222202 (k = 5), 0.28 at the cells on an icosahedron vertex
+#: (k = 3); IVEA 0.38 at E222202.
+SPHERE_FIT_BOUND = {"ISEA": 0.16, "IVEA": 0.2}
+
+
+@settings(max_examples=examples(60), deadline=None)
+@given(
+    point=st.sampled_from(special_points()),
+    offset=st.tuples(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0)),
+    level=st.integers(3, 13),
+    k=st.integers(1, 5),
+    as_int=st.booleans(),
+    projection=st.sampled_from(["ISEA", "IVEA"]),
+)
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=False, projection="ISEA").via("issue 32: K110121")
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=True, projection="ISEA").via("issue 32: E222202")
+@example(point=(0.0, 0.0), offset=(0.0, 0.0), level=6, k=5, as_int=True, projection="IVEA")
+@example(point=(90.0, 0.0), offset=(0.0, 0.0), level=9, k=5, as_int=False, projection="ISEA")
+@example(point=(0.0, 180.0), offset=(0.0, 0.0), level=13, k=5, as_int=True, projection="IVEA")
+@example(point=special_points()[6], offset=(0.0, 0.0), level=8, k=5, as_int=False, projection="ISEA")
+def test_local_ij_fits_the_sphere_wherever_it_answers(point, offset, level, k, as_int, projection):
+    """Issue 32 item 4: round poles, the antimeridian, icosahedron vertices and face edges, on both projections, the
+    (i, j) local coordinates answer for are one affine image of the cells' geodetic centres (in an azimuthal
+    equidistant projection at the anchor, from PROJ), to SPHERE_FIT_BOUND cell sizes; the others are refused with a
+    DistortionError naming cell and anchor, exactly where the chart oracle (sector edges from tests.gridref) says."""
+    import pyproj
+
+    grid = dggs.Grid(projection)
+    if point == (0.0, 0.0):  # the two anchors of the issue
+        anchor = "K110121" if not as_int else "E222202"
+    else:
+        lat = float(np.clip(point[0] + offset[0], -90, 90))
+        anchor = grid.latlng_to_cell(lat, point[1] + offset[1], level)
+    disk = dggs.grid_disk(anchor, k)
+    a = dggs.str_to_int(anchor) if as_int else anchor
+    answered, ij = [], []
+    for cell, ok in zip(disk, in_chart(anchor, disk), strict=True):
+        c = dggs.str_to_int(cell) if as_int else cell
+        if ok:
+            ij.append(grid.cell_to_local_ij(a, c))
+            answered.append(cell)
+            assert grid.local_ij_to_cell(a, *ij[-1]) == c
+        else:
+            with pytest.raises(DistortionError, match=f"{cell}.*{anchor}"):
+                grid.cell_to_local_ij(a, c)
+    lat0, lng0 = grid.cell_to_latlng(anchor)
+    aeqd = pyproj.Proj(proj="aeqd", lat_0=lat0, lon_0=lng0, ellps="WGS84")
+    lat, lng = np.array([grid.cell_to_latlng(c) for c in answered]).T
+    xy = np.c_[aeqd(lng, lat)]
+    design = np.c_[np.array(ij, dtype=float), np.ones(len(answered))]
+    coef, *_ = np.linalg.lstsq(design, xy, rcond=None)
+    worst = np.linalg.norm(design @ coef - xy, axis=1).max() / np.sqrt(grid.cell_area(anchor, unit="m^2"))
+    assert worst < SPHERE_FIT_BOUND[projection], (anchor, k, worst)
