@@ -16,13 +16,16 @@ Examples
 from __future__ import annotations
 
 from .atomic import atomic_write
+from .datasets import DatasetError
 from .errors import BadRowError, RejectedRowsWarning
 from .ingest import IngestOptions, IngestResult
 from .schema import SCHEMA_VERSION
-from .store import STATS, CellStore
+from .store import STATS, CellStore, list_datasets
 
 __all__ = [
     "CellStore",
+    "DatasetError",
+    "list_datasets",
     "IngestOptions",
     "IngestResult",
     "atomic_write",

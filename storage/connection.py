@@ -19,6 +19,7 @@ from typing import Any
 import dggs
 from dggs.errors import LevelError, LevelMismatchError, StorageError
 
+from .datasets import DatasetError, check_dataset_name, create_dataset, drop_dataset, find_dataset, named_datasets
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
@@ -47,8 +48,12 @@ def _dggs_version() -> str:
 class Connection:
     """An open cell store file: the connection, its transactions and metadata."""
 
-    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float, check_same_thread: bool = True) -> None:
+    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float, check_same_thread: bool = True,
+                 dataset: str | None = None) -> None:
         self.path, self.readonly, self.timeout = path, readonly, timeout
+        self.dataset = None if dataset is None else check_dataset_name(dataset)  # None: the default dataset
+        self.create = create
+        self.created_dataset = False  # this connection made the named dataset (close may take it back)
         self.check_same_thread = check_same_thread
         self.projection = "ISEA"  # the grid of the cells: set by CellStore from meta (storage/projection.py)
         self.created = False  # this connection made the file (close(discard_unused=True) may take it back)
@@ -179,17 +184,52 @@ class Connection:
             check_schema(conn, self.path)  # whoever created it, it must be ours
         elif not self.readonly:
             upgrade_layout(conn)
+        if self.dataset is not None:
+            self._enter_dataset(conn)
         check_meta(conn, self.path)
+
+    def _enter_dataset(self, conn: sqlite3.Connection) -> None:
+        """Point the connection at named dataset :attr:`dataset`, made first if it is new (storage/datasets.py).
+
+        Raises
+        ------
+        DatasetError
+            If there is none of that name and the store may not make it (read-only, or ``create=False``).
+        """
+        assert self.dataset is not None
+        found = find_dataset(conn, self.dataset)
+        if found is None:
+            if self.readonly or not self.create:
+                have = ", ".join(named_datasets(conn)) or "none"
+                raise DatasetError(f"{self.path} has no dataset {self.dataset!r} (named datasets: {have})")
+            found = create_dataset(conn, self.dataset, _dggs_version(), now())
+            self.created_dataset = found == self.dataset
+        self.dataset = found
+        conn.dataset = found  # type: ignore[attr-defined]  # a ScopedConnection (readonly.connect)
+
+    @property
+    def label(self) -> str:
+        """The store in messages: its path, and its dataset when it is a named one."""
+        return self.path if self.dataset is None else f"{self.path} dataset {self.dataset!r}"
 
     def close(self, discard_unused: bool = False) -> None:
         """Close the SQLite connection.
 
         With ``discard_unused`` (a ``with`` block left by an error), a file this connection created and into
         which nothing was ever ingested is removed, with its ``-wal``/``-shm``/``-journal``: a failed first
-        ingest leaves no empty store behind, as ``dggs bin`` checks its input before creating one.
+        ingest leaves no empty store behind, as ``dggs bin`` checks its input before creating one.  So is a
+        named dataset it made that holds no row (storage/datasets.py).
         """
         unused = False
-        if discard_unused and self.created:
+        if discard_unused and self.created_dataset:
+            # a dataset made for an ingest that failed before storing a row: taken back (a source it registered
+            # is no data); one whose first batches committed stays, to be resumed as any ingest is
+            with contextlib.suppress(sqlite3.Error):
+                if not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
+                           for t in ("points", "points_pending")):
+                    drop_dataset(self._conn, str(self.dataset))
+                    self._conn.dataset = None  # type: ignore[attr-defined]  # the file's default tables below
+        if discard_unused and self.created and self._conn.dataset is None:  # type: ignore[attr-defined]
             try:
                 unused = not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
                                  for t in ("sources", "points", "points_pending"))
@@ -305,8 +345,8 @@ class Connection:
         stored = self.level
         if stored is not None and stored != level:
             raise LevelMismatchError(
-                f"{self.path} stores cells at level {stored}; cannot ingest at level {level} "
-                f"(use level={stored} or another store)"
+                f"{self.label} stores cells at level {stored}; cannot ingest at level {level} "
+                f"(use level={stored}, or another dataset: CellStore(path, dataset=NAME))"
             )
 
     def resolve_level(self, level: int | None) -> int:

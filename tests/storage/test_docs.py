@@ -24,6 +24,7 @@ MODULES = [
     "dggs.storage.producer",
     "dggs.storage.ingest",
     "dggs.storage.store",
+    "dggs.storage.datasets",
     "dggs.storage.ingester",
     "dggs.storage.exporter",
     "dggs.storage.connection",
