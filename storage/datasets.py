@@ -103,12 +103,26 @@ def table_name(table: str, dataset: str | None) -> str:
     return '"' + (table if dataset is None else f"{dataset}/{table}").replace('"', '""') + '"'
 
 
-@functools.lru_cache(maxsize=8192)
 def scoped(sql: str, dataset: str | None) -> str:
-    """``sql`` with each bare dataset table name made ``dataset``'s (unchanged for the default dataset)."""
+    """``sql`` with each bare dataset table name made ``dataset``'s (unchanged for the default dataset).
+
+    Short statements (the store's, repeated for every batch) are remembered; long ones (a batch's
+    ``VALUES`` list) are rewritten each time, not kept.
+    """
     if dataset is None:
         return sql
+    return _scoped_short(sql, dataset) if len(sql) <= _SHORT else _scope(sql, dataset)
 
+
+_SHORT = 4096  # characters: the longest statement remembered by _scoped_short
+
+
+@functools.lru_cache(maxsize=4096)
+def _scoped_short(sql: str, dataset: str) -> str:
+    return _scope(sql, dataset)
+
+
+def _scope(sql: str, dataset: str) -> str:
     def swap(match: re.Match[str]) -> str:
         word = match.group(0)
         if word.lower() not in DATASET_TABLES:
@@ -143,10 +157,10 @@ class ScopedConnection(sqlite3.Connection):
         return super().cursor(factory)
 
     def execute(self, sql: str, parameters: Any = (), /) -> Any:  # noqa: D102
-        return super().execute(scoped(sql, self.dataset), parameters)
+        return super().execute(sql if self.dataset is None else scoped(sql, self.dataset), parameters)
 
     def executemany(self, sql: str, parameters: Any, /) -> Any:  # noqa: D102
-        return super().executemany(scoped(sql, self.dataset), parameters)
+        return super().executemany(sql if self.dataset is None else scoped(sql, self.dataset), parameters)
 
     def executescript(self, sql: str, /) -> Any:  # noqa: D102
         return super().executescript(scoped(sql, self.dataset))
