@@ -16,11 +16,11 @@ Examples
 from __future__ import annotations
 
 from .atomic import atomic_write
-from .datasets import DatasetError
+from .datasets import DatasetError, list_datasets
 from .errors import BadRowError, RejectedRowsWarning
 from .ingest import IngestOptions, IngestResult
 from .schema import SCHEMA_VERSION
-from .store import STATS, CellStore, list_datasets
+from .store import STATS, CellStore
 
 __all__ = [
     "CellStore",

@@ -347,30 +347,9 @@ def info(db: str, as_json: bool, dataset: str | None) -> None:
             where = f"line {r['line']}" if r["line"] else f"row {r['row']}"
             click.echo(f"  {r['source']} {where}: {r['column'] or ''} {r['value']!r} {r['reason']}")
     click.echo(f"datasets    {len(data['datasets'])} (name, level, projection, rows, columns)")
+    from dggs.storage.datasets import format_datasets
+
     click.echo(format_datasets(data["datasets"]))
-
-
-def format_datasets(datasets: list[dict[str, Any]]) -> str:
-    """One line per dataset: name (``(default)`` for the default one), level, projection, rows, columns.
-
-    Examples
-    --------
-    >>> print(format_datasets([{"name": None, "level": 17, "projection": "ISEA", "rows": 1200, "columns": {}},
-    ...                        {"name": "land", "level": 10, "projection": "ISEA", "rows": 3,
-    ...                         "columns": {"frac": "REAL"}}]))
-      (default)  level 17  ISEA  1,200 rows  (no columns)
-      land       level 10  ISEA      3 rows  frac REAL
-    """
-    names = ["(default)" if d["name"] is None else d["name"] for d in datasets]
-    rows = [f"{d['rows']:,}" for d in datasets]
-    wn, wr = max(map(len, names)), max(map(len, rows))
-    wl = max(len(str(d["level"])) for d in datasets)
-    lines = []
-    for name, count, d in zip(names, rows, datasets, strict=True):
-        level = "-" if d["level"] is None else str(d["level"])
-        columns = ", ".join(f"{k} {v}" for k, v in d["columns"].items()) or "(no columns)"
-        lines.append(f"  {name.ljust(wn)}  level {level.ljust(wl)}  {d['projection']}  {count.rjust(wr)} rows  {columns}")
-    return "\n".join(lines)
 
 
 @click.command("keep-rollups")

@@ -19,7 +19,7 @@ from typing import Any
 import dggs
 from dggs.errors import LevelError, LevelMismatchError, StorageError
 
-from .datasets import DatasetError, check_dataset_name, create_dataset, drop_dataset, find_dataset, named_datasets
+from .datasets import check_dataset_name, discard_empty_dataset, open_dataset
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
@@ -184,33 +184,11 @@ class Connection:
             check_schema(conn, self.path)  # whoever created it, it must be ours
         elif not self.readonly:
             upgrade_layout(conn)
-        if self.dataset is not None:
-            self._enter_dataset(conn)
+        if self.dataset is not None:  # a named dataset, made here if new and allowed (storage/datasets.py)
+            self.dataset, made = open_dataset(conn, self.dataset, self.path, self.create and not self.readonly,
+                                              _dggs_version(), now())
+            self.created_dataset = self.created_dataset or made
         check_meta(conn, self.path)
-
-    def _enter_dataset(self, conn: sqlite3.Connection) -> None:
-        """Point the connection at named dataset :attr:`dataset`, made first if it is new (storage/datasets.py).
-
-        Raises
-        ------
-        DatasetError
-            If there is none of that name and the store may not make it (read-only, or ``create=False``).
-        """
-        assert self.dataset is not None
-        found = find_dataset(conn, self.dataset)
-        if found is None:
-            if self.readonly or not self.create:
-                have = ", ".join(named_datasets(conn)) or "none"
-                raise DatasetError(f"{self.path} has no dataset {self.dataset!r} (named datasets: {have})")
-            found = create_dataset(conn, self.dataset, _dggs_version(), now())
-            self.created_dataset = found == self.dataset
-        self.dataset = found
-        conn.dataset = found  # type: ignore[attr-defined]  # a ScopedConnection (readonly.connect)
-
-    @property
-    def label(self) -> str:
-        """The store in messages: its path, and its dataset when it is a named one."""
-        return self.path if self.dataset is None else f"{self.path} dataset {self.dataset!r}"
 
     def close(self, discard_unused: bool = False) -> None:
         """Close the SQLite connection.
@@ -221,14 +199,9 @@ class Connection:
         named dataset it made that holds no row (storage/datasets.py).
         """
         unused = False
-        if discard_unused and self.created_dataset:
-            # a dataset made for an ingest that failed before storing a row: taken back (a source it registered
-            # is no data); one whose first batches committed stays, to be resumed as any ingest is
+        if discard_unused and self.created_dataset:  # made for an ingest that stored no row: taken back
             with contextlib.suppress(sqlite3.Error):
-                if not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
-                           for t in ("points", "points_pending")):
-                    drop_dataset(self._conn, str(self.dataset))
-                    self._conn.dataset = None  # type: ignore[attr-defined]  # the file's default tables below
+                discard_empty_dataset(self._conn, str(self.dataset))
         if discard_unused and self.created and self._conn.dataset is None:  # type: ignore[attr-defined]
             try:
                 unused = not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
@@ -345,7 +318,8 @@ class Connection:
         stored = self.level
         if stored is not None and stored != level:
             raise LevelMismatchError(
-                f"{self.label} stores cells at level {stored}; cannot ingest at level {level} "
+                f"{self.path}{'' if self.dataset is None else f' dataset {self.dataset!r}'} stores cells at level {stored}; "
+                f"cannot ingest at level {level} "
                 f"(use level={stored}, or another dataset: CellStore(path, dataset=NAME))"
             )
 

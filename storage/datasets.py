@@ -3,53 +3,43 @@
 A store file holds one *default* dataset under today's table names (``points``, ``sources``, ``meta``, ...;
 a file written before datasets existed is exactly that) and any number of *named* datasets, each with its
 own level, projection, value columns, sources, rejects and kept roll-ups.  A named dataset's tables are the
-default's names behind its name and a slash: ``"land/points"``, ``"land/meta"``, ... (the design in
-``docs/storage.md``).  The table ``datasets`` lists the named ones; it is made with the first of them, so a
-file that has none is not touched.
-
-Every table name of the store's SQL goes through one place, :func:`scoped`: a named dataset's connection
-(:class:`ScopedConnection`) rewrites the bare table names of each statement to its own, so the ~90
-statements of ``storage/`` and the server read and write the dataset they were opened on without naming it.
-Only bare (unquoted) identifiers are rewritten, never string literals, quoted identifiers (value columns are
-always quoted) or a name after a dot (a column qualified by its table alias).
+default's names behind its name and a slash: ``"land/points"``, ``"land/meta"``, ... (``docs/storage.md``).
+The table ``datasets`` lists the named ones; it is made with the first of them and dropped with the last,
+so a file that has none is not touched.  A connection opened on a named dataset renames the bare table
+names of every statement to the dataset's (:mod:`.scoped`).
 
 Examples
 --------
->>> print(scoped("SELECT count(*) FROM points WHERE cell >= 'points'", "land"))
-SELECT count(*) FROM "land/points" WHERE cell >= 'points'
->>> check_dataset_name("land")
-'land'
+>>> check_dataset_name("land"), table_name("points", "land")
+('land', '"land/points"')
 """
 
 from __future__ import annotations
 
-import functools
+import os
 import re
 import sqlite3
 from typing import Any
 
 from dggs.errors import DggsValueError, StorageError
 
+from .scoped import scoped
+
 __all__ = [
     "DatasetError",
-    "DATASET_TABLES",
     "REGISTRY",
     "check_dataset_name",
-    "scoped",
     "table_name",
-    "ScopedConnection",
     "named_datasets",
     "find_dataset",
+    "open_dataset",
     "create_dataset",
     "drop_dataset",
+    "discard_empty_dataset",
     "describe_datasets",
+    "format_datasets",
+    "list_datasets",
 ]
-
-#: The names a dataset owns: its tables, its view and its index (schema.DDL, raster_ingest, rollup_keep).
-DATASET_TABLES = frozenset({
-    "meta", "sources", "points", "points_pending", "all_points", "rejects", "rejects_source",
-    "rollups", "raster_partials", "raster_classes",
-})
 
 #: The file-level table listing the named datasets (made with the first one).
 REGISTRY = "datasets"
@@ -59,10 +49,6 @@ _REGISTRY_DDL = (f"CREATE TABLE IF NOT EXISTS {REGISTRY} (name TEXT PRIMARY KEY 
 # A name is a URL path segment (it is the server's collection id) and a table-name prefix: letters, digits,
 # "_" and "-", starting with a letter, at most 64 characters.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]{0,63}")
-# SQL tokens: string literals, quoted identifiers, comments, then bare words (SQLite's lexical rules,
-# https://www.sqlite.org/lang_keywords.html: '...', "...", [...], `...`).
-_TOKEN = re.compile(r"""'(?:[^']|'')*'|"(?:[^"]|"")*"|\[[^\]]*\]|`(?:[^`]|``)*`|--[^\n]*|/\*.*?\*/|[A-Za-z_][A-Za-z0-9_]*""",
-                    re.DOTALL)
 
 
 class DatasetError(DggsValueError):
@@ -103,69 +89,6 @@ def table_name(table: str, dataset: str | None) -> str:
     return '"' + (table if dataset is None else f"{dataset}/{table}").replace('"', '""') + '"'
 
 
-def scoped(sql: str, dataset: str | None) -> str:
-    """``sql`` with each bare dataset table name made ``dataset``'s (unchanged for the default dataset).
-
-    Short statements (the store's, repeated for every batch) are remembered; long ones (a batch's
-    ``VALUES`` list) are rewritten each time, not kept.
-    """
-    if dataset is None:
-        return sql
-    return _scoped_short(sql, dataset) if len(sql) <= _SHORT else _scope(sql, dataset)
-
-
-_SHORT = 4096  # characters: the longest statement remembered by _scoped_short
-
-
-@functools.lru_cache(maxsize=4096)
-def _scoped_short(sql: str, dataset: str) -> str:
-    return _scope(sql, dataset)
-
-
-def _scope(sql: str, dataset: str) -> str:
-    def swap(match: re.Match[str]) -> str:
-        word = match.group(0)
-        if word.lower() not in DATASET_TABLES:
-            return word
-        start = match.start()
-        if start and sql[start - 1] == ".":  # alias.column: a column, not a table
-            return word
-        return '"' + f"{dataset}/{word.lower()}" + '"'
-
-    return _TOKEN.sub(swap, sql)
-
-
-class ScopedCursor(sqlite3.Cursor):
-    """A cursor of a :class:`ScopedConnection`: its statements name the connection's dataset's tables."""
-
-    def execute(self, sql: str, parameters: Any = (), /) -> Any:  # noqa: D102
-        return super().execute(scoped(sql, self.connection.dataset), parameters)  # type: ignore[attr-defined]
-
-    def executemany(self, sql: str, parameters: Any, /) -> Any:  # noqa: D102
-        return super().executemany(scoped(sql, self.connection.dataset), parameters)  # type: ignore[attr-defined]
-
-
-class ScopedConnection(sqlite3.Connection):
-    """A SQLite connection reading and writing one dataset: :func:`scoped` applied to every statement.
-
-    ``dataset`` is None (the default dataset, statements unchanged) until the store sets it.
-    """
-
-    dataset: str | None = None
-
-    def cursor(self, factory: Any = ScopedCursor) -> Any:  # noqa: D102
-        return super().cursor(factory)
-
-    def execute(self, sql: str, parameters: Any = (), /) -> Any:  # noqa: D102
-        return super().execute(sql if self.dataset is None else scoped(sql, self.dataset), parameters)
-
-    def executemany(self, sql: str, parameters: Any, /) -> Any:  # noqa: D102
-        return super().executemany(sql if self.dataset is None else scoped(sql, self.dataset), parameters)
-
-    def executescript(self, sql: str, /) -> Any:  # noqa: D102
-        return super().executescript(scoped(sql, self.dataset))
-
-
 def _has_registry(conn: sqlite3.Connection) -> bool:
     return conn.execute("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?", (REGISTRY,)).fetchone() is not None
 
@@ -184,6 +107,29 @@ def find_dataset(conn: sqlite3.Connection, name: str) -> str | None:
         return None
     row = conn.execute(f"SELECT name FROM {REGISTRY} WHERE name = ?", (name,)).fetchone()
     return None if row is None else str(row[0])
+
+
+def open_dataset(conn: sqlite3.Connection, name: str, path: str, may_create: bool, dggs_version: str,
+                 stamp: str) -> tuple[str, bool]:
+    """Point ``conn`` (a :class:`~.scoped.ScopedConnection`) at dataset ``name``, made first if new and allowed.
+
+    Returns the stored name and whether this call made it.
+
+    Raises
+    ------
+    DatasetError
+        If there is none of that name and it may not be made (a read-only store, or ``create=False``).
+    """
+    found = find_dataset(conn, name)
+    made = False
+    if found is None:
+        if not may_create:
+            have = ", ".join(named_datasets(conn)) or "none"
+            raise DatasetError(f"{path} has no dataset {name!r} (named datasets: {have})")
+        found = create_dataset(conn, name, dggs_version, stamp)
+        made = found == name
+    conn.dataset = found  # type: ignore[attr-defined]
+    return found, made
 
 
 def create_dataset(conn: sqlite3.Connection, name: str, dggs_version: str, stamp: str) -> str:
@@ -253,6 +199,20 @@ def drop_dataset(conn: sqlite3.Connection, name: str) -> None:
         raise
 
 
+def discard_empty_dataset(conn: sqlite3.Connection, name: str) -> bool:
+    """Drop named dataset ``name`` if it holds no row, and point ``conn`` back at the default; True if it did.
+
+    For a dataset made for an ingest that failed before storing a row (a source it registered is no data);
+    one whose first batches committed stays, to be resumed as any ingest is.
+    """
+    if any(conn.execute(f"SELECT 1 FROM {table_name(t, name)} LIMIT 1").fetchone()
+           for t in ("points", "points_pending")):
+        return False
+    drop_dataset(conn, name)
+    conn.dataset = None  # type: ignore[attr-defined]  # the file's default tables from now on
+    return True
+
+
 def describe_datasets(conn: sqlite3.Connection) -> list[dict[str, Any]]:
     """Each dataset of the file, the default one (``name`` None) first: name, level, projection, rows, columns.
 
@@ -280,3 +240,65 @@ def describe_datasets(conn: sqlite3.Connection) -> list[dict[str, Any]]:
             "rollup_levels": sorted((int(v) for v in kept.split(",") if v), reverse=True),
         })
     return out
+
+
+def list_datasets(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The datasets of the store file at ``path``, read-only, as :meth:`CellStore.datasets` gives them.
+
+    Raises
+    ------
+    StorageError
+        Naming the file, if it is missing or not a cell store.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from dggs.storage import CellStore
+    >>> path = os.path.join(tempfile.mkdtemp(), "two.db")
+    >>> with CellStore(path) as points, CellStore(path, dataset="land") as land:
+    ...     _ = points.ingest_points([48.85, 51.5], [2.35, -0.12], 17)
+    ...     _ = land.ingest_points([48.85], [2.35], 10, {"frac": [0.5]})
+    >>> [(d["name"], d["level"], d["rows"], d["columns"]) for d in list_datasets(path)]
+    [(None, 17, 2, {}), ('land', 10, 1, {'frac': 'REAL'})]
+    """
+    from .failures import translate
+    from .readonly import connect
+    from .schema import check_schema
+
+    file = os.fspath(path)
+    if not os.path.isfile(file):
+        raise StorageError(f"no cell store at {file}")
+    try:
+        conn, _immutable = connect(file, True, 30.0)
+    except (sqlite3.Error, OSError) as exc:
+        raise translate(exc, file) from exc
+    try:
+        if not check_schema(conn, file):
+            raise StorageError(f"{file} is an empty database, not a cell store")
+        return describe_datasets(conn)
+    except sqlite3.Error as exc:
+        raise translate(exc, file) from exc
+    finally:
+        conn.close()
+
+
+def format_datasets(datasets: list[dict[str, Any]]) -> str:
+    """One line per dataset (``dggs info``): name (``(default)`` for the default one), level, projection, rows, columns.
+
+    Examples
+    --------
+    >>> print(format_datasets([{"name": None, "level": 17, "projection": "ISEA", "rows": 1200, "columns": {}},
+    ...                        {"name": "land", "level": 10, "projection": "ISEA", "rows": 3,
+    ...                         "columns": {"frac": "REAL"}}]))
+      (default)  level 17  ISEA  1,200 rows  (no columns)
+      land       level 10  ISEA      3 rows  frac REAL
+    """
+    names = ["(default)" if d["name"] is None else d["name"] for d in datasets]
+    levels = ["-" if d["level"] is None else str(d["level"]) for d in datasets]
+    rows = [f"{d['rows']:,}" for d in datasets]
+    wn, wl, wr = (max(map(len, column)) for column in (names, levels, rows))
+    return "\n".join(
+        f"  {name.ljust(wn)}  level {level.ljust(wl)}  {d['projection']}  {count.rjust(wr)} rows  "
+        + (", ".join(f"{k} {v}" for k, v in d["columns"].items()) or "(no columns)")
+        for name, level, count, d in zip(names, levels, rows, datasets, strict=True)
+    )

@@ -29,7 +29,7 @@ from pathlib import Path
 
 from dggs.errors import StorageError
 
-from .datasets import ScopedConnection
+from .scoped import ScopedConnection
 
 __all__ = ["connect", "connect_immutable", "quiet", "signature"]
 

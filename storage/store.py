@@ -47,7 +47,7 @@ from .sources import delete_source, list_rejects, list_sources
 if TYPE_CHECKING:  # pragma: no cover
     from .raster_ingest import RasterIngestResult
 
-__all__ = ["CellStore", "STATS", "DEFAULT_LEVEL", "list_datasets"]
+__all__ = ["CellStore", "STATS", "DEFAULT_LEVEL"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -439,24 +439,3 @@ class CellStore:
         return self._exporter.export(path, level, column, stats, format=format, densify=densify, tolerance=tolerance,
                                      progress=progress)
 
-
-def list_datasets(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
-    """The datasets of the store file at ``path`` (read-only), as :meth:`CellStore.datasets` gives them.
-
-    Raises
-    ------
-    StorageError
-        Naming the file, if it is missing or not a cell store.
-
-    Examples
-    --------
-    >>> import os, tempfile
-    >>> path = os.path.join(tempfile.mkdtemp(), "two.db")
-    >>> with CellStore(path) as points, CellStore(path, dataset="land") as land:
-    ...     _ = points.ingest_points([48.85, 51.5], [2.35, -0.12], 17)
-    ...     _ = land.ingest_points([48.85], [2.35], 10, {"frac": [0.5]})
-    >>> [(d["name"], d["level"], d["rows"], d["columns"]) for d in list_datasets(path)]
-    [(None, 17, 2, {}), ('land', 10, 1, {'frac': 'REAL'})]
-    """
-    with CellStore(path, readonly=True) as store:
-        return store.datasets()

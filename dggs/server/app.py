@@ -29,7 +29,7 @@ from fastapi import FastAPI, Request
 from . import features, mapdata, ogc, zones
 from .errors import head_as_get, install_handlers
 from .params import Context
-from .reader import StoreReader, named_datasets
+from .reader import StoreReader
 from .vendor import STATIC_FOLDER
 
 __all__ = ["create_app", "MAX_ZONES", "MAX_FEATURES", "REFRESH", "STATIC", "OPENAPI_30"]
@@ -92,7 +92,9 @@ def create_app(
     reader = StoreReader(store_path, refresh=refresh)
     readers = {reader.collection_id: reader}
     try:
-        for name in named_datasets(store_path):  # each dataset of the store is a collection too
+        from dggs.storage import list_datasets
+
+        for name in [d["name"] for d in list_datasets(store_path)][1:]:  # each named dataset is a collection too
             cid = name if name not in readers else f"{name}-dataset"  # a dataset named as the file: set apart
             readers[cid] = StoreReader(store_path, refresh=refresh, dataset=name, collection_id=cid)
     except BaseException:

@@ -69,12 +69,6 @@ CACHE_ENTRIES = 32
 GEOMETRY_ENTRIES = 300_000
 
 
-def named_datasets(path: str | os.PathLike[str]) -> list[str]:
-    """The names of the named datasets of the store at ``path`` (read-only; storage/datasets.py)."""
-    with CellStore(path, create=False, readonly=True) as store:
-        return [d["name"] for d in store.datasets() if d["name"] is not None]
-
-
 def map_densify(level: int) -> int:
     """Points added per curved edge in the map's and the data's GeoJSON (few, for speed).
 

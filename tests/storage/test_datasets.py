@@ -26,7 +26,7 @@ import dggs
 from dggs.cli import main
 from dggs.errors import DggsValueError
 from dggs.storage import BadRowError, CellStore, DatasetError, list_datasets
-from dggs.storage.datasets import scoped
+from dggs.storage.scoped import scoped
 
 FIXTURES = Path(__file__).parent / "fixtures"
 

@@ -25,6 +25,7 @@ MODULES = [
     "dggs.storage.ingest",
     "dggs.storage.store",
     "dggs.storage.datasets",
+    "dggs.storage.scoped",
     "dggs.storage.ingester",
     "dggs.storage.exporter",
     "dggs.storage.connection",
