@@ -294,3 +294,63 @@ def test_ingesting_into_one_dataset_never_changes_anothers_rows(target, level, p
         for name in (None, "a", "b"):
             if name != target:
                 assert _rows(db, name) == before[name]
+
+
+_WRITER = """
+import sys
+from dggs.storage import CellStore
+with CellStore(sys.argv[1], dataset="b", merge_rows=5_000) as store:
+    store.ingest_csv(sys.argv[2], values=["k"], level=10, batch_size=500, progress=lambda n: print("batch", flush=True))
+"""
+
+
+def test_sigkill_during_an_ingest_into_one_dataset_leaves_the_others_whole_and_it_resumes_once(tmp_path):
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    rng = np.random.default_rng(5)
+    n = 30_000
+    lat, lng = np.degrees(np.arcsin(rng.uniform(-1, 1, n))), rng.uniform(-180, 180, n)
+    csv = tmp_path / "p.csv"
+    pd.DataFrame({"lat": lat, "lng": lng, "k": np.arange(n)}).to_csv(csv, index=False)
+    db = tmp_path / "s.db"
+    with CellStore(db) as default, CellStore(db, dataset="a") as a:
+        default.ingest_points(lat[:500], lng[:500], 12, {"v": np.arange(500)})
+        a.ingest_points(lat[:50], lng[:50], 4)
+    before = {name: _rows(db, name) for name in (None, "a")}
+    script = tmp_path / "writer.py"
+    script.write_text(_WRITER)
+    proc = subprocess.Popen([sys.executable, str(script), str(db), str(csv)], stdout=subprocess.PIPE, text=True)
+    try:
+        for _ in range(8):  # eight batches committed, then killed wherever it is
+            assert proc.stdout is not None and proc.stdout.readline()
+        os.kill(proc.pid, signal.SIGKILL)
+    finally:
+        proc.wait(30)
+    with sqlite3.connect(db) as conn:
+        assert conn.execute("PRAGMA integrity_check").fetchone()[0] == "ok"
+        done = conn.execute('SELECT rows_done FROM "b/sources"').fetchone()[0]
+    assert 0 < done < n and done % 500 == 0 and len(_rows(db, "b")) == done
+    assert {name: _rows(db, name) for name in (None, "a")} == before
+    with CellStore(db, dataset="b") as b:
+        b.ingest_csv(csv, values=["k"], level=10, batch_size=500)
+        stored = sorted(k for (k,) in b.conn.execute("SELECT k FROM all_points"))
+    assert stored == list(range(n))  # every row exactly once
+    assert {name: _rows(db, name) for name in (None, "a")} == before
+
+
+def test_a_dataset_named_as_the_file_is_served_apart(tmp_path):
+    from fastapi.testclient import TestClient
+
+    from dggs.server.app import create_app
+
+    db = tmp_path / "land.db"
+    with CellStore(db) as default, CellStore(db, dataset="land") as land:
+        default.ingest_points([1.0], [2.0], 6)
+        land.ingest_points([3.0, 4.0], [5.0, 6.0], 3)
+    with TestClient(create_app(db)) as client:
+        assert [c["id"] for c in client.get("/collections").json()["collections"]] == ["land", "land-dataset"]
+        assert client.get("/map/layers", params={"collection": "land-dataset"}).json()["count"] == 2
+        assert client.get("/map/layers", params={"collection": "land"}).json()["count"] == 1
