@@ -68,10 +68,8 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
         # empty store behind; a new store whose ingest fails later (a pixel of +-inf) is removed again
         open_checked(raster, level, mode, band, nodata, None, block_size)
         new = not os.path.exists(db)
-        made = False  # a dataset this command made: taken back, with its partial blocks, if the ingest fails
-        try:
+        try:  # a dataset this command made is taken back, with its partial blocks, if the ingest fails (CellStore)
             with CellStore(db, dataset=dataset) as store:
-                made = store.made_dataset
                 result = store.ingest_raster(raster, level, mode=mode, band=band, nodata=nodata, density=density,
                                              block_size=block_size, replace=replace, progress=progress)
         except BaseException:
@@ -79,11 +77,6 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
                 for tail in ("", "-wal", "-shm", "-journal"):
                     with contextlib.suppress(OSError):
                         os.remove(db + tail)
-            elif made and dataset is not None:
-                from dggs.storage.datasets import drop_dataset
-
-                with CellStore(db) as default:
-                    drop_dataset(default.conn, dataset)
             raise
         where = db if dataset is None else f"{db} dataset {dataset}"
         click.echo(f"{result.summary()} -> {where} (level {level})")

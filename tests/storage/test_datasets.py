@@ -354,3 +354,28 @@ def test_a_dataset_named_as_the_file_is_served_apart(tmp_path):
         assert [c["id"] for c in client.get("/collections").json()["collections"]] == ["land", "land-dataset"]
         assert client.get("/map/layers", params={"collection": "land-dataset"}).json()["count"] == 2
         assert client.get("/map/layers", params={"collection": "land"}).json()["count"] == 1
+
+
+def test_bin_raster_into_a_dataset_and_a_failed_one_taken_back(tmp_path):
+    pytest.importorskip("rasterio")
+    from dggs.raster import raster_to_cells
+    from tests.raster.helpers import field, same_rows, write
+
+    good = write(tmp_path / "good.tif", field(30, 40))
+    data = field(30, 40)
+    data[0, 25, 30] = np.inf  # a pixel of a late block: the earlier blocks' partials are committed first
+    bad = write(tmp_path / "bad.tif", data)
+    db = tmp_path / "s.db"
+    with CellStore(db) as store:
+        store.ingest_points([1.0], [2.0], 12)
+    before = _tables(db)
+    out = CliRunner().invoke(main, ["bin-raster", str(bad), "--level", "10", "--db", str(db), "--dataset", "r",
+                                    "--block-size", "16"])
+    assert out.exit_code == 1 and len(out.output.strip().splitlines()) == 1, out.output
+    assert _tables(db) == before and [d["name"] for d in list_datasets(db)] == [None]
+    out = CliRunner().invoke(main, ["bin-raster", str(good), "--level", "10", "--db", str(db), "--dataset", "r",
+                                    "--block-size", "16"])
+    assert out.exit_code == 0 and "dataset r (level 10)" in out.output, out.output
+    with CellStore(db, dataset="r", readonly=True) as r:
+        assert same_rows(r.conn, raster_to_cells(good, 10, block_size=16))
+    assert len(_rows(db, None)) == 1
