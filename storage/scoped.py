@@ -34,7 +34,6 @@ _TOKEN = re.compile(r"""'(?:[^']|'')*'|"(?:[^"]|"")*"|\[[^\]]*\]|`(?:[^`]|``)*`|
                     re.DOTALL)
 
 
-
 def scoped(sql: str, dataset: str | None) -> str:
     """``sql`` with each bare dataset table name made ``dataset``'s (unchanged for the default dataset).
 
