@@ -379,3 +379,43 @@ def test_bin_raster_into_a_dataset_and_a_failed_one_taken_back(tmp_path):
     with CellStore(db, dataset="r", readonly=True) as r:
         assert same_rows(r.conn, raster_to_cells(good, 10, block_size=16))
     assert len(_rows(db, None)) == 1
+
+
+DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
+
+
+@pytest.mark.parametrize("kind", ["csv", "geojson", "dataframe", "records", "vector"])
+def test_every_ingest_into_a_dataset_stores_what_it_stores_in_a_store_of_its_own(tmp_path, kind):
+    """The referee: the same input ingested into the default dataset of a new store (the code path of a store
+    without datasets); row for row the same, and the other datasets of the shared store untouched."""
+    cities = pd.read_csv(DATA / "cities.csv")
+    if kind == "vector":
+        gpd = pytest.importorskip("geopandas")
+        pytest.importorskip("pyogrio")
+        gpkg = tmp_path / "cities.gpkg"
+        gpd.GeoDataFrame(cities, geometry=gpd.points_from_xy(cities.lng, cities.lat), crs="EPSG:4326").to_file(gpkg)
+
+    def ingest(store):
+        if kind == "csv":
+            return store.ingest_csv(DATA / "cities.csv", values=["name", "population"], level=8)
+        if kind == "geojson":
+            return store.ingest_geojson(DATA / "stations.geojson", level=8)
+        if kind == "dataframe":
+            return store.ingest_dataframe(cities, values=["name", "population"], level=8, source="cities")
+        if kind == "records":
+            return store.ingest_records(cities.to_dict("records"), values=["name", "population"], level=8,
+                                        source="cities")
+        return store.ingest_vector(gpkg, values=["name", "population"], level=8)
+
+    alone, shared = tmp_path / "alone.db", tmp_path / "shared.db"
+    with CellStore(alone) as store:
+        ingest(store)
+    with CellStore(shared) as default, CellStore(shared, dataset="other") as other:
+        default.ingest_points([1.0, 2.0], [3.0, 4.0], 15, {"q": [1.5, 2.5]})
+        other.ingest_points([5.0], [6.0], 2)
+    before = {name: _rows(shared, name) for name in (None, "other")}
+    with CellStore(shared, dataset="x") as x:
+        ingest(x)
+        assert x.count() > 0 and x.level == 8
+    assert _rows(shared, "x") == _rows(alone, None)
+    assert {name: _rows(shared, name) for name in (None, "other")} == before
