@@ -34,8 +34,11 @@ CLI_MODES = ("center", "mean", "sum", "min", "max", "count", "mode", "fractions"
               help="Pixels a block side (with --db, a block is a transaction).")
 @click.option("--replace", is_flag=True, help="With --db: forget what an earlier ingest of FILE stored first.")
 @click.option("--progress/--no-progress", default=None, help="Progress bar of the blocks [default: on a terminal].")
+@click.option("--dataset", default=None, metavar="NAME",
+              help="With --db: the store's named dataset to write (made if new) [default: its default dataset].")
 def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodata: float | None, db: str | None,
-               parquet: str | None, density: bool, block_size: int, replace: bool, progress: bool | None) -> None:
+               parquet: str | None, density: bool, block_size: int, replace: bool, progress: bool | None,
+               dataset: str | None) -> None:
     """Bin the pixels of raster FILE into equal-area cells, into a store or GeoParquet files.
 
     FILE is any raster GDAL reads (GeoTIFF, COG, NetCDF, ...), in any CRS.
@@ -54,6 +57,8 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
         raise click.UsageError("give one output: --db STORE or --parquet FOLDER")
     if replace and db is None:
         raise click.UsageError("--replace goes with --db")
+    if dataset is not None and db is None:
+        raise click.UsageError("--dataset goes with --db")
     band = list(bands) or None
     if db is not None:
         from dggs.raster import open_checked
@@ -63,8 +68,8 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
         # empty store behind; a new store whose ingest fails later (a pixel of +-inf) is removed again
         open_checked(raster, level, mode, band, nodata, None, block_size)
         new = not os.path.exists(db)
-        try:
-            with CellStore(db) as store:
+        try:  # a dataset this command made is taken back, with its partial blocks, if the ingest fails (CellStore)
+            with CellStore(db, dataset=dataset) as store:
                 result = store.ingest_raster(raster, level, mode=mode, band=band, nodata=nodata, density=density,
                                              block_size=block_size, replace=replace, progress=progress)
         except BaseException:
@@ -73,7 +78,8 @@ def bin_raster(raster: str, level: int, mode: str, bands: tuple[int, ...], nodat
                     with contextlib.suppress(OSError):
                         os.remove(db + tail)
             raise
-        click.echo(f"{result.summary()} -> {db} (level {level})")
+        where = db if dataset is None else f"{db} dataset {dataset}"
+        click.echo(f"{result.summary()} -> {where} (level {level})")
         return
     from dggs.raster import raster_to_cells
     from dggs.raster.parquet import write_partitioned

@@ -16,6 +16,7 @@ Examples
 from __future__ import annotations
 
 from .atomic import atomic_write
+from .datasets import DatasetError, list_datasets
 from .errors import BadRowError, RejectedRowsWarning
 from .ingest import IngestOptions, IngestResult
 from .schema import SCHEMA_VERSION
@@ -23,6 +24,8 @@ from .store import STATS, CellStore
 
 __all__ = [
     "CellStore",
+    "DatasetError",
+    "list_datasets",
     "IngestOptions",
     "IngestResult",
     "atomic_write",

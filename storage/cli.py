@@ -16,10 +16,16 @@ import click
 __all__ = ["register", "bin_", "query", "export", "plot", "info", "keep_rollups", "demo"]
 
 
-def _open(db: str, readonly: bool = True) -> Any:  # a CellStore, imported lazily
+def _open(db: str, readonly: bool = True, dataset: str | None = None) -> Any:  # a CellStore, imported lazily
     from dggs.storage import CellStore
 
-    return CellStore(db, create=False, readonly=readonly)
+    return CellStore(db, create=False, readonly=readonly, dataset=dataset)
+
+
+#: ``--dataset NAME`` of every command that reads or writes a store (storage/datasets.py).
+dataset_option = click.option(
+    "--dataset", default=None, metavar="NAME",
+    help="Named dataset of the store (its own level, projection, columns) [default: the store's default dataset].")
 
 
 def _format_value(value: Any) -> str:
@@ -97,6 +103,7 @@ def _value_types(values: tuple[str, ...]) -> list[str] | dict[str, str]:
 @click.option("--progress/--no-progress", default=None, help="Progress bar [default: on a terminal].")
 @click.option("--projection", type=click.Choice(["ISEA", "IVEA"], case_sensitive=False), default=None,
               help="Grid to bin on, recorded in a new store [default: the store's, or ISEA].")
+@dataset_option
 def bin_(
     input_path: str,
     db: str,
@@ -112,8 +119,9 @@ def bin_(
     layer: str | None,
     progress: bool | None,
     projection: str | None,
+    dataset: str | None,
 ) -> None:
-    """Bin the points of INPUT into cells and store them in DB.
+    """Bin the points of INPUT into cells and store them in DB (or its --dataset, made if new).
 
     INPUT is CSV, GeoJSON, GeoPackage, Shapefile, FlatGeobuf or GeoParquet.
 
@@ -137,7 +145,7 @@ def bin_(
         kind, input_path, new_store=not Path(db).exists(), lat=lat, lng=lng, values=declared, crs=crs,
         encoding=encoding, layer=layer, level=level, batch_size=batch_size, on_error=on_error,
     )
-    with CellStore(db, projection=projection) as store, warnings.catch_warnings():
+    with CellStore(db, projection=projection, dataset=dataset) as store, warnings.catch_warnings():
         warnings.simplefilter("ignore", RejectedRowsWarning)  # reported below instead
         common: dict[str, Any] = dict(
             level=level, batch_size=batch_size, on_error=on_error, replace=replace, progress=progress
@@ -149,7 +157,8 @@ def bin_(
         else:
             result = store.ingest_geojson(input_path, values=declared or None, **common)
         stored_level, grid = store.level, store.projection
-    click.echo(f"{result.summary()} -> {db} (level {stored_level}{'' if grid == 'ISEA' else ', ' + grid})")
+    where = db if dataset is None else f"{db} dataset {store.dataset}"
+    click.echo(f"{result.summary()} -> {where} (level {stored_level}{'' if grid == 'ISEA' else ', ' + grid})")
     if result.rows_read and result.seconds:
         click.echo(f"{result.seconds:.2f} s, {result.rows_per_second:,.0f} rows/s")
     if result.rows_rejected:
@@ -179,6 +188,7 @@ def _tolerance(text: str) -> float | str:
 @click.option("--sort", "order_by", default=None, help="Sort by this stat, largest first [default: cell id].")
 @click.option("--limit", type=int, default=None, help="Show at most N cells.")
 @click.option("--format", "fmt", type=click.Choice(["table", "json", "geojson"]), default="table", show_default=True)
+@dataset_option
 def query(
     db: str,
     level: int,
@@ -188,6 +198,7 @@ def query(
     order_by: str | None,
     limit: int | None,
     fmt: str,
+    dataset: str | None,
 ) -> None:
     """Roll the points in DB up to --level cells and print their statistics.
 
@@ -200,7 +211,7 @@ def query(
     chosen = tuple(stats) or (("count", "sum", "mean", "min", "max") if column else ("count",))
     if column and "count" not in chosen:
         chosen = ("count", *chosen)
-    with _open(db) as store:
+    with _open(db, dataset=dataset) as store:
         rows = store.aggregate(level, column, chosen, cell=cell, order_by=order_by, limit=limit)
     if fmt == "json":
         click.echo(json.dumps(rows, indent=1))
@@ -225,8 +236,9 @@ def query(
               help="Points added along each curved cell edge [default: as --tolerance needs].")
 @click.option("--tolerance", default="10", show_default=True,
               help="Metres between each drawn edge and the true one, or 'exact' (geodesic areas within 1e-6).")
+@dataset_option
 def export(db: str, level: int, column: str | None, out: str | None, fmt: str | None, geojson: str | None,
-           densify: int | None, tolerance: str) -> None:
+           densify: int | None, tolerance: str, dataset: str | None) -> None:
     """Write the --level cells of DB with their statistics as polygons.
 
     GeoJSON (RFC 7946), GeoParquet 1.1 (WKB geometry, bbox covering, cell
@@ -246,7 +258,7 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
         out, fmt = geojson, "geojson"
     if out is None:
         raise click.UsageError("give the file to write: --out FILE (or --geojson FILE)")
-    with _open(db) as store:
+    with _open(db, dataset=dataset) as store:
         written = store.export(out, level, column, format=fmt, densify=densify, tolerance=_tolerance(tolerance))
     click.echo(f"wrote {written:,} cells to {out}")
 
@@ -262,8 +274,9 @@ def export(db: str, level: int, column: str | None, out: str | None, fmt: str | 
 @click.option("--log/--linear", "log", default=None, help="Colour scale [default: log for skewed values].")
 @click.option("--land/--no-land", default=None,
               help="Draw the land (Natural Earth; needs dggs[vector] and the map's files) [default: where installed].")
+@dataset_option
 def plot(db: str, level: int, column: str | None, stat: str | None, out: str, title: str | None, log: bool | None,
-         land: bool | None) -> None:
+         land: bool | None, dataset: str | None) -> None:
     """Draw the --level cells of DB on an equal-area world map (needs matplotlib).
 
     \b
@@ -274,7 +287,7 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
     from dggs.storage.plot import plot_cells
 
     stat = stat or ("sum" if column else "count")
-    with _open(db) as store:
+    with _open(db, dataset=dataset) as store:
         refuse_store(out, store.path)
         rows = store.aggregate(level, column, (stat,) if stat == "count" else ("count", stat))
         path, projection = store.path, store.projection
@@ -296,14 +309,18 @@ def plot(db: str, level: int, column: str | None, stat: str | None, out: str, ti
 @click.command()
 @click.argument("db", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info(db: str, as_json: bool) -> None:
-    """Describe a cell store: level, counts, columns, sources, rejects."""
-    with _open(db) as store:
+@dataset_option
+def info(db: str, as_json: bool, dataset: str | None) -> None:
+    """Describe a cell store: level, counts, columns, sources, rejects, and its datasets (one line each)."""
+    with _open(db, dataset=dataset) as store:
         data = store.info()
+        data["datasets"] = store.datasets()
         rejects = store.rejects(limit=5) if data["rejects"] else []
     if as_json:
         click.echo(json.dumps(data, indent=1))
         return
+    if data["dataset"] is not None:
+        click.echo(f"dataset     {data['dataset']}")
     area = data["cell_area_km2"]
     click.echo(f"store       {data['path']}  ({(data['size_bytes'] or 0) / 1e6:,.1f} MB)")
     click.echo(
@@ -329,13 +346,18 @@ def info(db: str, as_json: bool) -> None:
         for r in rejects:
             where = f"line {r['line']}" if r["line"] else f"row {r['row']}"
             click.echo(f"  {r['source']} {where}: {r['column'] or ''} {r['value']!r} {r['reason']}")
+    click.echo(f"datasets    {len(data['datasets'])} (name, level, projection, rows, columns)")
+    from dggs.storage.datasets import format_datasets
+
+    click.echo(format_datasets(data["datasets"]))
 
 
 @click.command("keep-rollups")
 @click.argument("db", type=click.Path(exists=True, dir_okay=False))
 @click.argument("levels", nargs=-1, type=int)
 @click.option("--drop", is_flag=True, help="Stop keeping roll-ups.")
-def keep_rollups(db: str, levels: tuple[int, ...], drop: bool) -> None:
+@dataset_option
+def keep_rollups(db: str, levels: tuple[int, ...], drop: bool, dataset: str | None) -> None:
     """Keep the roll-ups of LEVELS in DB, current through every ingest (none given: list them).
 
     Queries, exports and the server then read a kept level's cells instead of
@@ -347,7 +369,7 @@ def keep_rollups(db: str, levels: tuple[int, ...], drop: bool) -> None:
     """
     if drop and levels:
         raise click.UsageError("give levels or --drop, not both")
-    with _open(db, readonly=not (levels or drop)) as store:
+    with _open(db, readonly=not (levels or drop), dataset=dataset) as store:
         kept = store.keep_rollups([] if drop else levels) if (levels or drop) else store.rollup_levels
     click.echo(f"roll-ups kept at levels {', '.join(map(str, kept))}" if kept else "no roll-ups kept")
 

@@ -19,6 +19,7 @@ from typing import Any
 import dggs
 from dggs.errors import LevelError, LevelMismatchError, StorageError
 
+from .datasets import check_dataset_name, discard_empty_dataset, open_dataset
 from .failures import guarded, translate
 from .readonly import connect as _connect
 from .readonly import connect_immutable, quiet, signature
@@ -47,8 +48,12 @@ def _dggs_version() -> str:
 class Connection:
     """An open cell store file: the connection, its transactions and metadata."""
 
-    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float, check_same_thread: bool = True) -> None:
+    def __init__(self, path: str, *, create: bool, readonly: bool, timeout: float, check_same_thread: bool = True,
+                 dataset: str | None = None) -> None:
         self.path, self.readonly, self.timeout = path, readonly, timeout
+        self.dataset = None if dataset is None else check_dataset_name(dataset)  # None: the default dataset
+        self.create = create
+        self.created_dataset = False  # this connection made the named dataset (close may take it back)
         self.check_same_thread = check_same_thread
         self.projection = "ISEA"  # the grid of the cells: set by CellStore from meta (storage/projection.py)
         self.created = False  # this connection made the file (close(discard_unused=True) may take it back)
@@ -179,6 +184,10 @@ class Connection:
             check_schema(conn, self.path)  # whoever created it, it must be ours
         elif not self.readonly:
             upgrade_layout(conn)
+        if self.dataset is not None:  # a named dataset, made here if new and allowed (storage/datasets.py)
+            self.dataset, made = open_dataset(conn, self.dataset, self.path, self.create and not self.readonly,
+                                              _dggs_version(), now())
+            self.created_dataset = self.created_dataset or made
         check_meta(conn, self.path)
 
     def close(self, discard_unused: bool = False) -> None:
@@ -186,10 +195,14 @@ class Connection:
 
         With ``discard_unused`` (a ``with`` block left by an error), a file this connection created and into
         which nothing was ever ingested is removed, with its ``-wal``/``-shm``/``-journal``: a failed first
-        ingest leaves no empty store behind, as ``dggs bin`` checks its input before creating one.
+        ingest leaves no empty store behind, as ``dggs bin`` checks its input before creating one.  So is a
+        named dataset it made that holds no row (storage/datasets.py).
         """
         unused = False
-        if discard_unused and self.created:
+        if discard_unused and self.created_dataset:  # made for an ingest that stored no row: taken back
+            with contextlib.suppress(sqlite3.Error):
+                discard_empty_dataset(self._conn, str(self.dataset))
+        if discard_unused and self.created and self._conn.dataset is None:  # type: ignore[attr-defined]
             try:
                 unused = not any(self._conn.execute(f"SELECT 1 FROM {t} LIMIT 1").fetchone()
                                  for t in ("sources", "points", "points_pending"))
@@ -305,8 +318,9 @@ class Connection:
         stored = self.level
         if stored is not None and stored != level:
             raise LevelMismatchError(
-                f"{self.path} stores cells at level {stored}; cannot ingest at level {level} "
-                f"(use level={stored} or another store)"
+                f"{self.path}{'' if self.dataset is None else f' dataset {self.dataset!r}'} stores cells at level {stored}; "
+                f"cannot ingest at level {level} "
+                f"(use level={stored}, or another dataset: CellStore(path, dataset=NAME))"
             )
 
     def resolve_level(self, level: int | None) -> int:

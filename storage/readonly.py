@@ -29,6 +29,8 @@ from pathlib import Path
 
 from dggs.errors import StorageError
 
+from .scoped import ScopedConnection
+
 __all__ = ["connect", "connect_immutable", "quiet", "signature"]
 
 
@@ -62,12 +64,14 @@ def connect(path: str, readonly: bool, timeout: float, check_same_thread: bool =
         If SQLite cannot open the file (the caller translates it, naming the file).
     """
     if path == ":memory:" or not readonly:
-        return sqlite3.connect(path, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread), False
+        return sqlite3.connect(path, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread,
+                           factory=ScopedConnection), False
     file = Path(path).resolve()
     if quiet(file):
         return connect_immutable(file, timeout, check_same_thread), True
     uri = file.as_uri() + "?mode=ro"
-    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread)
+    conn = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread,
+                           factory=ScopedConnection)
     try:
         conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
         return conn, False
@@ -97,4 +101,5 @@ def connect_immutable(file: Path, timeout: float = 30.0, check_same_thread: bool
             "its latest rows cannot be read there: copy the store and its -wal file to a writable folder"
         )
     uri = file.as_uri() + "?mode=ro&immutable=1"
-    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread)
+    return sqlite3.connect(uri, uri=True, isolation_level=None, timeout=timeout, check_same_thread=check_same_thread,
+                           factory=ScopedConnection)

@@ -31,6 +31,7 @@ import dggs
 from dggs.errors import DggsValueError
 
 from .connection import DEFAULT_LEVEL, Connection, guarded
+from .datasets import describe_datasets
 from .exporter import DRAW_TOLERANCE, Exporter
 from .ingest import MERGE_ROWS, IngestResult
 from .ingester import Ingester, Values
@@ -86,6 +87,13 @@ class CellStore:
         file's own (ISEA for a new store and for files that record none).
     check_same_thread : bool, default True
         sqlite3's; False: a pool lends it to one thread after another (dggs/server/pool.py).
+    dataset : str, optional
+        A named dataset of the file (its own level, projection, columns, sources and kept roll-ups),
+        made on first use unless ``readonly`` or ``create=False``; None (the default): the file's
+        default dataset, the one every store written before datasets holds.  Letters, digits, ``_``
+        and ``-``, starting with a letter.  Everything this store does (ingest, queries, roll-ups,
+        export, ``store.conn``'s ad-hoc SQL) acts on that dataset alone.  A dataset made by this
+        store and left empty by an error inside its ``with`` block is taken back.
 
     Raises
     ------
@@ -93,6 +101,9 @@ class CellStore:
         Naming the file, if it is not a SQLite database, not a cell store, or
         missing with ``create=False``; naming both projections, if
         ``projection`` differs from the one the file records.
+    DatasetError
+        (a :class:`DggsValueError`) naming it, for a dataset name that is not allowed, or one the file
+        lacks when the store may not make it.
 
     Examples
     --------
@@ -111,6 +122,7 @@ class CellStore:
         merge_rows: int = MERGE_ROWS,
         projection: str | None = None,
         check_same_thread: bool = True,
+        dataset: str | None = None,
     ) -> None:
         if isinstance(merge_rows, bool) or not isinstance(merge_rows, int) or merge_rows < 1:
             raise DggsValueError(f"merge_rows must be a whole number >= 1, not {merge_rows!r}")
@@ -121,7 +133,7 @@ class CellStore:
         self.readonly = readonly
         self.timeout = float(timeout)
         self._store = Connection(self.path, create=create, readonly=readonly, timeout=self.timeout,
-                                 check_same_thread=bool(check_same_thread))
+                                 check_same_thread=bool(check_same_thread), dataset=dataset)
         try:
             self._store.projection = settle(self._store.conn, self.path, projection, readonly)
         except BaseException:
@@ -154,7 +166,34 @@ class CellStore:
         self._store.close(discard_unused=error is not None)  # a failed first ingest leaves no empty file
 
     def __repr__(self) -> str:
-        return f"<CellStore {self.path} level={self.level}>"
+        named = "" if self.dataset is None else f" dataset={self.dataset!r}"
+        return f"<CellStore {self.path}{named} level={self.level}>"
+
+    @property
+    def dataset(self) -> str | None:
+        """The dataset this store reads and writes: its name, or None for the file's default dataset."""
+        return self._store.dataset
+
+    @property
+    def made_dataset(self) -> bool:
+        """Whether this store made its named dataset when it opened (it was not in the file before)."""
+        return bool(self._store.created_dataset)
+
+    @guarded
+    def datasets(self) -> list[dict[str, Any]]:
+        """Every dataset of the file, the default one (name None) first, with level, projection, rows, columns.
+
+        ``rollup_levels`` gives each one's kept roll-ups.  :func:`dggs.storage.list_datasets` does the same
+        for a path.
+
+        Examples
+        --------
+        >>> with CellStore() as store:
+        ...     _ = store.ingest_points([48.85], [2.35], 9)
+        ...     [(d["name"], d["level"], d["rows"]) for d in store.datasets()]
+        [(None, 9, 1)]
+        """
+        return describe_datasets(self._store.conn)
 
     @property
     def projection(self) -> str:
@@ -274,6 +313,7 @@ class CellStore:
             )
         return {
             "path": self.path,
+            "dataset": self.dataset,
             "level": level,
             "cell_area_km2": float(dggs.cell_area(level, unit="km^2")) if level is not None else None,
             "crs": meta.get("crs"),
@@ -398,3 +438,4 @@ class CellStore:
     ) -> int:
         return self._exporter.export(path, level, column, stats, format=format, densify=densify, tolerance=tolerance,
                                      progress=progress)
+

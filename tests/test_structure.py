@@ -57,7 +57,9 @@ GUIDE_LINES = 400
 MAX_LINES = 700
 #: Modules past GUIDE_LINES, each with the one idea that holds it together (an entry for a module back under the
 #: guideline is stale and fails, so the list stays true).
-LONG_MODULES: dict[str, str] = {}
+LONG_MODULES: dict[str, str] = {
+    "dggs.storage.store": "the CellStore facade: one documented delegate per public verb over its collaborators",
+}
 
 
 def _modules() -> dict[str, Path]:

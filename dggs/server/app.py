@@ -59,8 +59,9 @@ def create_app(
     Parameters
     ----------
     store_path : str or Path
-        A cell store file (:class:`dggs.storage.CellStore`).  The collection
-        id is its stem (``demo.db`` -> ``demo``).
+        A cell store file (:class:`dggs.storage.CellStore`).  Each of its
+        datasets is a collection: the default one's id is the file's stem
+        (``demo.db`` -> ``demo``), a named one's its name.
     max_zones : int, default 100,000
         Most zones one zone listing returns (HTTP 413 beyond).
     max_features : int, default 50,000
@@ -89,13 +90,25 @@ def create_app(
     if isinstance(refresh, bool) or not isinstance(refresh, (int, float)) or not refresh >= 0:
         raise DggsValueError(f"refresh must be a number of seconds >= 0, not {refresh!r}")
     reader = StoreReader(store_path, refresh=refresh)
-    ctx = Context(reader=reader, max_zones=max_zones, max_features=max_features)
+    readers = {reader.collection_id: reader}
+    try:
+        from dggs.storage import list_datasets
+
+        for name in [d["name"] for d in list_datasets(store_path)][1:]:  # each named dataset is a collection too
+            cid = name if name not in readers else f"{name}-dataset"  # a dataset named as the file: set apart
+            readers[cid] = StoreReader(store_path, refresh=refresh, dataset=name, collection_id=cid)
+    except BaseException:
+        for one in readers.values():
+            one.close()
+        raise
+    ctx = Context(reader=reader, max_zones=max_zones, max_features=max_features, readers=readers)
     folder = Path(static) if static is not None else STATIC
 
     @contextlib.asynccontextmanager
     async def lifespan(app: Any) -> AsyncIterator[None]:
         yield
-        reader.close()
+        for one in readers.values():
+            one.close()
 
     app = FastAPI(
         title=f"dggs: {reader.collection_id}",

@@ -172,7 +172,7 @@ def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox
           limit: int | None, offset: int, datetime: str | None, properties: str | None,
           f: str | None = None, crs: str | None = None, bbox_crs: str | None = None) -> Response:
     """A page of the collection's features (/req/core/fc-response); see the module's docstring."""
-    check_collection(ctx, cid)
+    ctx = check_collection(ctx, cid)  # the collection's dataset
     check_crs("crs", crs)  # OGC API - Features Part 2: the collection's one CRS, CRS84, may be named
     check_crs("bbox-crs", bbox_crs)
     negotiate(request, f, ("geojson", "json"))  # GeoJSON is JSON too
@@ -217,7 +217,7 @@ def items(ctx: Context, request: Request, cid: str, zone_level: int | None, bbox
 def item(ctx: Context, request: Request, cid: str, feature_id: str, properties: str | None,
          f: str | None = None, crs: str | None = None) -> Response:
     """One zone as a Feature (/req/core/f-op, /req/core/f-success); 404 when the zone holds no rows."""
-    check_collection(ctx, cid)
+    ctx = check_collection(ctx, cid)  # the collection's dataset
     check_crs("crs", crs)
     negotiate(request, f, ("geojson", "json"))
     keep = parse_properties(properties, _property_names(ctx))
@@ -267,7 +267,7 @@ def schema_xsd(ctx: Context, cid: str) -> bytes:
     """
     from xml.etree import ElementTree as ET
 
-    check_collection(ctx, cid)
+    ctx = check_collection(ctx, cid)  # the collection's dataset
     xs, gml = "http://www.w3.org/2001/XMLSchema", "http://www.opengis.net/gml/3.2"
     ET.register_namespace("xs", xs)
     ET.register_namespace("gml", gml)

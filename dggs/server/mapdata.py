@@ -47,7 +47,7 @@ from .dggrs import dggrs_of
 from .encodings import UINT64
 from .errors import BadRequest, TooManyZones
 from .geojson import GEOJSON, clean, feature_collection
-from .params import Context, check_level, negotiate, parse_bbox
+from .params import Context, check_collection, check_level, negotiate, parse_bbox
 from .reader import cells_meeting_bbox, covers_world
 from .strictparams import refuse_unknown
 
@@ -143,13 +143,20 @@ def ids_body(ids: np.ndarray, counts: np.ndarray, values: list[Any]) -> bytes:
     return head + zone_ids.tobytes() + np.asarray(counts, dtype="<f8").tobytes() + vals.tobytes()
 
 
+#: ``?collection=`` of the map's routes: a dataset of the store (``map/layers`` lists them) [default: the default one].
+_COLLECTION = Query(None, description="A collection (a dataset of the store; map/layers lists them) "
+                                      "[default: the store's default dataset]")
+
+
 def register(app: FastAPI, ctx: Context) -> None:
     """Add ``/map/layers`` and ``/map/cells``."""
 
     @app.get("/map/layers", tags=["Web map"], summary="What the web map can show")
-    def map_layers(request: Request) -> JSONResponse:
+    def map_layers(request: Request, collection: str | None = _COLLECTION) -> JSONResponse:
         negotiate(request, None, ("json",))
-        return JSONResponse(layers(ctx))
+        body = layers(check_collection(ctx, collection))
+        body["collections"] = list(ctx.readers or [ctx.reader.collection_id])  # the store's datasets, default first
+        return JSONResponse(body)
 
     @app.get("/map/cells", tags=["Web map"], dependencies=[Depends(refuse_unknown)], summary="Non-empty cells of a level in a bbox (GeoJSON, or ids)",
              response_class=Response, responses={200: {"content": {GEOJSON: {}, UINT64: {}}}})
@@ -160,6 +167,7 @@ def register(app: FastAPI, ctx: Context) -> None:
         column: str | None = Query(None, description="A numeric column; default: the row count"),
         stat: str = Query("count", description="count, sum, mean, min or max of the column"),
         f: str | None = Query(None, description="geojson (default) or uint64: ids, counts and values, binary"),
+        collection: str | None = _COLLECTION,
     ) -> Response:
         fmt = negotiate(request, f, ("geojson", "json", "uint64"))  # GeoJSON is JSON too
-        return cells(ctx, level, bbox, column, stat, "uint64" if fmt == "uint64" else "geojson")
+        return cells(check_collection(ctx, collection), level, bbox, column, stat, "uint64" if fmt == "uint64" else "geojson")

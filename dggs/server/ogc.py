@@ -211,26 +211,26 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
     def conformance(request: Request, f: str | None = _F) -> Response:
         return _json(request, f, {"conformsTo": CONFORMANCE})
 
-    @app.get("/collections", tags=["Collections"], summary="Collections (the one store)")
+    @app.get("/collections", tags=["Collections"], summary="Collections (the store's datasets)")
     def collections(request: Request, f: str | None = _F) -> Response:
         negotiate(request, f, ("json",))
         base = base_url(request)
+        every = [collection(check_collection(ctx, cid), request) for cid in (ctx.readers or [None])]
         return json_response(Collections.model_validate({
-            "links": [_link(f"{base}/collections", "self")], "collections": [collection(ctx, request)],
-            "numberMatched": 1, "numberReturned": 1}))
+            "links": [_link(f"{base}/collections", "self")], "collections": every,
+            "numberMatched": len(every), "numberReturned": len(every)}))
 
     @app.get("/collections/{collectionId}", tags=["Collections"], summary="The collection")
     def one_collection(request: Request, collectionId: str, f: str | None = _F) -> Response:
-        check_collection(ctx, collectionId)
-        return _json(request, f, collection(ctx, request))
+        return _json(request, f, collection(check_collection(ctx, collectionId), request))
 
     def described(request: Request, collection_id: str | None, dggrs_id: str) -> dict[str, Any]:
-        check_collection(ctx, collection_id)
-        serves_data = check_dggrs(dggrs_id) == ctx.reader.projection
+        one = check_collection(ctx, collection_id)
+        serves_data = check_dggrs(dggrs_id) == one.reader.projection
         if collection_id is not None and not serves_data:
-            check_data_dggrs(ctx, dggrs_id)  # 404: the collection's data are under the other DGGRS
+            check_data_dggrs(one, dggrs_id)  # 404: the collection's data are under the other DGGRS
         prefix = "" if collection_id is None else f"/collections/{collection_id}"
-        return description(base_url(request), prefix, ctx.reader.summary().level, collection_id, dggrs_id,
+        return description(base_url(request), prefix, one.reader.summary().level, collection_id, dggrs_id,
                            serves_data)
 
     @app.get("/dggs", tags=["DGGS"], summary="DGGRS list")
@@ -248,8 +248,7 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
 
     @app.get("/collections/{collectionId}/dggs", tags=["Collection DGGS"], summary="DGGRS list of the collection")
     def dggs_collection(request: Request, collectionId: str, f: str | None = _F) -> Response:
-        check_collection(ctx, collectionId)
-        return _json(request, f, dggrs_list(ctx, request, collectionId))
+        return _json(request, f, dggrs_list(check_collection(ctx, collectionId), request, collectionId))
 
     @app.get("/collections/{collectionId}/dggs/{dggrsId}", tags=["Collection DGGS"], summary="DGGRS description")
     def dggrs_collection(request: Request, collectionId: str, dggrsId: str, f: str | None = _F) -> Response:
@@ -259,8 +258,7 @@ def register(app: FastAPI, ctx: Context, static: Path) -> None:
              summary="DGGRS definition (Annex B schema)")
     def dggrs_collection_definition(request: Request, collectionId: str, dggrsId: str,
                                     f: str | None = _F) -> Response:
-        check_collection(ctx, collectionId)
-        check_data_dggrs(ctx, dggrsId)
+        check_data_dggrs(check_collection(ctx, collectionId), dggrsId)
         return _json(request, f, definition(dggrsId))
 
     @app.get("/robots.txt", include_in_schema=False)

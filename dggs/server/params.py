@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import dggs
@@ -27,9 +27,10 @@ __all__ = ["Context", "parse_bbox", "parse_zone", "parse_depths", "check_level",
 class Context:
     """What every handler needs: the store and the limits."""
 
-    reader: Any  # StoreReader
+    reader: Any  # StoreReader: the default dataset's (the root paths), or the collection's (check_collection)
     max_zones: int  # zones in a zone listing
     max_features: int  # features (or sub-zone values) in /map/cells and zone data
+    readers: dict[str, Any] = field(default_factory=dict)  # every collection's StoreReader, by collection id
 
 
 def base_url(request: Any) -> str:
@@ -194,16 +195,22 @@ def negotiate(request: Any, f: str | None, formats: tuple[str, ...] = ("json", "
     return best
 
 
-def check_collection(ctx: Context, collection: str | None) -> None:
-    """404 unless ``collection`` is None (root paths) or the served collection.
+def check_collection(ctx: Context, collection: str | None) -> Context:
+    """The context of ``collection`` (its dataset's reader); ``ctx`` itself for None (the root paths).
+
+    Each dataset of the store is a collection (storage/datasets.py); the default one keeps the file's stem.
 
     Raises
     ------
     NotFound
-        If ``collection`` is not the collection this server serves.
+        If ``collection`` is not a collection this server serves, naming the ones it does.
     """
-    if collection is not None and collection != ctx.reader.collection_id:
-        raise NotFound(f"no collection {collection!r}; this server has {ctx.reader.collection_id!r}")
+    if collection is None:
+        return ctx
+    readers = ctx.readers or {ctx.reader.collection_id: ctx.reader}
+    if collection not in readers:
+        raise NotFound(f"no collection {collection!r}; this server has {', '.join(map(repr, readers))}")
+    return replace(ctx, reader=readers[collection])
 
 
 def check_dggrs(dggrs_id: str) -> str:

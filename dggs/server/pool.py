@@ -39,8 +39,8 @@ POOL_IDLE = 8
 class StorePool:
     """Read-only stores of one file, lent to one thread at a time; closes what it does not keep."""
 
-    def __init__(self, path: str | os.PathLike[str], idle: int = POOL_IDLE) -> None:
-        self.path, self.idle_max = path, idle
+    def __init__(self, path: str | os.PathLike[str], idle: int = POOL_IDLE, dataset: str | None = None) -> None:
+        self.path, self.idle_max, self.dataset = path, idle, dataset
         self._lock = threading.Lock()
         self._idle: list[CellStore] = []  # stores given back, newest last
         self._busy: set[CellStore] = set()  # stores lent now
@@ -53,7 +53,7 @@ class StorePool:
             if store is not None:
                 self._busy.add(store)
                 return store
-        store = CellStore(self.path, create=False, readonly=True, check_same_thread=False)
+        store = CellStore(self.path, create=False, readonly=True, check_same_thread=False, dataset=self.dataset)
         with self._lock:
             self._busy.add(store)
         return store

@@ -126,14 +126,16 @@ class StoreReader:
         change is seen at once).
     """
 
-    def __init__(self, path: str | os.PathLike[str], refresh: float = 0.0) -> None:
+    def __init__(self, path: str | os.PathLike[str], refresh: float = 0.0, dataset: str | None = None,
+                 collection_id: str | None = None) -> None:
         self.path = Path(path)
         self.refresh = float(refresh)
+        self.dataset = dataset  # a named dataset of the file (storage/datasets.py); None: the default one
         self._flights: dict[tuple[Any, ...], threading.Lock] = {}
-        self.collection_id = self.path.stem
+        self.collection_id = collection_id or (self.path.stem if dataset is None else dataset)
         self._local = threading.local()  # .store, .depth: the store this thread holds and its snapshot nesting
         self._lock = threading.Lock()
-        self._pool = StorePool(self.path)
+        self._pool = StorePool(self.path, dataset=dataset)
         self._cache: OrderedDict[tuple[Any, ...], Any] = OrderedDict()
         self._geometry: dict[str, tuple[Any, str]] = {}
         with self.snapshot() as (store, _marker):

@@ -362,24 +362,24 @@ def register(app: FastAPI, ctx: Context) -> None:
         return zones_list(ctx, request, None, q, f, dggrsId)
 
     def c_info(request: Request, collectionId: str, dggrsId: str, zoneId: str, f: str | None = _F) -> Response:
-        check_collection(ctx, collectionId)
-        check_data_dggrs(ctx, dggrsId)  # a collection offers the DGGRS of its data only
-        return zone_info(ctx, request, collectionId, parse_zone(zoneId), f, dggrsId)
+        one = check_collection(ctx, collectionId)
+        check_data_dggrs(one, dggrsId)  # a collection offers the DGGRS of its data only
+        return zone_info(one, request, collectionId, parse_zone(zoneId), f, dggrsId)
 
     def c_data(request: Request, collectionId: str, dggrsId: str, zoneId: str, zone_depth: str | None = _DEPTH,
                geometry: str | None = _GEOMETRY, f: str | None = _F_DATA,
                properties: str | None = _PROPERTIES, crs: str | None = CRS_QUERY) -> Response:
-        check_collection(ctx, collectionId)
+        one = check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
         check_crs("crs", crs)
-        return zone_data(ctx, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
+        return zone_data(one, request, collectionId, parse_zone(zoneId), zone_depth, f, geometry, dggrsId,
                          properties)
 
     def c_zones(request: Request, collectionId: str, dggrsId: str, q: ZoneQuery = ZONE_QUERY,
                 f: str | None = _F_ZONES) -> Response:
-        check_collection(ctx, collectionId)
+        one = check_collection(ctx, collectionId)
         check_dggrs(dggrsId)
-        return zones_list(ctx, request, collectionId, q, f, dggrsId)
+        return zones_list(one, request, collectionId, q, f, dggrsId)
 
     for prefix, tag, handlers in (
         ("", "DGGS", (zones, info, data)),

@@ -17,7 +17,7 @@ from .standard import conforms
 MAP_LAYERS: dict[str, Any] = {
     "type": "object",
     "required": ["collection", "stored_level", "levels", "columns", "numeric_columns", "bbox", "count", "max_zones",
-                 "dggrs"],
+                 "dggrs", "collections"],
     "additionalProperties": False,
     "properties": {
         "collection": {"type": "string"},
@@ -29,6 +29,7 @@ MAP_LAYERS: dict[str, Any] = {
         "count": {"type": "integer", "minimum": 0},
         "max_zones": {"type": "integer", "minimum": 1},
         "dggrs": {"enum": ["DGGS-Split26-ISEA", "DGGS-Split26-IVEA"]},
+        "collections": {"type": "array", "minItems": 1, "items": {"type": "string"}},  # the store's datasets
     },
 }
 

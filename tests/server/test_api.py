@@ -418,6 +418,7 @@ def test_map_layers_contract(client, points):
         "count": points.lat.shape[0],
         "max_zones": 50_000,
         "dggrs": "DGGS-Split26-ISEA",
+        "collections": ["sample"],  # the store's datasets: its default one alone
     }
 
 

@@ -699,3 +699,52 @@ def test_the_view_is_in_the_url_and_a_link_opens_it(page: Any, server: str) -> N
     page.get(f"{server}/")  # the module's page again, framed on the data, for the tests after this one
     wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
     wait_for(page, lambda: page.execute_script("return window.dggsState.geography") != "loading")
+
+
+def test_a_dataset_picker_shows_each_dataset_of_the_store(driver: Any, tmp_path: Path, data: dict[str, Any]) -> None:
+    """Issue 38 item 5: a store holding points at level 9 (the default dataset) and a coarser dataset at level 5;
+    the page lists both, shows the default one first and, once the other is picked, its own cells, levels and
+    columns, fetched under its collection (map/cells?collection=, its zone information under /collections)."""
+    from .serving import serving
+
+    path = tmp_path / "two.db"
+    lat, lng = data["lat"], data["lng"]
+    africa = lat < 10  # the Africa cluster (and the clusters south of it) only
+    with CellStore(path) as default, CellStore(path, dataset="coarse") as coarse:
+        default.ingest_points(lat, lng, STORED_LEVEL, {"pop": data["pop"]})
+        coarse.ingest_points(lat[africa], lng[africa], 5, {"rain": data["pop"][africa] * 0.5})
+    with serving(path, "--max-features", str(MAX_FEATURES)) as base:
+        driver.get(f"{base}/")
+        wait_for(driver, lambda: driver.execute_script("return document.body.dataset.state") in ("idle", "error"))
+        field = driver.find_element(By.ID, "collection-field")
+        assert field.is_displayed()
+        picker = Select(driver.find_element(By.ID, "collection"))
+        assert [o.get_attribute("value") for o in picker.options] == ["two", "coarse"]
+        assert picker.first_selected_option.get_attribute("value") == "two"
+        assert state(driver)["collection"] is None and "at level 9" in driver.find_element(By.ID, "subtitle").text
+        s = set_view(driver, GLOBE_VIEW)
+
+        def drawn() -> list[str]:
+            return driver.execute_script(
+                "return window.dggsMap.getSource('cells').serialize().data.features.map(f => f.properties.zone_id)")
+
+        everywhere = {c[: s["level"] + 1] for c in dggs.latlng_to_cell(lat, lng, STORED_LEVEL)}
+        assert set(drawn()) <= everywhere and drawn()
+        s = choose(driver, "collection", "coarse")
+        assert s["collection"] == "coarse" and s["level"] <= 5 and s["lastError"] is None
+        assert driver.find_element(By.ID, "subtitle").text.startswith("coarse: ")
+        assert "at level 5" in driver.find_element(By.ID, "subtitle").text
+        columns = [o.get_attribute("value") for o in Select(driver.find_element(By.ID, "column")).options]
+        assert columns == ["", "rain"]
+        cells = {c[: s["level"] + 1] for c in dggs.latlng_to_cell(lat[africa], lng[africa], 5)}
+        bbox = ",".join(str(x) for x in s["bbox"])
+        doc = _get_json(f"{base}/map/cells?level={s['level']}&bbox={bbox}&stat=count&collection=coarse")
+        assert drawn() == [f["properties"]["zone_id"] for f in doc["features"]] and set(drawn()) <= cells
+        urls = driver.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+        assert any("/map/cells?" in u and "collection=coarse" in u for u in urls)
+        s = choose(driver, "collection", "two")  # and back: the default dataset, under the root paths again
+        assert s["collection"] is None and "at level 9" in driver.find_element(By.ID, "subtitle").text
+        from dggs.server.vendor import STATIC_FOLDER
+
+        core_missing = not (STATIC_FOLDER / "vendor" / "dggs").is_dir()  # no WebAssembly core built: GeoJSON then
+        assert [e for e in js_errors(driver) if not (core_missing and "/static/vendor/dggs/" in e["message"])] == []

@@ -24,6 +24,8 @@ MODULES = [
     "dggs.storage.producer",
     "dggs.storage.ingest",
     "dggs.storage.store",
+    "dggs.storage.datasets",
+    "dggs.storage.scoped",
     "dggs.storage.ingester",
     "dggs.storage.exporter",
     "dggs.storage.connection",

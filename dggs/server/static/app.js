@@ -32,10 +32,17 @@ const BORDER_COLOUR = '#5f7389';
 const COUNTRIES_URL = new URL('./vendor/world-atlas/countries-50m.json', import.meta.url);
 const TOPOJSON_URL = new URL('./vendor/topojson-client/topojson-client.min.js', import.meta.url);
 // The zones of the DGGRS the store's data were binned with (map/layers says which; ISEA before it loads).
-const zonesPath = () => `dggs/${encodeURIComponent((layers && layers.dggrs) || 'DGGS-Split26-ISEA')}/zones/`;
+// A named dataset's zones are under its collection; the default dataset's under the root, as before datasets.
+const zonesPath = () => `${state.collection === null ? '' : `collections/${encodeURIComponent(state.collection)}/`}`
+  + `dggs/${encodeURIComponent((layers && layers.dggrs) || 'DGGS-Split26-ISEA')}/zones/`;
+// map/layers of the dataset shown (the store's default one: no parameter).
+const layersUrl = () => (state.collection === null ? 'map/layers'
+  : `map/layers?${new URLSearchParams({ collection: state.collection })}`);
 
 const $ = (id) => document.getElementById(id);
 const ui = {
+  collection: $('collection'),
+  collectionField: $('collection-field'),
   column: $('column'),
   stat: $('stat'),
   level: $('level'),
@@ -49,6 +56,7 @@ const ui = {
 
 // State read by the tests (and handy in the console).
 const state = {
+  collection: null,     // the dataset shown: null for the store's default one, else its collection id
   level: null,          // level of the cells on the map
   featureCount: 0,      // cells on the map
   loading: true,
@@ -68,6 +76,7 @@ const state = {
 window.dggsState = state;
 
 let layers = null;        // GET map/layers
+let controlsWired = false; // the controls' listeners are added once
 let requestSeq = 0;       // the latest refresh; older answers are dropped
 let controller = null;    // aborts the previous request
 let shownKey = null;      // the request whose cells are on the map
@@ -533,6 +542,7 @@ function viewBbox() {
 
 function cellsUrl(level, bbox) {
   const params = new URLSearchParams({ level: String(level), bbox: bbox.join(',') });
+  if (state.collection !== null) params.set('collection', state.collection);
   if (state.column === null) {
     params.set('stat', 'count');
   } else {
@@ -651,7 +661,7 @@ async function refresh() {
   const bbox = viewBbox();
   const wanted = targetLevel();
   let level = wanted;
-  const key = JSON.stringify([wanted, bbox, state.column, state.stat, state.scale]);
+  const key = JSON.stringify([state.collection, wanted, bbox, state.column, state.stat, state.scale]);
   if (key === shownKey) {
     // Nothing new to fetch (say, the whole globe turned): the cells on the map stay.
     whenMapIdle(seq, 'idle');
@@ -760,15 +770,52 @@ function setUpControls() {
   ui.level.innerHTML = '';
   ui.level.add(new Option('auto (from zoom)', 'auto', true, true));
   for (const level of layers.levels) ui.level.add(new Option(String(level), String(level)));
-  for (const select of [ui.column, ui.stat, ui.level, ui.scale]) {
-    select.addEventListener('change', () => {
-      readControls();
-      refresh();
-    });
+  if (!controlsWired) {
+    controlsWired = true;
+    for (const select of [ui.column, ui.stat, ui.level, ui.scale]) {
+      select.addEventListener('change', () => {
+        readControls();
+        refresh();
+      });
+    }
+    setUpDatasets();
   }
   readControls();
   const rows = Number(layers.count).toLocaleString('en-US');
   ui.subtitle.textContent = `${layers.collection}: ${rows} rows at level ${layers.stored_level}`;
+}
+
+// The dataset picker: shown when the store has more than one (map/layers' collections, the default first).
+function setUpDatasets() {
+  const ids = layers.collections || [layers.collection];
+  ui.collection.innerHTML = '';
+  for (const id of ids) ui.collection.add(new Option(id, id, id === ids[0], id === ids[0]));
+  ui.collectionField.hidden = ids.length < 2;
+  ui.collection.addEventListener('change', async () => {
+    state.collection = ui.collection.value === ids[0] ? null : ui.collection.value;
+    state.selected = null;
+    popup.remove();
+    if (await loadLayers()) {
+      setUpControls();
+      refresh();
+    }
+  });
+}
+
+// GET map/layers of the dataset shown; false (with the error shown) if it fails.
+async function loadLayers() {
+  try {
+    const response = await fetch(layersUrl(), { headers: { Accept: 'application/json' } });
+    if (!response.ok) throw new Error(`map/layers: ${await readError(response)}`);
+    layers = await response.json();
+    return true;
+  } catch (err) {
+    state.lastError = String(err.message || err);
+    state.loading = false;
+    setStatus(state.lastError, true);
+    setBodyState('error');
+    return false;
+  }
 }
 
 // Frame the data: the whole globe around the data's centre, or the data's bbox when it is small.
@@ -785,17 +832,7 @@ function frameData() {
 }
 
 async function start() {
-  try {
-    const response = await fetch('map/layers', { headers: { Accept: 'application/json' } });
-    if (!response.ok) throw new Error(`map/layers: ${await readError(response)}`);
-    layers = await response.json();
-  } catch (err) {
-    state.lastError = String(err.message || err);
-    state.loading = false;
-    setStatus(state.lastError, true);
-    setBodyState('error');
-    return;
-  }
+  if (!(await loadLayers())) return;
   setUpControls();
   loadGeography();
   if (layers.stored_level === null || layers.stored_level === undefined || !layers.levels.length) {
