@@ -7,10 +7,11 @@
  *   Newsletter 18, 1983), then minimax polynomials on [-pi/4, pi/4] with the reduced argument's tail carried
  *   into the first-order term. The polynomial coefficients are fdlibm's (k_sin.c, k_cos.c; Sun Microsystems
  *   1993, K. C. Ng), numbers only.
- * - atan2: the quotient y / x as a double-double (Dekker's exact product, T. J. Dekker, "A floating-point
- *   technique for extending the available precision", Numer. Math. 18, 1971), atan by reduction to |t| < 7/16
- *   around atan(1/2), atan(1), atan(3/2) and infinity and an odd minimax polynomial of degree 23 (fdlibm s_atan.c's
- *   coefficients), the quotient's tail added as ql / (1 + q^2), the quadrant by a double-double pi.
+ * - atan2: atan of q = |y / x| by reduction to |t| < 7/16 around atan(1/2), atan(1), atan(3/2) and infinity, t
+ *   formed from x and y in one division, and an odd minimax polynomial of degree 23 (fdlibm s_atan.c's
+ *   coefficients); below 7/16 the quotient's rounding error (Dekker's exact product, T. J. Dekker, "A
+ *   floating-point technique for extending the available precision", Numer. Math. 18, 1971) is added as
+ *   ql / (1 + q^2); the quadrant by a double-double pi.
  * - hypot: x^2 + y^2 as a double-double, its square root corrected by one Newton step (the residual by Dekker's
  *   product), scaled by powers of two only where a square would overflow or lose bits.
  * - asin: x + x R(x^2) for |x| < 1/2, and pi/2 - 2 asin(sqrt((1 - |x|) / 2)) above, with the square root split in
@@ -263,8 +264,10 @@ void dggs_sincos(double x, double *s, double *c) {
  * atan2
  * ------------------------------------------------------------------------------------------------------------ */
 
-/* atan(q + ql) as hi + lo, for 0 <= q < 2^62 and |ql| <= ulp(q) / 2. */
-static void atan_dd(double q, double ql, double *hi, double *lo) {
+/* atan(y / x) as hi + lo, for 0 < y, x with 2^-62 < y / x < 2^62, both in [2^-560, 2^560]. Below 7/16 the
+ * quotient's rounding is carried as its tail (Dekker's product) into ql / (1 + q^2); above, the reduced argument
+ * is formed from x and y themselves, one division (fdlibm forms it from the rounded quotient). */
+static void atan_yx(double y, double x, double *hi, double *lo) {
     static const double AT[11] = {
         3.33333333333329318027e-01,  -1.99999999998764832476e-01, 1.42857142725034663711e-01,
         -1.11111104054623557880e-01, 9.09088713343650656196e-02,  -7.69187620504482999495e-02,
@@ -277,74 +280,75 @@ static void atan_dd(double q, double ql, double *hi, double *lo) {
     static const double TAIL[4] = {0x1.a2b7f222f65e2p-56, 0x1.1a62633145c07p-55, 0x1.007887af0cbbdp-56,
                                    0x1.1a62633145c07p-54};
     int id;
-    double t;
-    if (q < 0.4375) {
+    double t, tail = 0.0;
+    if (y < 0.4375 * x) {
         id = -1;
-        t = q;
-    } else if (q < 0.6875) {
+        t = y / x;
+        double p, pe;
+        two_prod(t, x, &p, &pe);
+        tail = ((y - p) - pe) / (x + t * y); /* (y - t x) / x / (1 + t^2); y - p exact (Sterbenz) */
+    } else if (y < 0.6875 * x) {
         id = 0;
-        t = (2.0 * q - 1.0) / (2.0 + q);
-    } else if (q < 1.1875) {
+        t = (2.0 * y - x) / (2.0 * x + y); /* (2q - 1) / (2 + q), the numerator exact (Sterbenz) */
+    } else if (y < 1.1875 * x) {
         id = 1;
-        t = (q - 1.0) / (q + 1.0);
-    } else if (q < 2.4375) {
+        t = (y - x) / (y + x);
+    } else if (y < 2.4375 * x) {
         id = 2;
-        t = (q - 1.5) / (1.0 + 1.5 * q);
+        double h, l;
+        fast_two_sum(x, 0.5 * x, &h, &l); /* 1.5 x = h + l exactly; y - h exact (Sterbenz) */
+        t = ((y - h) - l) / (x + 1.5 * y);
     } else {
         id = 3;
-        t = -1.0 / q;
+        t = -x / y;
     }
     double z = t * t;
     double w = z * z;
     double s1 = z * (AT[0] + w * (AT[2] + w * (AT[4] + w * (AT[6] + w * (AT[8] + w * AT[10])))));
     double s2 = w * (AT[1] + w * (AT[3] + w * (AT[5] + w * (AT[7] + w * AT[9]))));
-    double tail = ql / (1.0 + q * q); /* d atan(q) / dq */
     if (id < 0) {
         fast_two_sum(t, tail - t * (s1 + s2), hi, lo);
         return;
     }
     double s, e;
     two_sum(HEAD[id], t, &s, &e);
-    fast_two_sum(s, e + ((TAIL[id] - t * (s1 + s2)) + tail), hi, lo);
+    fast_two_sum(s, e + (TAIL[id] - t * (s1 + s2)), hi, lo);
 }
 
 double dggs_atan2(double y, double x) {
-    if (isnan(x) || isnan(y)) return x + y;
     double ax = fabs(x), ay = fabs(y);
-    double r;
-    if (ay == 0.0) {
-        r = signbit(x) ? PI_HI : 0.0; /* atan2(+-0, -0 or x < 0) = +-pi, atan2(+-0, +0 or x > 0) = +-0 */
-    } else if (ax == 0.0) {
-        r = PIO2_HI;
-    } else if (isinf(ax) || isinf(ay)) {
-        if (isinf(ax) && isinf(ay))
-            r = x > 0 ? 0.5 * PIO2_HI : 3.0 * (0.5 * PIO2_HI);
-        else if (isinf(ay))
-            r = PIO2_HI;
-        else
+    double r = 0.0;
+    int general = 1; /* atan(ay / ax) by atan_yx, then the quadrant: every call of the core */
+    if (!(ax > 0x1p-500 && ax < 0x1p500 && ay > ax * 0x1p-60 && ay < ax * 0x1p60)) {
+        if (isnan(x) || isnan(y)) return x + y;
+        general = 0;
+        if (ay == 0.0) {
+            r = signbit(x) ? PI_HI : 0.0; /* atan2(+-0, -0 or x < 0) = +-pi, atan2(+-0, +0 or x > 0) = +-0 */
+        } else if (ax == 0.0 || isinf(ay)) {
+            r = isinf(ax) ? (x > 0 ? 0.5 * PIO2_HI : 0x1.2d97c7f3321d2p+1) : PIO2_HI; /* pi/4, 3 pi/4 rounded */
+        } else if (isinf(ax)) {
             r = x > 0 ? 0.0 : PI_HI;
-    } else {
-        int ex, ey;
-        (void)frexp(ax, &ex);
-        (void)frexp(ay, &ey);
-        if (ey - ex > 60) {
-            r = PIO2_HI; /* pi/2 - x/y, x/y < 2^-59: pi/2 rounded */
-        } else if (ey - ex < -60) {
+        } else if (ay > ax * 0x1p60) {
+            r = PIO2_HI; /* pi/2 - x/y, x/y < 2^-60: pi/2 rounded */
+        } else if (ay < ax * 0x1p-60) {
             r = x > 0 ? ay / ax : PI_HI; /* atan(q) = q (1 - q^2/3): q rounded; pi - q rounds to pi */
+        } else { /* a power of two that brings ax near 1: exact, and ay stays normal */
+            int e;
+            (void)frexp(ax, &e);
+            ax = ldexp(ax, -e);
+            ay = ldexp(ay, -e);
+            general = 1;
+        }
+    }
+    if (general) {
+        double hi, lo;
+        atan_yx(ay, ax, &hi, &lo);
+        if (x < 0) {
+            double s, e;
+            two_sum(PI_HI, -hi, &s, &e);
+            r = s + (e + (PI_LO - lo));
         } else {
-            double sx = ldexp(ax, -ex), sy = ldexp(ay, -ex); /* exact: sx in [1/2, 1), sy in [2^-62, 2^61) */
-            double q = sy / sx, p, pe;
-            two_prod(q, sx, &p, &pe);
-            double ql = ((sy - p) - pe) / sx; /* sy - p exact (Sterbenz) */
-            double hi, lo;
-            atan_dd(q, ql, &hi, &lo);
-            if (x < 0) {
-                double s, e;
-                two_sum(PI_HI, -hi, &s, &e);
-                r = s + (e + (PI_LO - lo));
-            } else {
-                r = hi + lo;
-            }
+            r = hi + lo;
         }
     }
     return signbit(y) ? -r : r;
