@@ -17,6 +17,8 @@ python libdggs/tools/tie_check.py diff /tmp/ties/old /tmp/ties/new /tmp/ties/cha
 cd /tmp && /work/main/.venv/bin/python libdggs/tools/tie_check.py nudge /tmp/ties/changes.npz /tmp/ties/old_nudge.npz
 cd /tmp && .venv/bin/python libdggs/tools/tie_check.py nudge /tmp/ties/changes.npz /tmp/ties/new_nudge.npz
 python libdggs/tools/tie_check.py verdict /tmp/ties/changes.npz /tmp/ties/old_nudge.npz /tmp/ties/new_nudge.npz
+python libdggs/tools/tie_check.py digests /tmp/ties/old tests/reference/fixtures/kernel_digests.json  # all equal
+python libdggs/tools/tie_check.py digests /tmp/ties/new tests/reference/fixtures/kernel_digests.json --write
 """
 
 from __future__ import annotations
@@ -153,6 +155,37 @@ def verdict(changes: str, *nudged: str) -> int:
     return 1 if bad.size else 0
 
 
+def digests(folder: str, frozen: str, write: bool) -> int:
+    """The digests of freeze_kernel.py from a ``save`` folder: compared with FILE, or written into it (``--write``).
+
+    The same SHA-256 of the same arrays (ids; centres stacked (lat, lng); boundaries with densify 0 and 3 of the
+    first quarter): run on the old build's folder it must give the frozen file's digests, every one.
+    """
+    import hashlib
+    import json
+
+    def digest(a: np.ndarray) -> str:
+        return hashlib.sha256(np.ascontiguousarray(a).tobytes()).hexdigest()
+
+    want = json.loads(Path(frozen).read_text())
+    lat, lng = _points()
+    found = {"points": digest(np.stack([lat, lng]))}
+    for name in PROJECTIONS:
+        for level in LEVELS:
+            found[f"{name}/ids/{level}"] = digest(np.load(os.path.join(folder, f"{name}_ids_{level}.npy")))
+            found[f"{name}/centres/{level}"] = digest(np.load(os.path.join(folder, f"{name}_centres_{level}.npy")))
+            found[f"{name}/boundaries0/{level}"] = digest(np.load(os.path.join(folder, f"{name}_b0_{level}.npy")))
+            found[f"{name}/boundaries3/{level}"] = digest(np.load(os.path.join(folder, f"{name}_b3_{level}.npy")))
+    if write:
+        want["digests"] = found
+        Path(frozen).write_text(json.dumps(want, indent=1, sort_keys=True))
+        print(f"wrote {len(found)} digests to {frozen}")
+        return 0
+    bad = sorted(k for k, v in want["digests"].items() if found.get(k) != v)
+    print(f"{len(want['digests']) - len(bad)} of {len(want['digests'])} digests equal; differ: {', '.join(bad) or 'none'}")
+    return 1 if bad else 0
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -167,7 +200,13 @@ def main(argv: list[str] | None = None) -> int:
     v = sub.add_parser("verdict")
     v.add_argument("changes")
     v.add_argument("nudged", nargs="+")
+    g = sub.add_parser("digests")
+    g.add_argument("folder")
+    g.add_argument("frozen")
+    g.add_argument("--write", action="store_true")
     args = ap.parse_args(argv)
+    if args.cmd == "digests":
+        return digests(args.folder, args.frozen, args.write)
     if args.cmd == "save":
         save(args.folder)
     elif args.cmd == "diff":
