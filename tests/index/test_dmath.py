@@ -19,6 +19,8 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
 
 mp = pytest.importorskip("mpmath")
 
@@ -241,3 +243,51 @@ def test_sincos_is_sin_and_cos(dmath):
     for x in _angles(random.Random(37), 2_000) + HARD_ANGLES + [math.inf, math.nan]:
         dmath.dggs_sincos(x, ctypes.byref(s), ctypes.byref(c))
         assert _same(s.value, dmath.dggs_sin(x)) and _same(c.value, dmath.dggs_cos(x)), x
+
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=500, deadline=None)
+@given(x=finite)
+@example(x=math.pi / 2)
+@example(x=-0.0)
+@example(x=6381956970095103 * 2.0**797)
+@example(x=2.0**20)
+def test_sin_odd_cos_even_and_pythagoras(dmath, x):
+    """sin(-x) = -sin(x) and cos(-x) = cos(x) bit for bit; sin^2 + cos^2 within 4 ulps of 1."""
+    s, c = dmath.dggs_sin(x), dmath.dggs_cos(x)
+    assert _same(dmath.dggs_sin(-x), -s) and _same(dmath.dggs_cos(-x), c)
+    assert abs(s * s + c * c - 1.0) <= 4 * 2.0**-53
+
+
+@settings(max_examples=500, deadline=None)
+@given(y=finite, x=finite)
+@example(y=1.0, x=1.0)
+@example(y=-0.0, x=-1.0)
+@example(y=1e-300, x=1e300)
+@example(y=1.0, x=-(2.0**-60))
+def test_atan2_and_hypot_symmetries(dmath, y, x):
+    """atan2(-y, x) = -atan2(y, x); atan2 of a negative x is pi minus that of -x (to an ulp); hypot is symmetric
+    and sign-blind, and no smaller than either argument."""
+    a = dmath.dggs_atan2(y, x)
+    assert _same(dmath.dggs_atan2(-y, x), -a)
+    assert -math.pi <= a <= math.pi
+    if x < 0 and y > 0:
+        assert abs(a - (math.pi - dmath.dggs_atan2(y, -x))) <= 2 * math.ulp(math.pi)
+    h = dmath.dggs_hypot(y, x)
+    assert _same(h, dmath.dggs_hypot(x, y)) and _same(h, dmath.dggs_hypot(-y, -x))
+    assert h >= max(abs(x), abs(y))
+
+
+@settings(max_examples=500, deadline=None)
+@given(x=st.floats(min_value=-1.0, max_value=1.0))
+@example(x=1.0)
+@example(x=0.5)
+@example(x=-0.975)
+@example(x=-0.0)
+def test_asin_odd_and_inverts_sin(dmath, x):
+    a = dmath.dggs_asin(x)
+    assert _same(dmath.dggs_asin(-x), -a)
+    assert abs(a) <= math.pi / 2 + 1e-15
+    assert abs(dmath.dggs_sin(a) - x) <= 2 * math.ulp(1.0)
