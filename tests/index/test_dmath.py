@@ -291,3 +291,23 @@ def test_asin_odd_and_inverts_sin(dmath, x):
     assert _same(dmath.dggs_asin(-x), -a)
     assert abs(a) <= math.pi / 2 + 1e-15
     assert abs(dmath.dggs_sin(a) - x) <= 2 * math.ulp(1.0)
+
+
+def test_constants_are_mpmaths():
+    """dmath.c's pi/2 pieces, pi, 2/pi and the words of 2/pi, recomputed at 2000 bits (as dmath_constants.py)."""
+    import re
+
+    text = SOURCE.read_text()
+    defined = {m[1]: float.fromhex(m[2]) for m in re.finditer(r"#define (\w+) (0x[0-9a-fp.+-]+)", text)}
+    with mp.workprec(2000):
+        pio2 = mp.pi / 2
+        assert abs(mp.mpf(defined["P1"]) + defined["P2"] + defined["P3"] + defined["P3T"] - pio2) < mp.mpf(2) ** -155
+        for name in ("P1", "P2", "P3"):  # 33 significant bits: n * Pk exact for |n| < 2^20
+            assert int(mp.mpf(defined[name]) * 2 ** (52 - math.frexp(defined[name])[1] + 1)) % 2**20 == 0, name
+        assert defined["P1T"] == float(pio2 - defined["P1"])
+        for name, v in (("PIO2", pio2), ("PI", mp.pi)):
+            assert defined[f"{name}_HI"] == float(v) and defined[f"{name}_LO"] == float(v - mp.mpf(float(v)))
+        assert defined["INV_PIO2"] == float(2 / mp.pi) and defined["PIO4"] == float(mp.pi / 4)
+        words = [int(w, 16) for w in re.findall(r"0x([0-9a-f]{8})u", text.split("TWO_OVER_PI[40] = {")[1])[:40]]
+        assert mp.mpf(sum(w * mp.mpf(2) ** (-32 * (k + 1)) for k, w in enumerate(words))) - 2 / mp.pi < 0
+        assert 2 / mp.pi - sum(w * mp.mpf(2) ** (-32 * (k + 1)) for k, w in enumerate(words)) < mp.mpf(2) ** -1280
