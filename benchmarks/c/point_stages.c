@@ -53,6 +53,14 @@ int main(int argc, char **argv) {
         printf(", \"encode_%d\": %.2f, \"one_point_%d\": %.2f", levels[k], (b - a) / (double)n * 1e9, levels[k],
                (c - b) / (double)n * 1e9);
     }
+    for (int lv = 0; lv <= 28; lv += 28) { /* IVEA's forward: hypot, atan2 and asin besides ISEA's sines */
+        double a = now();
+        uint64_t acc = 0;
+        for (size_t i = 0; i < n; i++) acc ^= dggs_one_point(DGGS_IVEA, lat[i], lng[i], lv);
+        double b = now();
+        sum += (double)(acc & 1);
+        printf(", \"one_point_ivea_%d\": %.2f", lv, (b - a) / (double)n * 1e9);
+    }
     for (size_t i = 0; i < n; i++) sum += x[i] + y[i] + p[3 * i];
     printf(", \"checksum\": %.6g}\n", sum);
     return 0;

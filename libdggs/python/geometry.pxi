@@ -3,7 +3,14 @@
 # loops of the checked projection API (snyder.forward / inverse, ivea.forward / inverse; _checked.py).
 # The shims dggs/geometry/kernel.py and ivea.py re-export them under their old names.
 
-from libc.math cimport NAN, atan2, cos, hypot, sin
+from libc.math cimport NAN
+
+cdef extern from "dmath.h" nogil:  # the core's own libm functions: the same bits on every platform
+    double dggs_sin(double x)
+    double dggs_cos(double x)
+    double dggs_atan2(double y, double x)
+    double dggs_hypot(double x, double y)
+
 
 cdef extern from "tables.h" nogil:
     double DGGS_DEG_PER_RAD
@@ -217,10 +224,10 @@ def child_corners(double ax, double ay, double bx, double by, double cx, double 
 
 cdef inline int _geometry_forward_one(int ivea, const double *centres, const double *frames, double lat, double lng,
                                       double *x, double *y) noexcept nogil:
-    cdef double cl = cos(lat), sl = sin(lat)
+    cdef double cl = dggs_cos(lat), sl = dggs_sin(lat)
     if ivea:
-        return dggs_ivea_forward_unit(centres, frames, cl * cos(lng), cl * sin(lng), sl, x, y)
-    return dggs_snyder_forward_unit(centres, frames, cl * cos(lng), cl * sin(lng), sl, x, y)
+        return dggs_ivea_forward_unit(centres, frames, cl * dggs_cos(lng), cl * dggs_sin(lng), sl, x, y)
+    return dggs_snyder_forward_unit(centres, frames, cl * dggs_cos(lng), cl * dggs_sin(lng), sl, x, y)
 
 
 cdef inline void _geometry_inverse_one(int ivea, const double *frames, int64_t nf, int64_t face, double x, double y,
@@ -234,8 +241,8 @@ cdef inline void _geometry_inverse_one(int ivea, const double *frames, int64_t n
         dggs_ivea_inverse_unit(frames, <int>face, x, y, p)
     else:
         dggs_snyder_inverse_unit(frames, <int>face, x, y, p)
-    lat[0] = atan2(p[2], hypot(p[0], p[1])) * DGGS_DEG_PER_RAD
-    lng[0] = atan2(p[1], p[0]) * DGGS_DEG_PER_RAD
+    lat[0] = dggs_atan2(p[2], dggs_hypot(p[0], p[1])) * DGGS_DEG_PER_RAD
+    lng[0] = dggs_atan2(p[1], p[0]) * DGGS_DEG_PER_RAD
 
 
 cdef int _geometry_forward_rad(int ivea, Py_ssize_t n, const double[:] lat, const double[:] lng,

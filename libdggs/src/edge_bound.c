@@ -21,6 +21,7 @@
 #include <stdbool.h>
 
 #include "bits.h"
+#include "dmath.h"
 #include "edge_bound_tables.h"
 #include "geometry.h"
 #include "points.h"
@@ -65,9 +66,9 @@ static double edge_raw(const double a[3], const double b[3], const double m[3], 
     double nn = sqrt(edge_dot(n, n));
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double chord = sqrt(edge_dot(d, d));
-    *length = 2.0 * r * asin(chord > 2.0 ? 1.0 : chord / 2.0);
+    *length = 2.0 * r * dggs_asin(chord > 2.0 ? 1.0 : chord / 2.0);
     double off = nn > 0.0 ? fabs(edge_dot(m, n)) / nn : 0.0;
-    return r * asin(off > 1.0 ? 1.0 : off);
+    return r * dggs_asin(off > 1.0 ? 1.0 : off);
 }
 
 /* edge_raw's bulge and length bounded on WGS84 (the constants of edge_bound_tables.h). */

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "bits.h"
+#include "dmath.h"
 #include "edges_tables.h"
 #include "geometry.h"
 #include "grid.h"
@@ -110,9 +111,9 @@ void dggs_one_length(dggs_projection proj, uint64_t edge, int64_t pieces, double
         double lat, lng;
         dggs_unit_to_geodetic(px, py, pz, &lat, &lng);
         double phi = lat * DGGS_EDGES_RAD_PER_DEG, lam = lng * DGGS_EDGES_RAD_PER_DEG; /* numba's math.radians */
-        double sp = sin(phi), cp = cos(phi);
+        double sp = dggs_sin(phi), cp = dggs_cos(phi);
         double nu = DGGS_EDGES_A / sqrt(1.0 - DGGS_EDGES_E2 * sp * sp);
-        double ex = nu * cp * cos(lam), ey = nu * cp * sin(lam), ez = nu * (1.0 - DGGS_EDGES_E2) * sp;
+        double ex = nu * cp * dggs_cos(lam), ey = nu * cp * dggs_sin(lam), ez = nu * (1.0 - DGGS_EDGES_E2) * sp;
         if (k) {
             fine_m += sqrt((ex - qx) * (ex - qx) + (ey - qy) * (ey - qy) + (ez - qz) * (ez - qz));
             fine_r += sqrt((px - ux) * (px - ux) + (py - uy) * (py - uy) + (pz - uz) * (pz - uz));

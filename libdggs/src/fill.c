@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "bits.h"
+#include "dmath.h"
 #include "geometry.h"
 #include "hierarchy.h"
 #include "tables.h"
@@ -53,7 +54,7 @@ static void in_grid(double px, double py, double r, double sx, const dggs_edge_g
 }
 
 void dggs_ellipse(int lv, double ux, double uy, double uz, double *a, double *lam) {
-    double h = hypot(ux, uy);
+    double h = dggs_hypot(ux, uy);
     double norm = sqrt(h * h + uz * uz);
     /* cos(|beta| + rho): the cap's smallest cosine of latitude */
     double cstar = (h * dggs_fill_cos[lv] - fabs(uz) * dggs_fill_sin[lv]) / norm;
@@ -62,7 +63,7 @@ void dggs_ellipse(int lv, double ux, double uy, double uz, double *a, double *la
         *lam = -1.0;
         return;
     }
-    *lam = (2.0 * asin(dggs_fill_sin_half[lv] / cstar)) * FILL_DEG_PER_RAD;
+    *lam = (2.0 * dggs_asin(dggs_fill_sin_half[lv] / cstar)) * FILL_DEG_PER_RAD;
 }
 
 /* fill.py _classify: (hit, inside) of a cell by its footprint ellipse. */

@@ -8,6 +8,7 @@
 
 #include <math.h>
 
+#include "dmath.h"
 #include "tables.h"
 
 /* Python's min / max of two floats (numba's do_minmax): the second only if strictly smaller / larger. */
@@ -34,7 +35,7 @@ double dggs_wrap_degrees(double lng) {
 void dggs_unit_to_geodetic(double px, double py, double pz, double *lat, double *lng) {
     double h2 = px * px + py * py;
     double h = sqrt(h2);
-    double beta = atan2(pz, h);
+    double beta = dggs_atan2(pz, h);
     double r2 = h2 + pz * pz;
     double s2 = 2.0 * pz * h / r2;
     double two_c2 = 2.0 * (h2 - pz * pz) / r2;
@@ -45,7 +46,7 @@ void dggs_unit_to_geodetic(double px, double py, double pz, double *lat, double 
         b1 = t;
     }
     *lat = (beta + b1 * s2) * DGGS_DEG_PER_RAD;
-    *lng = atan2(py, px) * DGGS_DEG_PER_RAD;
+    *lng = dggs_atan2(py, px) * DGGS_DEG_PER_RAD;
 }
 
 /* kernel.authalic_sincos: (sin beta, cos beta) of the authalic latitude from the geodetic sin phi, cos phi.
@@ -71,10 +72,13 @@ void dggs_authalic_sincos(double sp, double cp, double *sb, double *cb) {
 void dggs_geodetic_to_unit(double lat, double lng, double p[3]) {
     double phi = lat * DGGS_RAD_PER_DEG;
     double sb, cb;
-    dggs_authalic_sincos(sin(phi), cos(phi), &sb, &cb);
+    double sp, cp, sl, cl;
+    dggs_sincos(phi, &sp, &cp);
+    dggs_authalic_sincos(sp, cp, &sb, &cb);
     double lam = dggs_wrap_degrees(lng) * DGGS_RAD_PER_DEG;
-    p[0] = cb * cos(lam);
-    p[1] = cb * sin(lam);
+    dggs_sincos(lam, &sl, &cl);
+    p[0] = cb * cl;
+    p[1] = cb * sl;
     p[2] = sb;
 }
 
@@ -87,7 +91,7 @@ void dggs_sector_forward(double sin_az, double cos_az, double sin_half_z, double
     double sin_half_q = sqrt(0.5 * (1.0 - u / sqrt(DGGS_TAN_G2 + u * u)));
     double cos_h = sin_az * (DGGS_SIN_G * DGGS_COS_SMALL_G) - cos_az * DGGS_COS_G; /* eq. 6 */
     double sin_h = sqrt(1.0 - cos_h * cos_h);                                       /* H in (36, 144) degrees */
-    double az_plus_h = atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h);
+    double az_plus_h = dggs_atan2(sin_az * cos_h + cos_az * sin_h, cos_az * cos_h - sin_az * sin_h);
     if (az_plus_h < 0.0) az_plus_h += DGGS_TWO_PI;
     double area = az_plus_h + (DGGS_G - DGGS_PI);      /* eq. 7 */
     double big_x = DGGS_RT2 - 2.0 * area * DGGS_COT_THETA; /* eq. 8 as (X, Y) */
@@ -140,7 +144,7 @@ int dggs_snyder_forward_unit(const double *centres, const double *frames, double
 /* kernel.inverse_unit: face-frame (x, y) -> unit vector, by the exact closed form (Snyder 1992 eqs. 6-8 solved
  * for Az; thesis ch. 4). sin(G - A/2), sin(G - A) from sin(A/2), cos(A/2) by the angle-sum rules. */
 void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y, double p[3]) {
-    double rho = hypot(x, y);
+    double rho = dggs_hypot(x, y);
     int k = dggs_sector_of(x, y);
     double rc = dggs_rot_cos[k], rs = dggs_rot_sin[k];
     double sin_a, cos_a;
@@ -150,7 +154,7 @@ void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y
         cos_a = (y * rc + x * rs) * inv_rho;
     } else if (rho > 0.0) { /* subnormal or tiny: 1 / rho would overflow; the direction from scaled copies */
         double sx = x * DGGS_UNTINY, sy = y * DGGS_UNTINY;
-        double inv_rho = 1.0 / hypot(sx, sy);
+        double inv_rho = 1.0 / dggs_hypot(sx, sy);
         sin_a = (sx * rc - sy * rs) * inv_rho;
         cos_a = (sy * rc + sx * rs) * inv_rho;
     } else {
@@ -158,8 +162,8 @@ void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y
         cos_a = 1.0;
     }
     double area = DGGS_RT2 * sin_a / (2.0 * (cos_a + DGGS_COT_THETA * sin_a)); /* eq. 8 inverted */
-    double sh = sin(0.5 * area);
-    double ch = cos(0.5 * area);
+    double sh, ch;
+    dggs_sincos(0.5 * area, &sh, &ch);
     double sin_g_half = DGGS_SIN_G * ch - DGGS_COS_G * sh;                                  /* sin(G - A/2) */
     double sin_g_full = DGGS_SIN_G * (ch * ch - sh * sh) - DGGS_COS_G * (2.0 * sh * ch);   /* sin(G - A) */
     double num = 2.0 * sin_g_half * sh;

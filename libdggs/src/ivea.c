@@ -9,6 +9,7 @@
  * "The IVEA projection"). The same faces, face frames and planar triangles as Snyder's (geometry.c). */
 #include <math.h>
 
+#include "dmath.h"
 #include "faces.h"
 #include "geometry.h"
 #include "tables.h"
@@ -20,15 +21,15 @@ void dggs_ivea_natural_forward(double c, double n, double e, double *x, double *
     double sin_part = DGGS_IVEA_SGN * det; /* |V x M| |V x P| sin rho */
     double cos_part = DGGS_IVEA_MX * c + DGGS_IVEA_MY * n + DGGS_IVEA_MZ * e -
                       (DGGS_IVEA_VX * c + DGGS_IVEA_VY * n + DGGS_IVEA_VZ * e) * DGGS_IVEA_VM; /* ... cos rho */
-    double h = hypot(sin_part, cos_part);
+    double h = dggs_hypot(sin_part, cos_part);
     if (h == 0.0) { /* P = V (or its antipode) */
         *x = 0.0;
         *y = DGGS_IVEA_RV;
         return;
     }
-    double rho = atan2(sin_part, cos_part);
+    double rho = dggs_atan2(sin_part, cos_part);
     double cos_rho = cos_part / h;
-    double area = rho - asin(DGGS_IVEA_COS_VM * (sin_part / h)); /* rho + delta - pi / 2, delta by Napier */
+    double area = rho - dggs_asin(DGGS_IVEA_COS_VM * (sin_part / h)); /* rho + delta - pi / 2, delta by Napier */
     double cos_vd = cos_rho / sqrt(cos_rho * cos_rho + DGGS_IVEA_TAN_VM2); /* tan VD = tan VM / cos rho */
     double dc = c - DGGS_IVEA_VX, dn = n - DGGS_IVEA_VY, de = e - DGGS_IVEA_VZ;
     double half_vp = 0.5 * sqrt(dc * dc + dn * dn + de * de); /* sin(VP / 2) */
@@ -51,9 +52,11 @@ void dggs_ivea_natural_inverse(double x, double y, double p[3]) {
     }
     double lam = (qx / s) * DGGS_IVEA_H + (DGGS_IVEA_RV + qy / s) * 0.5; /* |C'D'| */
     double area = (1.0 - lam / DGGS_IVEA_RM) * DGGS_IVEA_NATURAL_AREA;
-    double sin_a = sin(area), cos_a = cos(area);
-    double rho = atan2(sin_a, cos_a - DGGS_IVEA_COS_VM); /* tan rho = sin A / (cos A - cos VM) */
-    double sin_rho = sin(rho), cos_rho = cos(rho);
+    double sin_a, cos_a;
+    dggs_sincos(area, &sin_a, &cos_a);
+    double rho = dggs_atan2(sin_a, cos_a - DGGS_IVEA_COS_VM); /* tan rho = sin A / (cos A - cos VM) */
+    double sin_rho, cos_rho;
+    dggs_sincos(rho, &sin_rho, &cos_rho);
     double cos_vd = cos_rho / sqrt(cos_rho * cos_rho + DGGS_IVEA_TAN_VM2);
     double half = s * sqrt(0.5 * (1.0 - cos_vd)); /* sin(VP / 2) */
     if (1.0 < half) half = 1.0;                   /* min(half, 1.0) as Python's */

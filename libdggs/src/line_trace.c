@@ -7,6 +7,7 @@
 
 #include "bits.h"
 #include "chord.h"
+#include "dmath.h"
 #include "geometry.h"
 #include "grid.h"
 #include "line_layout.h"
@@ -23,10 +24,10 @@
 void dggs_ecef(double lat_deg, double lng_deg, double *x, double *y, double *z) {
     double phi = lat_deg * DGGS_LT_DEG2RAD;
     double lam = lng_deg * DGGS_LT_DEG2RAD;
-    double sp = sin(phi), cp = cos(phi);
+    double sp = dggs_sin(phi), cp = dggs_cos(phi);
     double n = LT_A / sqrt(1.0 - LT_E2 * sp * sp);
-    *x = n * cp * cos(lam);
-    *y = n * cp * sin(lam);
+    *x = n * cp * dggs_cos(lam);
+    *y = n * cp * dggs_sin(lam);
     *z = n * (1.0 - LT_E2) * sp;
 }
 
@@ -34,9 +35,9 @@ void dggs_tangent(double lat_deg, double lng_deg, double az_deg, double *x, doub
     double phi = lat_deg * DGGS_LT_DEG2RAD;
     double lam = lng_deg * DGGS_LT_DEG2RAD;
     double al = az_deg * DGGS_LT_DEG2RAD;
-    double sp = sin(phi), cp = cos(phi);
-    double sl = sin(lam), cl = cos(lam);
-    double ca = cos(al), sa = sin(al);
+    double sp = dggs_sin(phi), cp = dggs_cos(phi);
+    double sl = dggs_sin(lam), cl = dggs_cos(lam);
+    double ca = dggs_cos(al), sa = dggs_sin(al);
     *x = -ca * sp * cl - sa * sl;
     *y = -ca * sp * sl + sa * cl;
     *z = ca * cp;
@@ -66,8 +67,8 @@ void dggs_foot(double x, double y, double z, double *sp, double *cp, double *sl,
 void dggs_geodetic(double x, double y, double z, double *lat, double *lng) {
     double sp, cp, sl, cl;
     dggs_foot(x, y, z, &sp, &cp, &sl, &cl);
-    *lat = atan2(sp, cp) * DGGS_LT_RAD2DEG;
-    *lng = atan2(sl, cl) * DGGS_LT_RAD2DEG;
+    *lat = dggs_atan2(sp, cp) * DGGS_LT_RAD2DEG;
+    *lng = dggs_atan2(sl, cl) * DGGS_LT_RAD2DEG;
 }
 
 void dggs_line_trace_span(const double *lat, const double *lng, const double *az_out, const double *az_in,

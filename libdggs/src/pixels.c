@@ -6,6 +6,7 @@
 
 #include "bits.h"
 #include "clip.h"
+#include "dmath.h"
 #include "geometry.h"
 #include "pixels_tables.h"
 #include "points.h"
@@ -56,12 +57,12 @@ double dggs_chord_error(const double *lat, const double *lng) {
             int smooth = 0;
             for (int h = 0; h < 2; h++) {
                 int a = 4 * e + 2 * h, m = 4 * e + 2 * h + 1, b = (4 * e + 2 * h + 2) % 16;
-                double length = hypot(x[b] - x[a], y[b] - y[a]);
+                double length = dggs_hypot(x[b] - x[a], y[b] - y[a]);
                 if (regs[a] != regs[m] || regs[m] != regs[b]) {
                     if (h == 1 && smooth == 0) bent += 2.0 * length * length;
                     continue;
                 }
-                double one = 2.0 / 3.0 * hypot(x[m] - 0.5 * (x[a] + x[b]), y[m] - 0.5 * (y[a] + y[b])) * length;
+                double one = 2.0 / 3.0 * dggs_hypot(x[m] - 0.5 * (x[a] + x[b]), y[m] - 0.5 * (y[a] + y[b])) * length;
                 half += one;
                 smooth += 1;
                 if (length > 0.0) ratio = py_max(ratio, one / (length * length));

@@ -90,21 +90,21 @@ static void check_frozen_cells(void) {
         double t[6];
         carried(c->id, t);
         CHECK(dggs_face_of(c->id) == c->face && dggs_level_of(c->id) == c->level);
-        for (int k = 0; k < 6; k++) CHECK_SAME_DOUBLE(t[k], c->corners[k]);
+        for (int k = 0; k < 6; k++) CHECK_NEAR_DOUBLE(t[k], c->corners[k]);
         for (int p = 0; p < 2; p++) {
             const double *o = c->out[p];
             double lat, lng, u[3], a, lam;
             dggs_fill_centre((dggs_projection)p, c->face, c->level, t[0], t[1], t[2], t[3], t[4], t[5], &lat, &lng, u);
-            CHECK_SAME_DOUBLE(lat, o[0]);
-            CHECK_SAME_DOUBLE(lng, o[1]);
-            for (int k = 0; k < 3; k++) CHECK_SAME_DOUBLE(u[k], o[2 + k]);
+            CHECK_NEAR_DOUBLE(lat, o[0]);
+            CHECK_NEAR_DOUBLE(lng, o[1]);
+            for (int k = 0; k < 3; k++) CHECK_NEAR_DOUBLE(u[k], o[2 + k]);
             dggs_footprint((dggs_projection)p, c->face, c->level, t[0], t[1], t[2], t[3], t[4], t[5], &lat, &lng, u);
-            CHECK_SAME_DOUBLE(lat, o[5]);
-            CHECK_SAME_DOUBLE(lng, o[6]);
-            for (int k = 0; k < 3; k++) CHECK_SAME_DOUBLE(u[k], o[7 + k]);
+            CHECK_NEAR_DOUBLE(lat, o[5]);
+            CHECK_NEAR_DOUBLE(lng, o[6]);
+            for (int k = 0; k < 3; k++) CHECK_NEAR_DOUBLE(u[k], o[7 + k]);
             dggs_ellipse(c->level, u[0], u[1], u[2], &a, &lam);
-            CHECK_SAME_DOUBLE(a, o[10]);
-            CHECK_SAME_DOUBLE(lam, o[11]);
+            CHECK_NEAR_DOUBLE(a, o[10]);
+            CHECK_NEAR_DOUBLE(lam, o[11]);
         }
     }
 }

@@ -129,8 +129,8 @@ static void test_frozen_kernels(void) {
         CHECK_EQ_U64(dggs_cell_at(DGGS_IVEA, x, y, z, r->level, -1, &face), r->ivea);
         CHECK_EQ_U64(dggs_sample(DGGS_ISEA, x, y, z, r->level, -1, &face, &fx, &fy), r->isea);
         CHECK(face == r->face);
-        CHECK_SAME_DOUBLE(fx, r->fx);
-        CHECK_SAME_DOUBLE(fy, r->fy);
+        CHECK_NEAR_DOUBLE(fx, r->fx);
+        CHECK_NEAR_DOUBLE(fy, r->fy);
         dggs_cell got;
         dggs_cells_at(DGGS_ISEA, &r->lat, &r->lng, 1, r->level, &got, false);
         CHECK_EQ_U64(got, r->isea);
@@ -148,11 +148,11 @@ static void test_frozen_kernels(void) {
         dggs_tangent(r->lat, r->lng, r->az, &t[0], &t[1], &t[2]);
         dggs_geodetic(e[0] * 1.001, e[1] * 1.001, e[2] * 1.001, &g[0], &g[1]);
         for (int k = 0; k < 3; k++) {
-            CHECK_SAME_DOUBLE(e[k], r->e[k]);
-            CHECK_SAME_DOUBLE(t[k], r->t[k]);
+            CHECK_NEAR_DOUBLE(e[k], r->e[k]);
+            CHECK_NEAR_DOUBLE(t[k], r->t[k]);
         }
-        CHECK_SAME_DOUBLE(g[0], r->g[0]);
-        CHECK_SAME_DOUBLE(g[1], r->g[1]);
+        CHECK_NEAR_DOUBLE(g[0], r->g[0]);
+        CHECK_NEAR_DOUBLE(g[1], r->g[1]);
     }
 
     for (size_t i = 0; i < COUNT(FROZEN_CHORD); i++) {
@@ -161,7 +161,7 @@ static void test_frozen_kernels(void) {
         dggs_corners6(r->a, ta);
         CHECK(dggs_clear(r->a, r->b, r->fa, r->xa, r->ya, r->fb, r->xb, r->yb) == (r->clear != 0));
         CHECK(dggs_corner_clear(r->a, r->b, r->fa, r->xa, r->ya, r->fb, r->xb, r->yb) == (r->corner != 0));
-        CHECK_SAME_DOUBLE(dggs_dist_to_segment(ta[0], ta[1], r->xa, r->ya, r->xb, r->yb), r->dist);
+        CHECK_NEAR_DOUBLE(dggs_dist_to_segment(ta[0], ta[1], r->xa, r->ya, r->xb, r->yb), r->dist);
         /* the planar tests trust no sample off the cells' face */
         CHECK(!dggs_clear(r->a, r->b, -1, r->xa, r->ya, -1, r->xb, r->yb));
         CHECK(!dggs_corner_clear(r->a, r->b, r->fa, r->xa, r->ya, (r->fa + 1) % 20, r->xb, r->yb));
@@ -171,7 +171,7 @@ static void test_frozen_kernels(void) {
     size_t kept;
     CHECK(dggs_clean(FROZEN_CLEAN_IN, FROZEN_CLEAN_N, pts, &kept) == -1);
     CHECK(kept == FROZEN_CLEAN_KEPT);
-    for (size_t i = 0; i < 2 * kept && i < COUNT(FROZEN_CLEAN_OUT); i++) CHECK_SAME_DOUBLE(pts[i], FROZEN_CLEAN_OUT[i]);
+    for (size_t i = 0; i < 2 * kept && i < COUNT(FROZEN_CLEAN_OUT); i++) CHECK_NEAR_DOUBLE(pts[i], FROZEN_CLEAN_OUT[i]);
     size_t size, inner, nseg = FROZEN_CLEAN_KEPT - 1;
     dggs_layout_size(FROZEN_LAYOUT_DIST, nseg, FROZEN_LAYOUT_MAX_SPAN, &size, &inner);
     CHECK(size == FROZEN_LAYOUT_SIZE && inner == FROZEN_LAYOUT_INNER);
@@ -183,15 +183,15 @@ static void test_frozen_kernels(void) {
                     lng, ao, ai, span, at, seg, s);
         for (size_t i = 0; i < inner; i++) lat[at[i]] = lng[at[i]] = 0.0; /* the caller fills these */
         for (size_t i = 0; i < size; i++) {
-            CHECK_SAME_DOUBLE(lat[i], FROZEN_LAYOUT_LAT[i]);
-            CHECK_SAME_DOUBLE(lng[i], FROZEN_LAYOUT_LNG[i]);
-            CHECK_SAME_DOUBLE(ao[i], FROZEN_LAYOUT_AZ_OUT[i]);
-            CHECK_SAME_DOUBLE(ai[i], FROZEN_LAYOUT_AZ_IN[i]);
-            if (i + 1 < size) CHECK_SAME_DOUBLE(span[i], FROZEN_LAYOUT_SPAN[i]);
+            CHECK_NEAR_DOUBLE(lat[i], FROZEN_LAYOUT_LAT[i]);
+            CHECK_NEAR_DOUBLE(lng[i], FROZEN_LAYOUT_LNG[i]);
+            CHECK_NEAR_DOUBLE(ao[i], FROZEN_LAYOUT_AZ_OUT[i]);
+            CHECK_NEAR_DOUBLE(ai[i], FROZEN_LAYOUT_AZ_IN[i]);
+            if (i + 1 < size) CHECK_NEAR_DOUBLE(span[i], FROZEN_LAYOUT_SPAN[i]);
         }
         for (size_t i = 0; i < inner; i++) {
             CHECK(at[i] == FROZEN_LAYOUT_AT[i] && seg[i] == FROZEN_LAYOUT_SEG[i]);
-            CHECK_SAME_DOUBLE(s[i], FROZEN_LAYOUT_S[i]);
+            CHECK_NEAR_DOUBLE(s[i], FROZEN_LAYOUT_S[i]);
         }
     }
     /* a bad point: its index, nothing kept */
@@ -259,8 +259,8 @@ static void test_frozen_traces(void) {
     dggs_interpolate(r->lat, r->lng, r->az_out, r->az_in, r->span, FROZEN_INTERP_K, FROZEN_INTERP_T, FROZEN_INTERP_N,
                      lat, lng);
     for (size_t i = 0; i < FROZEN_INTERP_N; i++) {
-        CHECK_SAME_DOUBLE(lat[i], FROZEN_INTERP_LAT[i]);
-        CHECK_SAME_DOUBLE(lng[i], FROZEN_INTERP_LNG[i]);
+        CHECK_NEAR_DOUBLE(lat[i], FROZEN_INTERP_LAT[i]);
+        CHECK_NEAR_DOUBLE(lng[i], FROZEN_INTERP_LNG[i]);
     }
     /* t = 0 and 1 are the anchors themselves, to rounding */
     double la, lo, c[12];

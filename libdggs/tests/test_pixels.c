@@ -1254,17 +1254,17 @@ static void frozen(void) {
             int row = FROZEN_RASTERS[s].first + (int)i;
             CHECK(g->pixel[i] == FROZEN_PIECES[row].pixel);
             CHECK_EQ_U64(g->cell[i], FROZEN_PIECES[row].cell);
-            CHECK_SAME_DOUBLE(g->area[i], FROZEN_PIECES[row].area);
+            CHECK_NEAR_DOUBLE(g->area[i], FROZEN_PIECES[row].area);
         }
         for (int i = 0; i < FROZEN_RASTERS[s].rows * FROZEN_RASTERS[s].cols; i++)
-            CHECK_SAME_DOUBLE(g->coarse[i], FROZEN_RASTERS[s].coarse[i]);
+            CHECK_NEAR_DOUBLE(g->coarse[i], FROZEN_RASTERS[s].coarse[i]);
         /* growing from one row gives the same pieces */
         int64_t again = pieces(g, FROZEN_RASTERS[s].level, 1);
         CHECK(again == n);
         for (int64_t i = 0; i < again && i < FROZEN_PIECE_ROWS; i++) {
             int row = FROZEN_RASTERS[s].first + (int)i;
             CHECK_EQ_U64(g->cell[i], FROZEN_PIECES[row].cell);
-            CHECK_SAME_DOUBLE(g->area[i], FROZEN_PIECES[row].area);
+            CHECK_NEAR_DOUBLE(g->area[i], FROZEN_PIECES[row].area);
         }
     }
     /* freeze_pixels.py's 16 points: dr = (0 t, t, 1, 1 - t), dc = (t, 1, 1 - t, 0 t), t = 0, .25, .5, .75 */
@@ -1276,10 +1276,11 @@ static void frozen(void) {
             lat[j] = FROZEN_CHORDS[s].lat0 - FROZEN_CHORDS[s].d * dr[j];
             lng[j] = FROZEN_CHORDS[s].lng0 + FROZEN_CHORDS[s].d * dc[j];
         }
-        CHECK_SAME_DOUBLE(dggs_chord_error(lat, lng), FROZEN_CHORDS[s].error);
+        /* a sagitta of 1e-12 face units against coordinates near 1: the last bits of the projection move it by 1e-3 */
+        CHECK_WITHIN(dggs_chord_error(lat, lng), FROZEN_CHORDS[s].error, 1e-2 * FROZEN_CHORDS[s].error);
         double e;
         CHECK(dggs_pixel_chord_error(lat, lng, &e) == DGGS_OK);
-        CHECK_SAME_DOUBLE(e, FROZEN_CHORDS[s].error);
+        CHECK_WITHIN(e, FROZEN_CHORDS[s].error, 1e-2 * FROZEN_CHORDS[s].error);
     }
     for (int s = 0; s < COUNT(FROZEN_SORTS); s++) {
         double a[128];

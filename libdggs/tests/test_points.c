@@ -294,8 +294,8 @@ static const struct { double lat, lng; int level; dggs_projection proj; uint64_t
     {0x1.1b15687559582p+5, 0x1.2480000000000p+7, 3, DGGS_ISEA, 0x526c000000000000ULL}, /* centre of face 9 */
     {0x1.1b15687559582p+5, 0x1.2480000000000p+7, 0, DGGS_IVEA, 0x5200000000000000ULL}, /* centre of face 9 */
     {0x1.1b15687559582p+5, 0x1.2480000000000p+7, 3, DGGS_IVEA, 0x535c000000000000ULL}, /* centre of face 9 */
-    {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 1, DGGS_ISEA, 0x4f80000000000000ULL}, /* vertex 0 of face 16 */
-    {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 10, DGGS_ISEA, 0x4fbffff000000000ULL}, /* vertex 0 of face 16 */
+    {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 1, DGGS_ISEA, 0x4e40000000000000ULL}, /* vertex 0 of face 16 (a) */
+    {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 10, DGGS_ISEA, 0x4e7ffff000000000ULL}, /* vertex 0 of face 16 (a) */
     {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 1, DGGS_IVEA, 0x4f80000000000000ULL}, /* vertex 0 of face 16 */
     {-0x1.d32d5ad561420p+5, 0x1.6800000000020p+3, 10, DGGS_IVEA, 0x4fbffff000000000ULL}, /* vertex 0 of face 16 */
     {-0x1.b0f9b1878b54ap+5, -0x1.78429cc69876bp+5, 2, DGGS_ISEA, 0x5710000000000000ULL}, /* edge midpoint 0 of face 16 */
@@ -658,6 +658,9 @@ static const struct { uint64_t id; dggs_projection proj; int densify, count; dou
     {0x66ad400000000000ULL, DGGS_IVEA, 1, 8, {{-0x1.4fe95b44c24eap+4, -0x1.61f6adff0399dp+7}, {-0x1.3daed7664d18bp+4, -0x1.65c5aa1280e61p+7}, {-0x1.32c7909326256p+4, -0x1.6800000000000p+7}, {-0x1.2b44285d05309p+4, 0x1.667c282d9d66ep+7}, {-0x1.3cd09a7dfe0bep+4, 0x1.661f639f30b5ep+7}, {-0x1.4e4bd51896812p+4, 0x1.65c109a5d46a2p+7}, {-0x1.4edb7cb9c504ep+4, 0x1.6800000000000p+7}, {-0x1.4f424802b8285p+4, -0x1.661964b590a88p+7}}},
 };
 /* END FROZEN */
+/* (a) An icosahedron vertex, a corner of five faces' cells: the numba kernel (glibc's sin and cos) gave
+ * 0x4f80000000000000 and 0x4fbffff000000000 (face 16); the core's own sin and cos (src/dmath.c, issue 34) round
+ * it onto face 15's corner cell. The only frozen ids that changed, both at this exact tie. */
 
 static void check_frozen(void) {
     for (int i = 0; i < COUNT(FROZEN_POINTS); i++)
@@ -667,16 +670,16 @@ static void check_frozen(void) {
     for (int i = 0; i < COUNT(FROZEN_CENTRES); i++) {
         double lat, lng;
         dggs_centre_of(FROZEN_CENTRES[i].proj, (int64_t)FROZEN_CENTRES[i].id, &lat, &lng);
-        CHECK_SAME_DOUBLE(lat, FROZEN_CENTRES[i].lat);
-        CHECK_SAME_DOUBLE(lng, FROZEN_CENTRES[i].lng);
+        CHECK_NEAR_DOUBLE(lat, FROZEN_CENTRES[i].lat);
+        CHECK_NEAR_DOUBLE(lng, FROZEN_CENTRES[i].lng);
     }
     for (int i = 0; i < COUNT(FROZEN_CORNERS); i++) {
         double t[6], c[6];
         CHECK(dggs_triangle(FROZEN_CORNERS[i].id, t) == FROZEN_CORNERS[i].face);
         CHECK(dggs_corners(FROZEN_CORNERS[i].id, c) == FROZEN_CORNERS[i].face);
         for (int k = 0; k < 6; k++) {
-            CHECK_SAME_DOUBLE(t[k], FROZEN_CORNERS[i].tri[k]);
-            CHECK_SAME_DOUBLE(c[k], FROZEN_CORNERS[i].cor[k]);
+            CHECK_NEAR_DOUBLE(t[k], FROZEN_CORNERS[i].tri[k]);
+            CHECK_NEAR_DOUBLE(c[k], FROZEN_CORNERS[i].cor[k]);
         }
     }
     for (int i = 0; i < COUNT(FROZEN_BOUNDARIES); i++) {
@@ -684,8 +687,8 @@ static void check_frozen(void) {
         int densify = FROZEN_BOUNDARIES[i].densify;
         dggs_one_boundary(FROZEN_BOUNDARIES[i].proj, FROZEN_BOUNDARIES[i].id, densify, &rows[0][0], 0);
         for (int r = 0; r < 3 * (densify + 1); r++) {
-            CHECK_SAME_DOUBLE(rows[r][0], FROZEN_BOUNDARIES[i].rows[r][0]);
-            CHECK_SAME_DOUBLE(rows[r][1], FROZEN_BOUNDARIES[i].rows[r][1]);
+            CHECK_NEAR_DOUBLE(rows[r][0], FROZEN_BOUNDARIES[i].rows[r][0]);
+            CHECK_NEAR_DOUBLE(rows[r][1], FROZEN_BOUNDARIES[i].rows[r][1]);
         }
     }
     for (int i = 0; i < COUNT(FROZEN_RINGS); i++) {
@@ -695,8 +698,8 @@ static void check_frozen(void) {
                                   dggs_special_ring_rows(densify));
         CHECK(m == FROZEN_RINGS[i].count);
         for (int r = 0; r < m && r < FROZEN_RINGS[i].count; r++) {
-            CHECK_SAME_DOUBLE(rows[r][0], FROZEN_RINGS[i].rows[r][0]);
-            CHECK_SAME_DOUBLE(rows[r][1], FROZEN_RINGS[i].rows[r][1]);
+            CHECK_NEAR_DOUBLE(rows[r][0], FROZEN_RINGS[i].rows[r][0]);
+            CHECK_NEAR_DOUBLE(rows[r][1], FROZEN_RINGS[i].rows[r][1]);
         }
     }
 }

@@ -1,6 +1,7 @@
 """Ids, centres and boundaries of >= 10M points at every level, as SHA-256 digests: the port to C changes nothing.
 
-``--write FILE`` records the digests of the current build (run once at the last numba commit, 16e1ddf);
+``--write FILE`` records the digests of the current build (run once at the last numba commit, 16e1ddf; the file
+was refrozen for issue 34 by tie_check.py's ``digests``, after checking every changed id is an exact tie);
 ``--check FILE`` recomputes them and exits 1 naming every (projection, quantity, level) that differs.
 ``--save DIR`` also keeps the raw arrays (``.npy``), to find the points that differ between two builds.
 
