@@ -184,7 +184,7 @@ def pixels_latlng_pieces(double west, double dlng, lat_edges, valid, int level, 
         raise ValueError("valid must be (R, C) and lat_edges (R + 1,)")
     cdef int64_t rows = ok.shape[0], cols = ok.shape[1]
     work = np.empty(max(dggs_latlng_pieces_work_words(rows, cols), 1), dtype=np.float64)
-    cdef int64_t cap = max(64, 2 * rows * cols)
+    cdef int64_t cap = max(64, 4 * rows * cols)  # cells the pixels' size: about 5 pieces a pixel
     p = np.empty(cap, np.int64)
     c = np.empty(cap, np.uint64)
     a = np.empty(cap, np.float64)

@@ -49,14 +49,18 @@ typedef struct {
     double *part, *wide;                           /* (bands + 1) x cols scratch of the strip sums */
 } grid_t;
 
-/* The band (0..rows - 1) holding q, -1 below the grid, rows above it. */
+/* The band (0..rows - 1) holding q, -1 below the grid, rows above it (`guess` first, then a binary search). */
 static int64_t band_of(const grid_t *g, double q, int64_t guess) {
     if (q < g->qe[0]) return -1;
     if (q >= g->qe[g->rows]) return g->rows;
-    int64_t b = guess < 0 ? 0 : (guess >= g->rows ? g->rows - 1 : guess);
-    while (b > 0 && q < g->qe[b]) b--;
-    while (b < g->rows - 1 && q >= g->qe[b + 1]) b++;
-    return b;
+    if (guess >= 0 && guess < g->rows && q >= g->qe[guess] && q < g->qe[guess + 1]) return guess;
+    int64_t lo = 0, hi = g->rows; /* qe[lo] <= q < qe[hi] */
+    while (hi - lo > 1) {
+        int64_t mid = lo + (hi - lo) / 2;
+        if (q >= g->qe[mid]) lo = mid;
+        else hi = mid;
+    }
+    return lo;
 }
 
 static void to_map(int face, double x, double y, double *lng, double *q, bool *pole) {
@@ -68,8 +72,8 @@ static void to_map(int face, double x, double y, double *lng, double *q, bool *p
 }
 
 /* Does the cap round `cell` (its corners' widest angle from its centre, widened by a fifth for its curved edges)
- * meet the block's box? */
-static bool cap_meets(const grid_t *g, uint64_t cell) {
+ * meet the block's box? *inside: does the box hold it whole? */
+static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
     double t[6], c[3], p[3];
     int face = dggs_triangle(cell, t);
     dggs_snyder_inverse_unit(FRAMES, face, (t[0] + t[2] + t[4]) / 3.0, (t[1] + t[3] + t[5]) / 3.0, c);
@@ -81,14 +85,21 @@ static bool cap_meets(const grid_t *g, uint64_t cell) {
     }
     double rho = 1.2 * acos(least > 1.0 ? 1.0 : least) + 1e-9;
     double beta = asin(c[2] > 1.0 ? 1.0 : (c[2] < -1.0 ? -1.0 : c[2]));
+    *inside = false;
     if (beta + rho < g->beta_lo || beta - rho > g->beta_hi) return false;
-    if (fabs(beta) + rho >= 0.5 * PI || g->box_east - g->box_west >= 360.0) return true;
+    bool rows_in = beta - rho > g->beta_lo && beta + rho < g->beta_hi;
+    if (fabs(beta) + rho >= 0.5 * PI) return true;
     double half = asin(fmin(1.0, sin(rho) / cos(beta))) * (180.0 / PI);
-    double mid = 0.5 * (g->box_west + g->box_east);
+    if (g->box_east - g->box_west >= 360.0) {
+        *inside = rows_in;
+        return true;
+    }
+    double mid = 0.5 * (g->box_west + g->box_east), width = 0.5 * (g->box_east - g->box_west);
     double d = fmod(atan2(c[1], c[0]) * (180.0 / PI) - mid, 360.0);
     if (d > 180.0) d -= 360.0;
     if (d < -180.0) d += 360.0;
-    return fabs(d) <= half + 0.5 * (g->box_east - g->box_west);
+    *inside = rows_in && fabs(d) + half < width; /* its descendants need no test */
+    return fabs(d) <= half + width;
 }
 
 /* The least row height among the bands q0..q1 (in either order) meets, or 0 where they miss the grid. */
@@ -404,15 +415,18 @@ dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges,
     /* depth first over the hierarchy, the cells whose caps meet the box; the target cells counted for *resume */
     uint64_t stack[6 * (DGGS_MAX_LEVEL + 2)];
     int levels[6 * (DGGS_MAX_LEVEL + 2)];
+    bool held[6 * (DGGS_MAX_LEVEL + 2)]; /* inside a cell the box holds whole: no test */
     int64_t top = 0, seen = 0;
-    for (int f = DGGS_NUM_FACES - 1; f >= 0; f--) stack[top] = dggs_base_cell(f), levels[top++] = 0;
+    for (int f = DGGS_NUM_FACES - 1; f >= 0; f--) stack[top] = dggs_base_cell(f), levels[top] = 0, held[top++] = false;
     while (top > 0) {
         uint64_t cell = stack[--top];
         int lv = levels[top];
+        bool inside = held[top];
         if (lv < level) {
-            if (!cap_meets(&g, cell)) continue;
+            if (!inside && !cap_meets(&g, cell, &inside)) continue;
             int kids = lv == 0 ? 6 : 3;
-            for (int d = kids - 1; d >= 0; d--) stack[top] = dggs_clip_child(cell, lv, d), levels[top++] = lv + 1;
+            for (int d = kids - 1; d >= 0; d--)
+                stack[top] = dggs_clip_child(cell, lv, d), levels[top] = lv + 1, held[top++] = inside;
             continue;
         }
         if (seen++ < *resume) continue;
