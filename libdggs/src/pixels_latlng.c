@@ -47,7 +47,11 @@ typedef struct {
     double *rx, *ry;                               /* ring: column units, q */
     int64_t *rk;                                   /* ring: the chord count of the edge each point starts (0 else) */
     double *part, *wide;                           /* (bands + 1) x cols scratch of the strip sums */
+    double *memo; /* MEMO entries of 6: a face-plane point's x, y, face, and its lng, q, pole (see mapped) */
 } grid_t;
+
+/* Entries of the memo of mapped points (a power of 2). */
+#define MEMO 8192
 
 /* The band (0..rows - 1) holding q, -1 below the grid, rows above it (`guess` first, then a binary search). */
 static int64_t band_of(const grid_t *g, double q, int64_t guess) {
@@ -69,6 +73,24 @@ static void to_map(int face, double x, double y, double *lng, double *q, bool *p
     *pole = p[0] * p[0] + p[1] * p[1] < 1e-26;
     *lng = *pole ? 0.0 : atan2(p[1], p[0]) * (180.0 / PI);
     *q = p[2] > 1.0 ? 1.0 : (p[2] < -1.0 ? -1.0 : p[2]);
+}
+
+/* to_map, remembered by the point's bits: a corner is in 6 cells and an edge's points in 2, met again soon in the
+ * depth-first order. A pure function remembered: the same bits as computing it again. */
+static void mapped(grid_t *g, int face, double x, double y, double *lng, double *q, bool *pole) {
+    uint64_t bx, by;
+    memcpy(&bx, &x, sizeof bx);
+    memcpy(&by, &y, sizeof by);
+    uint64_t h = (bx * 0x9E3779B97F4A7C15u) ^ (by * 0xC2B2AE3D27D4EB4Fu) ^ (uint64_t)face;
+    double *m = g->memo + 6 * (int64_t)((h >> 32) & (MEMO - 1));
+    if (m[2] == (double)face && memcmp(&m[0], &bx, sizeof bx) == 0 && memcmp(&m[1], &by, sizeof by) == 0) {
+        *lng = m[3], *q = m[4], *pole = m[5] != 0.0;
+        return;
+    }
+    to_map(face, x, y, lng, q, pole);
+    memcpy(&m[0], &bx, sizeof bx);
+    memcpy(&m[1], &by, sizeof by);
+    m[2] = (double)face, m[3] = *lng, m[4] = *q, m[5] = *pole ? 1.0 : 0.0;
 }
 
 /* Does the cap round `cell` (its corners' widest angle from its centre, widened by a fifth for its curved edges)
@@ -133,7 +155,7 @@ static int64_t edge_points(grid_t *g, int face, double ax, double ay, double bx,
         g->rx[n] = alng, g->ry[n] = aq;
         for (int64_t j = 1; j < k; j++) {
             bool pole;
-            to_map(face, ax + (bx - ax) * (double)j / (double)k, ay + (by - ay) * (double)j / (double)k, &g->rx[n + j],
+            mapped(g, face, ax + (bx - ax) * (double)j / (double)k, ay + (by - ay) * (double)j / (double)k, &g->rx[n + j],
                    &g->ry[n + j], &pole);
             if (pole) g->rx[n + j] = NAN;
         }
@@ -171,7 +193,7 @@ static int64_t cell_ring(grid_t *g, uint64_t cell, double *orient) {
     bool at_pole[3] = {false, false, false};
     double clng[3], cq[3];
     for (int e = 0; e < 3; e++) {
-        to_map(face, t[2 * e], t[2 * e + 1], &clng[e], &cq[e], &at_pole[e]);
+        mapped(g, face, t[2 * e], t[2 * e + 1], &clng[e], &cq[e], &at_pole[e]);
         if (at_pole[e]) clng[e] = NAN; /* only a corner lies on a pole: its longitude set below */
     }
     for (int e = 0; e < 3; e++) {
@@ -379,7 +401,7 @@ static int cell_pieces(grid_t *g, uint64_t cell, dggs_pieces *out) {
 
 int64_t dggs_latlng_pieces_work_words(int64_t rows, int64_t cols) {
     if (rows < 1 || cols < 1) return 0;
-    return 3 * (int64_t)RING_CAP + 2 * (rows + 2) * cols + (rows + 1);
+    return 3 * (int64_t)RING_CAP + 2 * (rows + 2) * cols + (rows + 1) + 6 * (int64_t)MEMO;
 }
 
 dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges, int64_t rows, int64_t cols,
@@ -403,6 +425,8 @@ dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges,
     g.rx = w, g.ry = w + RING_CAP, g.rk = (int64_t *)(w + 2 * RING_CAP);
     g.part = w + 3 * RING_CAP, g.wide = g.part + (rows + 2) * cols;
     double *qe = g.wide + (rows + 2) * cols;
+    g.memo = qe + rows + 1;
+    for (int64_t i = 0; i < MEMO; i++) g.memo[6 * i + 2] = -1.0; /* no face: empty */
     for (int64_t b = 0; b <= rows; b++) {
         double phi = lat_edges[north_up ? rows - b : b] * (PI / 180.0), sb, cb;
         dggs_authalic_sincos(sin(phi), cos(phi), &sb, &cb);
