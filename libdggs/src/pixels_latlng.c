@@ -47,17 +47,31 @@ typedef struct {
     double *rx, *ry;                               /* ring: column units, q */
     int64_t *rk;                                   /* ring: the chord count of the edge each point starts (0 else) */
     double *part, *wide;                           /* (bands + 1) x cols scratch of the strip sums */
+    int64_t hint; /* the band last found: the next cell's is near it (depth first) */
     double *memo; /* MEMO entries of 6: a face-plane point's x, y, face, and its lng, q, pole (see mapped) */
 } grid_t;
 
 /* Entries of the memo of mapped points (a power of 2). */
-#define MEMO 8192
+#define MEMO 2048
 
-/* The band (0..rows - 1) holding q, -1 below the grid, rows above it (`guess` first, then a binary search). */
+/* The band (0..rows - 1) holding q, -1 below the grid, rows above it (near `guess` first, then a binary search). */
 static int64_t band_of(const grid_t *g, double q, int64_t guess) {
     if (q < g->qe[0]) return -1;
     if (q >= g->qe[g->rows]) return g->rows;
-    if (guess >= 0 && guess < g->rows && q >= g->qe[guess] && q < g->qe[guess + 1]) return guess;
+    if (guess >= 0 && guess < g->rows) { /* a few steps from the guess, then a binary search */
+        int64_t b = guess;
+        for (int step = 0; step < 4; step++) {
+            if (q < g->qe[b]) {
+                if (b == 0) break;
+                b--;
+            } else if (q >= g->qe[b + 1]) {
+                if (b == g->rows - 1) break;
+                b++;
+            } else {
+                return b;
+            }
+        }
+    }
     int64_t lo = 0, hi = g->rows; /* qe[lo] <= q < qe[hi] */
     while (hi - lo > 1) {
         int64_t mid = lo + (hi - lo) / 2;
@@ -125,8 +139,9 @@ static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
 }
 
 /* The least row height among the bands q0..q1 (in either order) meets, or 0 where they miss the grid. */
-static double least_height(const grid_t *g, double q0, double q1) {
-    int64_t b0 = band_of(g, fmin(q0, q1), 0), b1 = band_of(g, fmax(q0, q1), b0);
+static double least_height(grid_t *g, double q0, double q1) {
+    int64_t b0 = band_of(g, fmin(q0, q1), g->hint), b1 = band_of(g, fmax(q0, q1), b0);
+    g->hint = b0;
     if (b1 < 0 || b0 >= g->rows) return 0.0;
     if (b0 < 0) b0 = 0;
     if (b1 >= g->rows) b1 = g->rows - 1;
@@ -374,7 +389,7 @@ static int cell_pieces(grid_t *g, uint64_t cell, dggs_pieces *out) {
         ylo = fmin(ylo, g->ry[j]), yhi = fmax(yhi, g->ry[j]);
     }
     if (yhi <= g->qe[0] || ylo >= g->qe[g->rows]) return 0;
-    int64_t b0 = band_of(g, ylo, 0), b1 = band_of(g, yhi, b0);
+    int64_t b0 = band_of(g, ylo, g->hint), b1 = band_of(g, yhi, b0);
     if (b0 < 0) b0 = 0;
     if (b1 >= g->rows) b1 = g->rows - 1;
     double period = 360.0 / g->dlng;

@@ -1428,7 +1428,7 @@ static double snyder_q(double lat) {
 
 static void latlng(void) {
     enum { ROWS = 3, COLS = 4, CAP = 256 };
-    static double work[3 * (3 * 4096 + 16) + 2 * (ROWS + 2) * COLS + ROWS + 1 + 6 * 8192];
+    static double work[3 * (3 * 4096 + 16) + 2 * (ROWS + 2) * COLS + ROWS + 1 + 6 * 2048];
     static int64_t pixel[CAP];
     static uint64_t cell[CAP];
     static double area[CAP];
