@@ -28,10 +28,12 @@ from dggs.geometry.authalic import WGS84
 from ._checks import check_level
 from ._kernel import pixels as kpx
 
-__all__ = ["pixel_pieces", "chord_errors", "edge_points", "MAX_PIXEL_DEGREES", "M2_PER_UNIT"]
+__all__ = ["pixel_pieces", "latlng_pieces", "chord_errors", "edge_points", "MAX_PIXEL_DEGREES", "M2_PER_UNIT"]
 
 #: Square metres of the ellipsoid per unit of planar area in a face frame.
 M2_PER_UNIT = WGS84.area / 20.0 / kpx.FACE_AREA
+#: Square metres of the ellipsoid per unit of area on the unit sphere (the authalic sphere has its area).
+M2_PER_STERADIAN = WGS84.area / (4.0 * math.pi)
 #: The widest pixel the kernel takes (degrees of arc from a corner); larger ones are split first.
 MAX_PIXEL_DEGREES = math.degrees(kpx.MAX_RADIUS)
 
@@ -81,6 +83,52 @@ def pixel_pieces(
     pixel, cell, area, _ = kpx.grid_pieces(arrays[0], arrays[1], arrays[2], arrays[3], k, valid, level, arcs=True)
     total = np.bincount(pixel, weights=area, minlength=valid.size)
     return pixel, cell, area * M2_PER_UNIT, total * M2_PER_UNIT
+
+
+def latlng_pieces(
+    west: float, dlng: float, lat_edges: np.ndarray, valid: np.ndarray, level: int, tol: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The cells at ``level`` each valid pixel of a lat/lng (WGS84) grid meets, and the area (m²) they share.
+
+    The other way round from :func:`pixel_pieces` (issue 35): each cell is cut against the grid's rows and
+    columns in the cylindrical equal-area map of the authalic sphere, where a lat/lng pixel is an exact
+    rectangle (its area in closed form), the cell's edges densified until their chords leave out at most
+    ``tol`` of any pixel they cross (libdggs/src/pixels_latlng.c).
+
+    Parameters
+    ----------
+    west, dlng : float
+        Longitude of column 0's western edge and the columns' width (degrees, ``dlng > 0``, 360 at most in all).
+    lat_edges : (R + 1,) array
+        The rows' latitudes (row ``r`` between ``lat_edges[r]`` and ``lat_edges[r + 1]``), strictly monotonic.
+    valid : (R, C) bool array
+        Pixels to cut.
+    level : int
+        The cells' level.
+    tol : float
+        The error a piece may have, as a fraction of its pixel's area.
+
+    Returns
+    -------
+    pixel, cell, area
+        Per piece, a cell's pieces together (in pixel order).
+
+    Raises
+    ------
+    RuntimeError
+        A cell edge needing more than 4096 chords (cells far coarser than the pixels): cut with
+        :func:`pixel_pieces` instead.
+
+    Examples
+    --------
+    >>> pixel, cell, area = latlng_pieces(0.0, 1.0, np.array([1.0, 0.0]), np.ones((1, 1), bool), 3, 1e-5)
+    >>> round(float(area.sum()) / 1e6)
+    12308
+    """
+    level = check_level(level)
+    pixel, cell, area = kpx.latlng_pieces(float(west), float(dlng), np.asarray(lat_edges, np.float64),
+                                          np.asarray(valid, np.bool_), level, float(tol))
+    return pixel, cell, area * M2_PER_STERADIAN
 
 
 def chord_errors(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:

@@ -15,11 +15,19 @@ from typing import Any
 
 import numpy as np
 
-from dggs.index._pixels import pixel_pieces
-from dggs.raster.grid import chord_error, edge_grid, pixel_degrees, points_per_edge, split_factor, tile_chord_errors
+from dggs.index._pixels import latlng_pieces, pixel_pieces
+from dggs.raster.grid import (
+    TOLERANCE,
+    chord_error,
+    edge_grid,
+    pixel_degrees,
+    points_per_edge,
+    split_factor,
+    tile_chord_errors,
+)
 from dggs.raster.source import Block, RasterSource
 
-__all__ = ["TILE", "MOST_POINTS", "block_pieces", "grid_window", "scale"]
+__all__ = ["TILE", "MOST_POINTS", "block_pieces", "pixel_block_pieces", "latlng_grid", "grid_window", "scale"]
 
 #: Pixels a side of the tiles a block's points per edge are chosen for.
 TILE = 32
@@ -80,14 +88,65 @@ def grid_window(src: RasterSource, transformer: Any, block: Block, k: int, s: in
     return grid, valid
 
 
+def latlng_grid(src: RasterSource, transformer: Any, block: Block) -> tuple[float, float, np.ndarray] | None:
+    """``(west, dlng, lat_edges)`` of a block of a lat/lng (WGS84) raster, or None for any other grid.
+
+    A north-up or south-up grid of WGS84 longitudes and latitudes, its columns 360 degrees at most; rows past a
+    pole by up to a pixel (ERA5's layout) have their corners put on it, as :func:`dggs.raster.grid.lnglat`
+    does; a grid farther past is left to the general cut.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> from affine import Affine
+    >>> src = SimpleNamespace(transform=Affine(0.25, 0, 359.75, 0, -0.25, 90.125))
+    >>> west, dlng, lat = latlng_grid(src, None, Block(0, 0, np.zeros((1, 2, 3)), np.ones((2, 3), bool)))
+    >>> west, dlng, lat.tolist()
+    (359.75, 0.25, [90.0, 89.875, 89.625])
+    """
+    t = src.transform
+    rows, cols = block.shape
+    if transformer is not None or t.b != 0.0 or t.d != 0.0 or not t.a > 0.0 or t.e == 0.0 or t.a * cols > 360.0:
+        return None
+    lat = t.f + t.e * (block.row + np.arange(rows + 1, dtype=np.float64))
+    if not np.isfinite(lat).all() or (np.abs(lat) > 90.0 + abs(t.e)).any():
+        return None
+    lat = np.clip(lat, -90.0, 90.0)
+    step = np.diff(lat)
+    if not ((step < 0).all() or (step > 0).all()):  # a row wholly past a pole
+        return None
+    return t.c + t.a * block.col, t.a, lat
+
+
 def block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) -> tuple[
     np.ndarray, np.ndarray, np.ndarray, bool
 ]:
     """``(pixel, cell, area, split)``: the block's valid pixels' pieces in cells at ``level``.
 
-    ``pixel`` is row-major in the block, each pixel's pieces together in
-    pixel order; ``area`` in m²; ``split`` whether pixels were cut into
-    sub-pixels (their pieces then come in sub-pixel order).
+    ``pixel`` is row-major in the block; ``area`` in m²; ``split`` whether
+    pixels were cut into sub-pixels (their pieces then come in sub-pixel
+    order, and a pixel may have several in a cell).  A lat/lng raster's
+    blocks are cut cell by cell against the pixel grid
+    (:func:`dggs.index._pixels.latlng_pieces`: a cell's pieces together),
+    any other's pixel by pixel along the cells' edges (each pixel's pieces
+    together, in pixel order).
+    """
+    grid = latlng_grid(src, transformer, block)
+    if grid is not None:
+        try:
+            pixel, cell, area = latlng_pieces(*grid, block.valid, level, TOLERANCE)
+            return pixel, cell, area, False
+        except RuntimeError:  # cells far coarser than the pixels: their edges want too many points; cut pixels
+            pass
+    return pixel_block_pieces(src, transformer, block, level)
+
+
+def pixel_block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) -> tuple[
+    np.ndarray, np.ndarray, np.ndarray, bool
+]:
+    """:func:`block_pieces` pixel by pixel, for any CRS: each pixel cut along the cells' edges in the face planes.
+
+    Each pixel's pieces together, in pixel order.
     """
     rows, cols = block.shape
     s = _split(src, transformer, block)

@@ -559,6 +559,23 @@ dggs_error dggs_raster_pieces_arcs(const double *hlat, const double *hlng, const
                                    int64_t rows, int64_t cols, int64_t k, const uint8_t *valid, int level,
                                    dggs_pieces *out, double *coarse, void *work, int64_t work_words,
                                    int64_t *resume, int64_t *need);
+/* 8-byte words of scratch (`work`) dggs_latlng_pieces needs for a rows x cols lat/lng grid (0 for a bad size). */
+int64_t dggs_latlng_pieces_work_words(int64_t rows, int64_t cols);
+/* The cells at `level` each valid pixel of a geographic (lat/lng, WGS84) grid meets, and the area they share, on
+ * the unit sphere (4 pi in all; times the ellipsoid's area / (4 pi) for m^2). The grid: `cols` columns of `dlng`
+ * degrees (> 0, at most 360 in all) from longitude `west` (any turn: -180..180, 0..360, across 180), `rows` rows
+ * between the rows + 1 latitudes `lat_edges` (strictly monotonic, within -90..90; row r between lat_edges[r] and
+ * lat_edges[r + 1]); pixel r cols + c; valid as dggs_raster_pieces. Each cell is cut against the grid's rows and
+ * columns in the cylindrical equal-area map, where the pixels are exact rectangles (pixels_latlng.c): its edges
+ * densified so that their chords leave out at most `tol` of any pixel they cross, each pair of chords' parabolic
+ * segment added in the pixel holding its middle point. The pieces go to `out` cell by cell (a cell's in pixel
+ * order, the cells depth first through the hierarchy). Resuming as dggs_raster_pieces (*resume counts cells).
+ * DGGS_E_LEVEL, DGGS_E_DOMAIN (rows or cols < 1, dlng <= 0 or columns past 360, tol <= 0, latitudes not strictly
+ * monotonic), DGGS_E_LATLNG, DGGS_E_BUFFER, DGGS_E_FAILED (a cell edge needing more than 4096 chords: a cell far
+ * coarser than the pixels; cut such grids with dggs_raster_pieces). */
+dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges, int64_t rows, int64_t cols,
+                              const uint8_t *valid, int level, double tol, dggs_pieces *out, void *work,
+                              int64_t work_words, int64_t *resume, int64_t *need);
 /* The fraction of a pixel's area the chords of its edges leave out, into *out: lat, lng its 16 points round it,
  * four an edge (its first corner, then at a quarter, half and three quarters), degrees. NaN where no half-edge is
  * smooth. DGGS_E_LATLNG (a point not finite or a latitude outside -90..90). */

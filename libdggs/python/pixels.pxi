@@ -19,6 +19,12 @@ cdef extern from "clip.h" nogil:
     int64_t dggs_clip(const double *x, const double *y, int64_t n, double ax, double ay, double bx, double by,
                       double cx, double cy, double *ox, double *oy, double *tx, double *ty, int64_t cap)
 
+cdef extern from "dggs.h" nogil:
+    int64_t dggs_latlng_pieces_work_words(int64_t rows, int64_t cols)
+    int dggs_latlng_pieces(double west, double dlng, const double *lat_edges, int64_t rows, int64_t cols,
+                           const uint8_t *valid, int level, double tol, dggs_pieces *out, void *work,
+                           int64_t work_words, int64_t *resume, int64_t *need)
+
 cdef extern from "pixels.h" nogil:
     int64_t dggs_pixels_region(int face, double ux, double uy, double uz)
     double dggs_chord_error(const double *lat, const double *lng)
@@ -162,3 +168,55 @@ def pixels_grid_pieces(hlat, hlng, vlat, vlng, int64_t k, valid, int target, bin
         raise RuntimeError("grid_pieces: a pixel's clipped polygon outgrew its scratch (a pixel too ragged)")
     return p[:out.n], c[:out.n], a[:out.n], coarse
 
+
+
+def pixels_latlng_pieces(double west, double dlng, lat_edges, valid, int level, double tol):
+    """Cells at ``level`` met by each valid pixel of a lat/lng grid, and the area they share (unit sphere).
+
+    ``valid`` (R, C): the pixels; columns ``dlng`` degrees wide from ``west``; ``lat_edges`` (R + 1,) the rows'
+    latitudes, strictly monotonic. Each cell is cut against the grid's rows and columns in the cylindrical
+    equal-area map (``dggs_latlng_pieces``), its edges' chords within ``tol`` of any pixel's area. Returns
+    ``(pixel, cell, area)``, a cell's pieces together; areas on the unit sphere (4 pi in all).
+    """
+    ok = np.ascontiguousarray(valid, dtype=np.bool_)
+    edges = np.ascontiguousarray(lat_edges, dtype=np.float64)
+    if ok.ndim != 2 or edges.ndim != 1 or edges.shape[0] != ok.shape[0] + 1:
+        raise ValueError("valid must be (R, C) and lat_edges (R + 1,)")
+    cdef int64_t rows = ok.shape[0], cols = ok.shape[1]
+    work = np.empty(max(dggs_latlng_pieces_work_words(rows, cols), 1), dtype=np.float64)
+    cdef int64_t cap = max(64, 4 * rows * cols)  # cells the pixels' size: about 5 pieces a pixel
+    p = np.empty(cap, np.int64)
+    c = np.empty(cap, np.uint64)
+    a = np.empty(cap, np.float64)
+    cdef const double[::1] me = edges
+    cdef const uint8_t[::1] mok = ok.reshape(-1).view(np.uint8)
+    cdef double[::1] mw = work
+    cdef int64_t[::1] mp
+    cdef uint64_t[::1] mcell
+    cdef double[::1] ma
+    cdef dggs_pieces out
+    cdef int64_t resume = 0, need = 0
+    cdef int err
+    cdef double dd = 0.0
+    cdef uint8_t db = 0
+    out.n = 0
+    while True:
+        mp, mcell, ma = p, c, a
+        out.pixel, out.cell, out.area, out.cap = &mp[0], &mcell[0], &ma[0], cap
+        with nogil:
+            err = dggs_latlng_pieces(west, dlng, &me[0], rows, cols, &mok[0] if mok.shape[0] else &db, level, tol,
+                                     &out, &mw[0], mw.shape[0], &resume, &need)
+        if err != 5:  # DGGS_E_BUFFER: grow (doubling, or to what is needed) and go on from the cell it stopped at
+            break
+        cap = max(2 * cap, need)
+        p2, c2, a2 = np.empty(cap, np.int64), np.empty(cap, np.uint64), np.empty(cap, np.float64)
+        p2[:out.n], c2[:out.n], a2[:out.n] = p[:out.n], c[:out.n], a[:out.n]
+        p, c, a = p2, c2, a2
+    if err == 2:
+        raise ValueError(f"level {level} is outside 0..28")
+    if err == 1 or err == 6:
+        raise ValueError("latlng_pieces needs rows, cols >= 1, dlng > 0 (360 degrees at most in all), tol > 0 and "
+                         "latitudes strictly monotonic within -90..90")
+    if err:
+        raise RuntimeError("latlng_pieces: a cell edge needs more than 4096 chords (cells far coarser than pixels)")
+    return p[:out.n], c[:out.n], a[:out.n]

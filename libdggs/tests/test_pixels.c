@@ -1418,6 +1418,62 @@ static void errors(void) {
                            g->work, words, &resume, &need) == DGGS_E_DOMAIN);
 }
 
+/* dggs_latlng_pieces: a grid round the north pole cut cell by cell, through the buffer-growing resume; each
+ * pixel's pieces add up to its exact area on the unit sphere (Snyder 1987 eq. 3-12's q, written out here: sin of
+ * the authalic latitude is q(lat) / q(90)); the errors. */
+static double snyder_q(double lat) {
+    const double f = 1.0 / 298.257223563, e2 = f * (2.0 - f), e = sqrt(e2);
+    double s = sin(lat * 3.14159265358979323846 / 180.0);
+    return (1.0 - e2) * (s / (1.0 - e2 * s * s) - log((1.0 - e * s) / (1.0 + e * s)) / (2.0 * e));
+}
+
+static void latlng(void) {
+    enum { ROWS = 3, COLS = 4, CAP = 256 };
+    static double work[3 * (3 * 4096 + 16) + 2 * (ROWS + 2) * COLS + ROWS + 1 + 6 * 2048];
+    static int64_t pixel[CAP];
+    static uint64_t cell[CAP];
+    static double area[CAP];
+    const double lat[ROWS + 1] = {90.0, 89.5, 89.0, 88.5};
+    uint8_t valid[ROWS * COLS];
+    for (int i = 0; i < ROWS * COLS; i++) valid[i] = 1;
+    int64_t words = dggs_latlng_pieces_work_words(ROWS, COLS);
+    CHECK(words > 0 && words <= (int64_t)COUNT(work));
+    dggs_pieces out = {pixel, cell, area, 4, 0}; /* room for 4 pieces: grown below as a caller does */
+    int64_t resume = 0, need = 0;
+    dggs_error err;
+    int rounds = 0;
+    while ((err = dggs_latlng_pieces(-1.0, 0.5, lat, ROWS, COLS, valid, 6, 1e-5, &out, work, words, &resume,
+                                     &need)) == DGGS_E_BUFFER) {
+        CHECK(need > out.cap && need <= CAP);
+        out.cap = need < CAP ? need : CAP;
+        rounds++;
+    }
+    CHECK(err == DGGS_OK && rounds > 0 && out.n == need);
+    double sums[ROWS * COLS] = {0};
+    for (int64_t i = 0; i < out.n; i++) {
+        CHECK(pixel[i] >= 0 && pixel[i] < ROWS * COLS && area[i] > 0.0 && dggs_level_of(cell[i]) == 6);
+        sums[pixel[i]] += area[i];
+    }
+    for (int r = 0; r < ROWS; r++) {
+        double exact = 0.5 * 3.14159265358979323846 / 180.0 * (snyder_q(lat[r]) - snyder_q(lat[r + 1])) / snyder_q(90.0);
+        for (int c = 0; c < COLS; c++) CHECK(fabs(sums[r * COLS + c] / exact - 1.0) < 1e-6);
+    }
+    /* errors */
+    const double flat[ROWS + 1] = {90.0, 89.5, 89.5, 88.5}, past[ROWS + 1] = {90.5, 89.5, 89.0, 88.5};
+    resume = 0, out.n = 0;
+    CHECK(dggs_latlng_pieces(-1.0, 0.5, lat, ROWS, COLS, valid, 29, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_LEVEL);
+    CHECK(dggs_latlng_pieces(-1.0, 0.5, flat, ROWS, COLS, valid, 6, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_DOMAIN);
+    CHECK(dggs_latlng_pieces(-1.0, 0.5, past, ROWS, COLS, valid, 6, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_LATLNG);
+    CHECK(dggs_latlng_pieces(-1.0, 100.0, lat, ROWS, COLS, valid, 6, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_DOMAIN);
+    CHECK(dggs_latlng_pieces(-1.0, 0.5, lat, ROWS, COLS, valid, 6, 1e-5, &out, work, words - 1, &resume, &need) ==
+          DGGS_E_BUFFER);
+    CHECK(dggs_latlng_pieces_work_words(0, COLS) == 0);
+}
+
 int main(void) {
     frozen();
     clipping();
@@ -1425,5 +1481,6 @@ int main(void) {
     chord_errors();
     errors();
     arcs();
+    latlng();
     CHECK_DONE();
 }
