@@ -81,39 +81,54 @@ function premultiplied(hex, opacity) {
 
 const wrap180 = (x) => x - 360 * Math.round(x / 360);
 
-// One cell's ring on the unit sphere (into cell.ring) from m (lat, lng) pairs of `pts` at `at`, its centre (the
-// normalised sum), the longitude its vertices unwrap round (the centre's), and its fan triangles' subdivisions
-// `s`; cell.vertices and cell.indices are what its fan needs.
+// One cell from m (lat, lng) pairs of `pts` at `at`: its centre on the unit sphere (the normalised sum of its
+// three corners, the outline's points 0, m/3 and 2m/3), the longitude its vertices unwrap round (the centre's),
+// and its fan triangles' subdivisions `s` (from the corners: the spokes to them, and a side's length over the
+// points on it); cell.vertices and cell.indices are what its fan needs. Only a cell to be cut up (s > 1, levels
+// 0-5) has its whole outline put on the sphere (cell.ring).
 function measureCell(pts, at, m, cell) {
   const xyz = cell.ring;
+  const third = m / 3;
   let cx = 0;
   let cy = 0;
   let cz = 0;
-  for (let k = 0; k < m; k += 1) {
-    const lat = pts[at + 2 * k] * DEG;
-    const lng = pts[at + 2 * k + 1] * DEG;
-    const c = Math.cos(lat);
-    xyz[3 * k] = Math.sin(lng) * c;
-    xyz[3 * k + 1] = Math.sin(lat);
-    xyz[3 * k + 2] = Math.cos(lng) * c;
-    cx += xyz[3 * k];
-    cy += xyz[3 * k + 1];
-    cz += xyz[3 * k + 2];
+  const corner = cell.corner;
+  for (let c = 0; c < 3; c += 1) {
+    const lat = pts[at + 2 * c * third] * DEG;
+    const lng = pts[at + 2 * c * third + 1] * DEG;
+    const cl = Math.cos(lat);
+    corner[3 * c] = Math.sin(lng) * cl;
+    corner[3 * c + 1] = Math.sin(lat);
+    corner[3 * c + 2] = Math.cos(lng) * cl;
+    cx += corner[3 * c];
+    cy += corner[3 * c + 1];
+    cz += corner[3 * c + 2];
   }
   const norm = Math.hypot(cx, cy, cz);
   cx /= norm;
   cy /= norm;
   cz /= norm;
   const lng0 = Math.atan2(cx, cz) / DEG;
-  // Subdivisions of each fan triangle: its longest edge (a spoke, or a side of the outline) over MAX_CHORD_DEG.
-  let widest = 0; // 1 - cos of the widest angle
-  for (let k = 0; k < m; k += 1) {
-    const j = (k + 1) % m;
-    const spoke = cx * xyz[3 * k] + cy * xyz[3 * k + 1] + cz * xyz[3 * k + 2];
-    const side = xyz[3 * k] * xyz[3 * j] + xyz[3 * k + 1] * xyz[3 * j + 1] + xyz[3 * k + 2] * xyz[3 * j + 2];
-    widest = Math.max(widest, 1 - spoke, 1 - side);
+  let widest = 0; // the widest angle (degrees) of a spoke or of an outline's side between two points
+  for (let c = 0; c < 3; c += 1) {
+    const d = (c + 1) % 3;
+    const spoke = cx * corner[3 * c] + cy * corner[3 * c + 1] + cz * corner[3 * c + 2];
+    const side = corner[3 * c] * corner[3 * d] + corner[3 * c + 1] * corner[3 * d + 1] + corner[3 * c + 2] * corner[3 * d + 2];
+    widest = Math.max(widest, Math.acos(Math.min(1, spoke)) / DEG, Math.acos(Math.min(1, side)) / DEG / third);
   }
-  const s = Math.max(1, Math.ceil(Math.acos(Math.max(-1, 1 - widest)) / DEG / MAX_CHORD_DEG));
+  // 1.5: the outline's points off the corners' chords (up to 4.5 % of a cell's width, levels 4-10) may make a
+  // spoke to one of them longer than to the corners.
+  const s = Math.max(1, Math.ceil((1.5 * widest) / MAX_CHORD_DEG));
+  if (s > 1) {
+    for (let k = 0; k < m; k += 1) {
+      const lat = pts[at + 2 * k] * DEG;
+      const lng = pts[at + 2 * k + 1] * DEG;
+      const cl = Math.cos(lat);
+      xyz[3 * k] = Math.sin(lng) * cl;
+      xyz[3 * k + 1] = Math.sin(lat);
+      xyz[3 * k + 2] = Math.cos(lng) * cl;
+    }
+  }
   const vertices = s === 1 ? m + 1 : m * (((s + 1) * (s + 2)) / 2);
   Object.assign(cell, { pts, at, cx, cy, cz, lng0, s, vertices, indices: 3 * m * s * s });
 }
@@ -203,7 +218,7 @@ export async function* cellChunks(core, ids, values, { densify, projection }) {
     corners: new Uint16Array(MAX_VERTICES), vertices: 0, indices: 0, cornerCount: 0, cells: 0, first: 0, fans: true,
   });
   let out = fresh();
-  const cell = { ring: new Float64Array(3 * m) };
+  const cell = { ring: new Float64Array(3 * m), corner: new Float64Array(9) };
   const done = (chunk) => ({
     lnglat: chunk.lnglat.slice(0, 3 * chunk.vertices), index: chunk.index.slice(0, chunk.indices),
     // Each cell's corners as one triangle, where every cell of the chunk is one fan (none cut up).
