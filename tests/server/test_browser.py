@@ -821,6 +821,33 @@ def test_cells_as_geojson_where_asked(page: Any, server: str) -> None:
         wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
 
 
+def test_where_the_webgl_layer_cannot_draw_the_cells_come_as_geojson(page: Any, server: str) -> None:
+    """A layer whose shaders fail (as where WebGL lacks what it needs: here its program() is made to throw) hands
+    the map back to GeoJSON: the page asks map/cells for GeoJSON and MapLibre draws the same cells. Last: it
+    leaves the page reloaded as the other tests had it."""
+    try:
+        s = set_view(page, EUROPE_VIEW)
+        assert s["source"] == "ids"
+        ids_drawn = page.execute_script("return window.dggsDrawnZones()")
+        before = s["renders"]
+        page.execute_script("""const layer = window.dggsCellsLayer;
+            layer.programs.clear();
+            layer.program = () => { throw new Error('no shader here (test)'); };
+            window.dggsMap.triggerRepaint();""")
+        wait_for(page, lambda: state(page)["source"] == "geojson", message="the page did not fall back to GeoJSON")
+        s = settle(page, before)
+        drawn = page.execute_script(
+            "return window.dggsMap.getSource('cells').serialize().data.features.map(f => f.properties.zone_id)")
+        assert drawn == ids_drawn and s["featureCount"] == len(drawn) > 0
+        assert page.execute_script("return window.dggsMap.getLayer('cells-ids')") is None
+        urls = page.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+        assert "f=uint64" not in [u for u in urls if "/map/cells?" in u][-1]
+        assert js_errors(page) == []
+    finally:
+        page.get(f"{server}/")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+
+
 def test_the_standalone_page_of_docs_js_draws_cells_from_ids(page: Any, data: dict[str, Any], server: str,
                                                               tmp_path: Path) -> None:
     """docs/js.md's page, saved in a copy of the web map's folder and served by create_app(static=...), draws

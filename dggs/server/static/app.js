@@ -134,7 +134,19 @@ const coreReady = new URLSearchParams(window.location.search).get('cells') === '
 
 const mapDensify = (level) => (level <= 2 ? 8 : level <= 5 ? 4 : 2); // dggs.server.reader.map_densify
 const projectionOf = () => (layers && String(layers.dggrs).endsWith('IVEA') ? 'IVEA' : 'ISEA');
-const cellsLayer = new CellsLayer('cells-ids', { opacity: 0.8, noValueColour: NO_VALUE_COLOUR });
+// Where the layer cannot draw (WebGL without what it needs), the cells come as GeoJSON again.
+const cellsLayer = new CellsLayer('cells-ids', {
+  opacity: 0.8,
+  noValueColour: NO_VALUE_COLOUR,
+  onError: (err) => {
+    console.warn('cells as GeoJSON (the WebGL layer cannot draw):', String(err.message || err));
+    core = null;
+    state.source = 'geojson';
+    if (map.getLayer(cellsLayer.id)) map.removeLayer(cellsLayer.id);
+    shownKey = null;
+    refresh();
+  },
+});
 window.dggsCellsLayer = cellsLayer;
 
 // map/cells?f=uint64's body: count n, n uint64 ids, n float64 counts, n float64 values (NaN: none).

@@ -249,7 +249,11 @@ export async function* cellChunks(core, ids, values, { densify, projection }) {
 // The layer. setCells() builds the buffers (resolving once all are on the GPU), setClasses() recolours,
 // pick() finds the cell at a point, select() outlines one.
 export class CellsLayer {
-  constructor(id = 'cells-ids', { opacity = 0.8, noValueColour = '#8b949e' } = {}) {
+  // onError(err): called once if the layer cannot draw (its shaders do not compile or link here); it draws nothing
+  // after that.
+  constructor(id = 'cells-ids', { opacity = 0.8, noValueColour = '#8b949e', onError = null } = {}) {
+    this.onError = onError;
+    this.failed = null;
     this.id = id;
     this.type = 'custom';
     this.renderingMode = '2d';
@@ -440,8 +444,16 @@ export class CellsLayer {
   }
 
   render(gl, options) {
-    if (!this.chunks.length && !this.selected) return;
-    const { program, u } = this.program(options.shaderData);
+    if (this.failed || (!this.chunks.length && !this.selected)) return;
+    let compiled;
+    try {
+      compiled = this.program(options.shaderData);
+    } catch (err) {
+      this.failed = err;
+      if (this.onError) setTimeout(() => this.onError(err), 0); // not inside MapLibre's frame
+      return;
+    }
+    const { program, u } = compiled;
     const p = options.defaultProjectionData;
     gl.useProgram(program);
     gl.uniformMatrix4fv(u.u_projection_matrix, false, Float32Array.from(p.mainMatrix));
