@@ -821,6 +821,96 @@ def test_cells_as_geojson_where_asked(page: Any, server: str) -> None:
         wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
 
 
+@pytest.fixture(scope="module")
+def polar_server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
+    """`dggs serve` of a store with cells round the north pole (latitudes 65-90) and along the antimeridian
+    (latitudes -25 to 25 within 12 degrees of it), level 6, the pole's own cell among them."""
+    rng = np.random.default_rng(90)
+    n = 300  # some 680 cells of level 6 in the cap, 420 in the band: about a third hold a point, so the tests'
+    # pictures have empty cells among full ones (a boundary between two full cells shows nothing)
+    lat = np.concatenate([np.degrees(np.arcsin(rng.uniform(np.sin(np.radians(65)), 1, n))), rng.uniform(-25, 25, n),
+                          [90.0]])
+    lng = np.concatenate([rng.uniform(-180, 180, n), (rng.uniform(168, 192, n) + 180) % 360 - 180, [0.0]])
+    path = tmp_path_factory.mktemp("polar-store") / "cells.db"
+    with CellStore(path) as store:
+        store.ingest_points(lat, lng, 6, {"v": rng.integers(1, 100, lat.size)})
+    port = free_port()
+    proc = subprocess.Popen(_serve_command(path, port), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    base = f"http://127.0.0.1:{port}"
+    try:
+        deadline = time.monotonic() + TIMEOUT
+        while True:
+            try:
+                _get_json(f"{base}/map/layers", timeout=2.0)
+                break
+            except (OSError, urllib.error.URLError):
+                if time.monotonic() > deadline or proc.poll() is not None:
+                    pytest.fail("the polar store's dggs serve did not answer")
+                time.sleep(0.1)
+        yield base
+    finally:
+        proc.terminate()
+        proc.wait(10)
+
+
+def _mask_of(page: Any, url: str) -> tuple[np.ndarray, dict[str, Any]]:
+    page.get("about:blank")
+    page.get(url)
+    wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+    wait_for(page, lambda: page.execute_script("return window.dggsState.geography") != "loading")
+    s = state(page)
+    assert s["body"] == "idle" and s["featureCount"] > 0, s
+    return cell_mask(page), s
+
+
+@pytest.mark.parametrize(("view", "polar"),
+                         [("2.2/80/30", True), ("2.4/88/30", True), ("2.6/0/180", False), ("2.6/5/-179", False)])
+def test_ids_and_geojson_cover_the_same_pixels_at_the_pole_and_the_antimeridian(
+        page: Any, server: str, polar_server: str, view: str, polar: bool) -> None:
+    """Round the north pole and across the antimeridian, the cells drawn from ids by the WebGL layer (in 3D) show
+    where dggs.latlng_to_cell of a pixel's point is a drawn cell (every pixel of a grid on the globe, but within
+    2 px of a cell's edge), the pole among them; and across the antimeridian the server's GeoJSON polygons
+    drawn by MapLibre (split there) cover the same pixels but for 0.5 % of them away from the cells' edges.
+    Round the pole they do not: beyond latitude 85, where MapLibre's Web Mercator tiles end, its GeoJSON fills
+    part from the cells, and latlng_to_cell sides with the ids. Last: it leaves the module's page loaded as the
+    other tests had it."""
+    try:
+        ids_mask, from_ids = _mask_of(page, f"{polar_server}/#{view}")
+        # The oracle: a pixel shows a cell where the cell of its point (dggs.latlng_to_cell at the shown level)
+        # is one of the drawn cells; checked on a grid of pixels on the globe, away from the cells' edges.
+        drawn = set(page.execute_script("return window.dggsDrawnZones()"))
+        ys, xs = np.mgrid[12:ids_mask.shape[0] - 12:16, 300:ids_mask.shape[1] - 60:16]  # not under the legend
+        points = page.execute_script(
+            """const m = window.dggsMap;
+               return arguments[0].map(([x, y]) => { const q = m.unproject([x, y]), p = m.project(q);
+                 return Math.hypot(p.x - x, p.y - y) < 0.5 ? [q.lat, q.lng] : null; });""",
+            np.stack([xs.ravel(), ys.ravel()], axis=1).tolist())
+        window = ids_mask[ys.ravel()[:, None, None] + np.arange(-2, 3)[None, :, None],
+                          xs.ravel()[:, None, None] + np.arange(-2, 3)[None, None, :]]
+        inner = window.all(axis=(1, 2)) | ~window.any(axis=(1, 2))
+        on_globe = np.array([p is not None for p in points])
+        keep = np.flatnonzero(on_globe & inner)
+        cells = dggs.latlng_to_cell([points[k][0] for k in keep], [points[k][1] for k in keep], from_ids["level"])
+        oracle = np.array([str(c) in drawn for c in cells])
+        shown = ids_mask[ys.ravel()[keep], xs.ravel()[keep]]
+        assert len(keep) > 200 and oracle.any() and (shown == oracle).all(), (view, int((shown != oracle).sum()))
+        if polar:  # latitudes beyond 85 on the screen (the pole too, in the second view)
+            assert page.execute_script("return window.dggsMap.unproject([500, 5]).lat") > 85
+        geojson_mask, from_geojson = _mask_of(page, f"{polar_server}/?cells=geojson#{view}")
+        assert (from_ids["source"], from_geojson["source"]) == ("ids", "geojson")
+        assert from_ids["level"] == from_geojson["level"] and from_ids["featureCount"] == from_geojson["featureCount"]
+        off = _same_cell_pixels(ids_mask, geojson_mask)
+        assert ids_mask.sum() > 0.01 * ids_mask.size, view
+        # Beyond latitude 85 MapLibre's GeoJSON fills part from the cells (9 % of the cell pixels in the first
+        # view, where latlng_to_cell sides with the ids): no bound on them there.
+        assert polar or off < 0.005, (view, from_ids["level"], off)
+        assert js_errors(page) == []
+    finally:
+        page.get(f"{server}/")
+        wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
+        wait_for(page, lambda: page.execute_script("return window.dggsState.geography") != "loading")
+
+
 def test_where_the_webgl_layer_cannot_draw_the_cells_come_as_geojson(page: Any, server: str) -> None:
     """A layer whose shaders fail (as where WebGL lacks what it needs: here its program() is made to throw) hands
     the map back to GeoJSON: the page asks map/cells for GeoJSON and MapLibre draws the same cells. Last: it
@@ -901,3 +991,4 @@ def test_the_view_is_in_the_url_and_a_link_opens_it(page: Any, server: str) -> N
     page.get(f"{server}/")  # the module's page again, framed on the data, for the tests after this one
     wait_for(page, lambda: page.execute_script("return document.body.dataset.state") in ("idle", "error"))
     wait_for(page, lambda: page.execute_script("return window.dggsState.geography") != "loading")
+
