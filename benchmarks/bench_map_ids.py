@@ -2,6 +2,7 @@
 while panning, in headless Chromium (issue 34).
 
     python benchmarks/bench_map_ids.py [--sizes 10000 100000 1000000] [--level 9] [--ways geojson ids] [--timeout 600]
+                                       [--geojson-up-to 100000]
 
 For each size N: a store of N cells at `level`, or the first finer level with at least 2N cells (level 10 for
 1M; the centres of N distinct random cells), `dggs serve` on
@@ -15,7 +16,9 @@ of the map/cells answer (encodedBodySize), and the frame times (requestAnimation
 Each way has --timeout seconds (the page's script timeout and selenium's command timeout) to load, draw and pan;
 one that does not finish is reported as such, with how far it got. Beside each row: the peak resident memory of
 the browser (all of Chromium's processes together) and of `dggs serve`, sampled every 0.2 s, and the 1-minute
-load average before and after.
+load average before and after. For the ids way, the WebGL layer's own figures (dggs/server/static/cells_layer.js):
+the time to build its buffers from the ids (WebAssembly outlines, fans, upload), their chunks (one draw call
+each), vertices and indices.
 """
 
 from __future__ import annotations
@@ -138,8 +141,10 @@ select.dispatchEvent(new Event('change'));
   if (s.renders > before && document.body.dataset.state !== 'loading') {
     const entries = performance.getEntriesByType('resource').filter(e => e.name.includes('/map/cells?'));
     const last = entries[entries.length - 1];
+    const layer = window.dggsCellsLayer;
     done([performance.now() - t0, document.body.dataset.state, s.featureCount, s.level, s.source,
-          last ? last.encodedBodySize : -1, last ? last.name : '']);
+          last ? last.encodedBodySize : -1, last ? last.name : '',
+          s.source === 'ids' && layer ? layer.stats : null]);
   } else setTimeout(wait, 5);
 })();
 """
@@ -177,7 +182,7 @@ def measure(driver: object, base: str, level: int, way: str, progress: list[str]
     progress.append(f"warm first paint {warm[0]:,.0f} ms")
     frames = np.array(d.execute_async_script(PAN)[2:])  # type: ignore[attr-defined]
     return {"cold_ms": cold[0], "warm_ms": warm[0], "state": warm[1], "cells": warm[2], "level": warm[3],
-            "source": warm[4], "bytes": warm[5], "frame_median_ms": float(np.median(frames)),
+            "source": warm[4], "bytes": warm[5], "layer": warm[7], "frame_median_ms": float(np.median(frames)),
             "frame_p95_ms": float(np.percentile(frames, 95)), "frames": len(frames)}
 
 
@@ -187,6 +192,9 @@ def main() -> None:
     parser.add_argument("--level", type=int, default=9)
     parser.add_argument("--ways", nargs="+", default=["geojson", "ids"], choices=["geojson", "ids"])
     parser.add_argument("--timeout", type=float, default=600.0, help="seconds a way may take (default 600)")
+    parser.add_argument("--geojson-up-to", type=int, default=100_000,
+                        help="the largest size the GeoJSON way is run at (default 100,000: at 1M its tab grew to "
+                             "5.9 GB and crashed after about 300 s, BENCHMARKS.md)")
     args = parser.parse_args()
     if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):
         sys.exit("needs Debian's chromium and chromium-driver (make test-browser installs them)")
@@ -195,8 +203,8 @@ def main() -> None:
     folder = Path(tempfile.mkdtemp())
     print(f"level {args.level} or finer, timeout {args.timeout:.0f} s a way, load average {os.getloadavg()[0]:.2f} at the start")
     print("| cells (level) | way | bytes | first paint, cold (ms) | warm (ms) | frame median (ms) | frame p95 (ms) "
-          "| browser peak RSS (MB) | server peak RSS (MB) |")
-    print("|---:|---|---:|---:|---:|---:|---:|---:|---:|")
+          "| browser peak RSS (MB) | server peak RSS (MB) | WebGL buffers: build (ms), chunks, vertices, indices |")
+    print("|---:|---|---:|---:|---:|---:|---:|---:|---:|---|")
     for n in args.sizes:
         level = next(lv for lv in range(args.level, 29) if dggs.get_num_cells(lv) >= 2 * n)
         path = store_of(n, level, folder)
@@ -204,6 +212,9 @@ def main() -> None:
         server_mem = PeakMemory(proc.pid)
         try:
             for way in args.ways:
+                if way == "geojson" and n > args.geojson_up_to:
+                    print(f"| {n:,} ({level}) | {way} | not run (--geojson-up-to {args.geojson_up_to:,}) | | | | | | | |")
+                    continue
                 driver = browser(args.timeout)
                 browser_mem = PeakMemory(driver.service.process.pid)  # type: ignore[attr-defined]
                 progress: list[str] = []
@@ -219,12 +230,15 @@ def main() -> None:
                 if "error" in r:
                     got = "; ".join(progress) or "nothing"
                     print(f"| {n:,} ({level}) | {way} | did not finish: {r['error']} (got: {got}) | | | | | {peak:,.0f} | "
-                          f"{server_mem.peak:,.0f} |", flush=True)
+                          f"{server_mem.peak:,.0f} | |", flush=True)
                     continue
                 assert r["source"] == way and r["cells"] == n and r["state"] == "idle", r
+                lay = r["layer"]
+                buffers = (f"{lay['buildMs']:,.0f}, {lay['chunks']:,}, {lay['vertices']:,}, {lay['indices']:,}"
+                           if isinstance(lay, dict) else "(GeoJSON source)")
                 print(f"| {n:,} ({level}) | {way} | {r['bytes']:,} | {r['cold_ms']:,.0f} | {r['warm_ms']:,.0f} | "
-                      f"{r['frame_median_ms']:.1f} | {r['frame_p95_ms']:.1f} | {peak:,.0f} | {server_mem.peak:,.0f} |",
-                      flush=True)
+                      f"{r['frame_median_ms']:.1f} | {r['frame_p95_ms']:.1f} | {peak:,.0f} | {server_mem.peak:,.0f} | "
+                      f"{buffers} |", flush=True)
         finally:
             server_mem.stop()
             proc.terminate()

@@ -53,6 +53,7 @@ def test_a_wheel_built_from_a_clone_serves_a_whole_map(tmp_path):
     if shutil.which("clang") and Path("/usr/lib/wasm32-wasi/libc.a").is_file():  # built by make wasm (issue 34)
         assert sizes.get("dggs/server/static/vendor/dggs/dggs.wasm", 0) > 100_000
         assert sizes.get("dggs/server/static/vendor/dggs/dggs.js", 0) > 5_000
+    assert sizes.get("dggs/server/static/cells_layer.js", 0) > 5_000  # the globe's WebGL layer, beside app.js
 
 
 def test_without_npm_the_build_goes_on_with_a_warning(tmp_path, monkeypatch):

@@ -3,10 +3,11 @@
 // linear) with a legend of the classes, a cell popup, and Natural Earth's coastlines and borders beneath.
 // An ES module with no build step; MapLibre GL JS, the countries (world-atlas, TopoJSON) and
 // topojson-client come from /static/vendor, installed from npm (no internet needed). The cells come as ids
-// (map/cells?f=uint64, 24 bytes a cell) and are drawn with the grid's WebAssembly core (the JS package js/,
-// copied to /static/vendor/dggs by `make static-wasm`); as GeoJSON from the server where it is missing or
-// with ?cells=geojson in the page's URL.
+// (map/cells?f=uint64, 24 bytes a cell) and drawn by a WebGL layer from their outlines, computed by the grid's
+// WebAssembly core (the JS package js/, copied to /static/vendor/dggs by `make static-wasm`; cells_layer.js); as
+// GeoJSON from the server where the core is missing or with ?cells=geojson in the page's URL.
 import { Map as MapLibreMap, Marker, NavigationControl, Popup } from './vendor/maplibre-gl/maplibre-gl.mjs';
+import { CellsLayer, cellChunks } from './cells_layer.js';
 
 // --- Level from zoom ------------------------------------------------------------------------------
 // From level 1 on, each level divides a cell into 3 similar triangles: cells shrink sqrt(3)-fold in
@@ -124,10 +125,8 @@ function graticule(step = 30, density = 2) {
 const EMPTY = { type: 'FeatureCollection', features: [] };
 
 // --- Cells from ids ---------------------------------------------------------------------------------
-// The grid's C core as WebAssembly draws each cell's outline from its id, as the server's GeoJSON has it
-// (dggs.cell_to_polygon with map_densify's points per edge): a pole on the ring (a corner, or on an edge between
-// two of its points) as two points at latitude +-90 (arriving and leaving longitude), longitudes unwrapped (MapLibre wraps them back) and a ring that goes
-// round a pole closed over it. The server's polygons are split at the antimeridian instead; the ground is the same.
+// The grid's C core as WebAssembly gives each cell's outline from its id, with map_densify's points an edge as
+// the server's GeoJSON has it (dggs.cell_to_polygon); cells_layer.js draws them as triangles on the globe.
 let core = null; // the JS package (vendor/dggs/dggs.js), once its WebAssembly module is loaded
 const coreReady = new URLSearchParams(window.location.search).get('cells') === 'geojson'
   ? Promise.resolve().then(() => { state.source = 'geojson'; })
@@ -143,119 +142,54 @@ const coreReady = new URLSearchParams(window.location.search).get('cells') === '
     });
 
 const mapDensify = (level) => (level <= 2 ? 8 : level <= 5 ? 4 : 2); // dggs.server.reader.map_densify
-
-// One cell's ring, [lng, lat] points, closed, from m (lat, lng) pairs of `pts` at `at` (index/_shapes.py's
-// ring_to_geometry before its split at the antimeridian).
-function cellRing(pts, at, m) {
-  const xs = [];
-  const ys = [];
-  const atPole = (k) => Math.abs(Math.abs(pts[at + 2 * k]) - 90) < 1e-9;
-  for (let k = 0; k < m; k += 1) {
-    const lat = pts[at + 2 * k];
-    if (atPole(k)) {
-      xs.push(pts[at + 2 * ((k + m - 1) % m) + 1], pts[at + 2 * ((k + 1) % m) + 1]);
-      ys.push(Math.sign(lat) * 90, Math.sign(lat) * 90);
-    } else {
-      xs.push(pts[at + 2 * k + 1]);
-      ys.push(lat);
-      // An edge through a pole (a pole between two of its points): the two points lie on opposite meridians.
-      const j = (k + 1) % m;
-      const lat2 = pts[at + 2 * j];
-      const turn = Math.abs(((((pts[at + 2 * j + 1] - pts[at + 2 * k + 1]) % 360) + 360) % 360) - 180);
-      if (!atPole(j) && turn < 1e-9 && lat * lat2 > 0) {
-        xs.push(pts[at + 2 * k + 1], pts[at + 2 * j + 1]);
-        ys.push(Math.sign(lat) * 90, Math.sign(lat) * 90);
-      }
-    }
-  }
-  const n = xs.length;
-  const ring = [[xs[0], ys[0]]];
-  let x = xs[0];
-  let winding = 0;
-  for (let i = 0; i < n; i += 1) {
-    const j = (i + 1) % n;
-    const raw = xs[j] - xs[i];
-    let step = ((((raw + 180) % 360) + 360) % 360) - 180;
-    if (Math.abs(ys[i]) === 90 && ys[j] === ys[i]) { // along a pole: west at the north, east at the south
-      step = ys[i] > 0 ? -((((-raw) % 360) + 360) % 360) : ((raw % 360) + 360) % 360;
-    }
-    winding += step;
-    x += step;
-    if (j !== 0) ring.push([x, ys[j]]);
-  }
-  if (Math.abs(winding) > 180) { // round a pole: close the ring over it
-    const pole = ys.reduce((a, b) => a + b, 0) / n > 0 ? 90 : -90;
-    const last = ring[ring.length - 1][0];
-    ring.push([last, pole], [xs[0] + winding, pole], [xs[0] + winding, ys[0]]);
-  }
-  ring.push(ring[0]);
-  return ring;
-}
-
-// The points where a ring crosses the antimeridian, added to it: the server's polygon crosses on the curved edge,
-// MapLibre on the chord between two points, and with the map's 2-8 points an edge the two crossings are up to
-// 3 % of the cell apart. Each crossing is taken from the cell's ring with 64 times the points per edge (in the
-// same unwrapped frame: both start at the first corner), the crossing of its chords nearest the coarse one.
-const ACROSS_FINER = 64;
-function crossingsOf(ring) {
-  const out = [];
-  for (let k = 0; k + 1 < ring.length; k += 1) {
-    const [x0, y0] = ring[k];
-    const [x1, y1] = ring[k + 1];
-    const lo = Math.min(x0, x1);
-    const hi = Math.max(x0, x1);
-    for (let X = 180 + 360 * Math.ceil((lo - 180) / 360); X <= hi; X += 360) {
-      if (X === x0 || X === x1 || x0 === x1) continue;
-      out.push({ k, X, y: y0 + ((y1 - y0) * (X - x0)) / (x1 - x0) });
-    }
-  }
-  return out;
-}
-
-function acrossAntimeridian(ring, id, densify, projection) {
-  const coarse = crossingsOf(ring);
-  if (!coarse.length) return ring;
-  const pts = Float64Array.from(core.cellToBoundary(id, { densify: ACROSS_FINER * (densify + 1) - 1, projection }).flat());
-  const fine = crossingsOf(cellRing(pts, 0, pts.length / 2));
-  const out = ring.slice();
-  for (const c of coarse.reverse()) { // from the last, so that earlier indexes stay
-    const near = fine.filter((f) => f.X === c.X).sort((a, b) => Math.abs(a.y - c.y) - Math.abs(b.y - c.y))[0];
-    if (near) out.splice(c.k + 1, 0, [c.X, near.y]);
-  }
-  return out;
-}
-
-// GeoJSON features of cells given as ids (BigUint64Array) at one level, with the properties map/cells gives.
-function cellFeatures(ids, level, counts, values) {
-  const densify = mapDensify(level);
-  const m = 3 * (densify + 1);
-  const projection = layers && String(layers.dggrs).endsWith('IVEA') ? 'IVEA' : 'ISEA';
-  const pts = core.cellsToBoundaries(ids, { densify, projection });
-  const area = core.cellArea(level, 'km^2');
-  const features = new Array(ids.length);
-  for (let i = 0; i < ids.length; i += 1) {
-    const value = values ? values[i] : NaN;
-    features[i] = {
-      type: 'Feature',
-      properties: {
-        zone_id: core.cellToString(ids[i]), level, area_km2: area, count: counts ? counts[i] : 0,
-        value: Number.isNaN(value) ? null : value,
-      },
-      geometry: { type: 'Polygon', coordinates: [acrossAntimeridian(cellRing(pts, 2 * m * i, m), ids[i], densify, projection)] },
-    };
-  }
-  return { type: 'FeatureCollection', features };
-}
+const projectionOf = () => (layers && String(layers.dggrs).endsWith('IVEA') ? 'IVEA' : 'ISEA');
+// Where the layer cannot draw (WebGL without what it needs), the cells come as GeoJSON again.
+const cellsLayer = new CellsLayer('cells-ids', {
+  opacity: 0.8,
+  noValueColour: NO_VALUE_COLOUR,
+  onError: (err) => {
+    console.warn('cells as GeoJSON (the WebGL layer cannot draw):', String(err.message || err));
+    core = null;
+    state.source = 'geojson';
+    if (map.getLayer(cellsLayer.id)) map.removeLayer(cellsLayer.id);
+    shownKey = null;
+    refresh();
+  },
+});
+window.dggsCellsLayer = cellsLayer;
 
 // map/cells?f=uint64's body: count n, n uint64 ids, n float64 counts, n float64 values (NaN: none).
-function featuresFromBody(body, level) {
+function cellsFromBody(body) {
   const n = Number(new BigUint64Array(body, 0, 1)[0]);
-  return cellFeatures(
-    new BigUint64Array(body, 8, n), level, new Float64Array(body, 8 + 8 * n, n), new Float64Array(body, 8 + 16 * n, n),
-  );
+  return { ids: new BigUint64Array(body, 8, n), counts: new Float64Array(body, 8 + 8 * n, n), values: new Float64Array(body, 8 + 16 * n, n) };
 }
-// For the tests: the features the page would draw for string ids of one level.
-window.dggsCellFeatures = (zones, level) => cellFeatures(BigUint64Array.from(zones, (z) => core.stringToCell(z)), level);
+
+// For the tests: the zone ids the layer draws, and the triangles it draws for string ids of one level: for each
+// zone its (lng, lat) vertices and its triangles' vertex indices (cells_layer.js's cellChunks, one cell a call).
+window.dggsDrawnZones = () => (cellsLayer.cells ? Array.from(cellsLayer.cells.ids, (id) => core.cellToString(id)) : []);
+// The cells on the map, whichever way they came: zone id, area and value of each, and the colour classes.
+window.dggsDrawnCells = () => {
+  if (!core) return map.querySourceFeatures('cells').map((f) => f.properties);
+  const c = cellsLayer.cells;
+  if (!c) return [];
+  const area = core.cellArea(c.level, 'km^2');
+  return Array.from(c.ids, (id, i) => ({
+    zone_id: core.cellToString(id), area_km2: area, value: Number.isNaN(c.values[i]) ? null : c.values[i],
+  }));
+};
+window.dggsCellPaint = () => (core
+  ? JSON.stringify([cellsLayer.breaks, cellsLayer.colours])
+  : JSON.stringify(map.getPaintProperty('cells-fill', 'fill-color')));
+window.dggsCellTriangles = async (zones, level) => {
+  const out = [];
+  for (const zone of zones) {
+    const ids = BigUint64Array.of(core.stringToCell(zone));
+    for await (const c of cellChunks(core, ids, null, { densify: mapDensify(level), projection: projectionOf() })) {
+      out.push({ zone, lnglat: Array.from(c.lnglat), index: Array.from(c.index) });
+    }
+  }
+  return out;
+};
 
 // --- The map --------------------------------------------------------------------------------------
 const style = {
@@ -457,6 +391,7 @@ const popup = new Popup({ closeButton: true, closeOnClick: true, maxWidth: '280p
 popup.on('close', () => {
   state.selected = null;
   if (map.getLayer('cells-selected')) map.setFilter('cells-selected', ['==', ['get', 'zone_id'], '']);
+  if (core) cellsLayer.select(core, null);
 });
 
 // A screen point off the globe does not survive unproject + project (unproject clamps it to the limb).
@@ -605,22 +540,39 @@ function updateLegend(level, min, max, breaks, colours) {
   });
 }
 
-function render(fc, level, bbox, wanted) {
-  if (state.level !== level) popup.remove(); // the clicked cell is gone
-  const values = fc.features.map((f) => f.properties.value).filter((v) => typeof v === 'number' && Number.isFinite(v));
+// Draws the cells: `fc` (GeoJSON from the server) or `cells` ({ids, counts, values} from map/cells?f=uint64, drawn
+// by the WebGL layer; resolves once its buffers are built, false if a newer refresh came first).
+async function render({ fc = null, cells = null }, level, bbox, wanted) {
+  if (state.level !== level) { // the clicked cell is gone
+    popup.remove();
+    if (core) cellsLayer.select(core, null);
+  }
+  const values = cells
+    ? Array.from(cells.values).filter(Number.isFinite)
+    : fc.features.map((f) => f.properties.value).filter((v) => typeof v === 'number' && Number.isFinite(v));
   values.sort((a, b) => a - b);
   const min = values.length ? values[0] : null;
   const max = values.length ? values[values.length - 1] : null;
   const breaks = values.length ? classBreaks(values, state.scale) : [];
   const colours = classColours(breaks.length + 1);
-  map.getSource('cells').setData(fc);
-  map.setPaintProperty('cells-fill', 'fill-color', fillColour(breaks, colours));
-  Object.assign(state, { level, featureCount: fc.features.length, min, max, breaks, bbox, lastError: null });
+  const count = cells ? cells.ids.length : fc.features.length;
+  if (cells) {
+    const drawn = await cellsLayer.setCells(core, cells.ids, {
+      level, densify: mapDensify(level), projection: projectionOf(), values: cells.values, counts: cells.counts,
+    });
+    if (!drawn) return false;
+    cellsLayer.setClasses(breaks, colours);
+  } else {
+    map.getSource('cells').setData(fc);
+    map.setPaintProperty('cells-fill', 'fill-color', fillColour(breaks, colours));
+  }
+  Object.assign(state, { level, featureCount: count, min, max, breaks, bbox, lastError: null });
   updateLegend(level, min, max, breaks, colours);
-  const area = fc.features.length ? fc.features[0].properties.area_km2 : null;
+  const area = !count ? null : cells ? core.cellArea(level, 'km^2') : fc.features[0].properties.area_km2;
   const areaText = area ? ` · ${formatNumber(Math.round(area))} km² each` : '';
   const coarser = level < wanted ? ` (level ${wanted} has too many cells here)` : '';
-  setStatus(`level ${level} · ${fc.features.length.toLocaleString('en-US')} cells${areaText}${coarser}`);
+  setStatus(`level ${level} · ${count.toLocaleString('en-US')} cells${areaText}${coarser}`);
+  return true;
 }
 
 function whenMapIdle(seq, value) {
@@ -669,6 +621,7 @@ async function refresh() {
   }
   try {
     await coreReady;
+    if (core && !map.getLayer(cellsLayer.id)) map.addLayer(cellsLayer, 'cells-fill');
     for (;;) {
       const url = cellsUrl(level, bbox);
       const response = await fetch(core ? `${url}&f=uint64` : url, { signal });
@@ -678,9 +631,10 @@ async function refresh() {
         continue;
       }
       if (!response.ok) throw new Error(`cells at level ${level}: ${await readError(response)}`);
-      const fc = core ? featuresFromBody(await response.arrayBuffer(), level) : await response.json();
+      const answer = core ? { cells: cellsFromBody(await response.arrayBuffer()) } : { fc: await response.json() };
       if (seq !== requestSeq) return;
-      render(fc, level, bbox, wanted);
+      if (core) setStatus(`drawing ${answer.cells.ids.length.toLocaleString('en-US')} cells…`);
+      if (!(await render(answer, level, bbox, wanted)) || seq !== requestSeq) return;
       shownKey = key;
       whenMapIdle(seq, 'idle');
       return;
@@ -717,7 +671,8 @@ function formatCentroid(centroid) {
 async function showCell(feature, lngLat) {
   const p = feature.properties;
   state.selected = p.zone_id;
-  map.setFilter('cells-selected', ['==', ['get', 'zone_id'], p.zone_id]);
+  if (core) cellsLayer.select(core, core.stringToCell(p.zone_id));
+  else map.setFilter('cells-selected', ['==', ['get', 'zone_id'], p.zone_id]);
   const box = document.createElement('div');
   box.className = 'cell-info';
   box.dataset.zoneId = p.zone_id;
@@ -753,6 +708,29 @@ map.on('click', 'cells-fill', (e) => {
 });
 map.on('mouseenter', 'cells-fill', () => { map.getCanvas().style.cursor = 'pointer'; });
 map.on('mouseleave', 'cells-fill', () => { map.getCanvas().style.cursor = ''; });
+
+// Cells drawn from ids: the cell under the pointer is the one latLngToCell gives at the shown level (exact, and
+// a binary search among the drawn ids), if it is drawn; off the globe there is none.
+function cellAt(e) {
+  if (!core || !cellsLayer.cells || !onGlobe(e.point.x, e.point.y)) return null;
+  const i = cellsLayer.pick(core, e.lngLat.lng, e.lngLat.lat);
+  if (i < 0) return null;
+  const { ids, counts, values, level } = cellsLayer.cells;
+  const value = values ? values[i] : NaN;
+  return {
+    properties: {
+      zone_id: core.cellToString(ids[i]), level, area_km2: core.cellArea(level, 'km^2'),
+      count: counts ? counts[i] : 0, value: Number.isNaN(value) ? null : value,
+    },
+  };
+}
+map.on('click', (e) => {
+  const cell = cellAt(e);
+  if (cell) showCell(cell, e.lngLat);
+});
+map.on('mousemove', (e) => {
+  if (core && cellsLayer.cells) map.getCanvas().style.cursor = cellAt(e) ? 'pointer' : '';
+});
 map.on('zoom', showLabels);
 
 // --- Controls -------------------------------------------------------------------------------------
