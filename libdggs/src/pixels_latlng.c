@@ -24,6 +24,7 @@
 
 #include "bits.h"
 #include "clip.h"
+#include "dmath.h"
 #include "geometry.h"
 #include "pixels.h"
 #include "points.h"
@@ -85,7 +86,7 @@ static void to_map(int face, double x, double y, double *lng, double *q, bool *p
     double p[3];
     dggs_snyder_inverse_unit(FRAMES, face, x, y, p);
     *pole = p[0] * p[0] + p[1] * p[1] < 1e-26;
-    *lng = *pole ? 0.0 : atan2(p[1], p[0]) * (180.0 / PI);
+    *lng = *pole ? 0.0 : dggs_atan2(p[1], p[0]) * (180.0 / PI);
     *q = p[2] > 1.0 ? 1.0 : (p[2] < -1.0 ? -1.0 : p[2]);
 }
 
@@ -107,6 +108,9 @@ static void mapped(grid_t *g, int face, double x, double y, double *lng, double 
     m[2] = (double)face, m[3] = *lng, m[4] = *q, m[5] = *pole ? 1.0 : 0.0;
 }
 
+/* acos from the core's own atan2 and an exact sqrt (dmath.h: the same bits on every platform). */
+static double pixels_acos(double x) { return dggs_atan2(sqrt((1.0 - x) * (1.0 + x)), x); }
+
 /* Does the cap round `cell` (its corners' widest angle from its centre, widened by a fifth for its curved edges)
  * meet the block's box? *inside: does the box hold it whole? */
 static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
@@ -119,19 +123,19 @@ static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
         double d = c[0] * p[0] + c[1] * p[1] + c[2] * p[2];
         if (d < least) least = d;
     }
-    double rho = 1.2 * acos(least > 1.0 ? 1.0 : least) + 1e-9;
-    double beta = asin(c[2] > 1.0 ? 1.0 : (c[2] < -1.0 ? -1.0 : c[2]));
+    double rho = 1.2 * pixels_acos(least > 1.0 ? 1.0 : least) + 1e-9;
+    double beta = dggs_asin(c[2] > 1.0 ? 1.0 : (c[2] < -1.0 ? -1.0 : c[2]));
     *inside = false;
     if (beta + rho < g->beta_lo || beta - rho > g->beta_hi) return false;
     bool rows_in = beta - rho > g->beta_lo && beta + rho < g->beta_hi;
     if (fabs(beta) + rho >= 0.5 * PI) return true;
-    double half = asin(fmin(1.0, sin(rho) / cos(beta))) * (180.0 / PI);
+    double half = dggs_asin(fmin(1.0, dggs_sin(rho) / dggs_cos(beta))) * (180.0 / PI);
     if (g->box_east - g->box_west >= 360.0) {
         *inside = rows_in;
         return true;
     }
     double mid = 0.5 * (g->box_west + g->box_east), width = 0.5 * (g->box_east - g->box_west);
-    double d = fmod(atan2(c[1], c[0]) * (180.0 / PI) - mid, 360.0);
+    double d = fmod(dggs_atan2(c[1], c[0]) * (180.0 / PI) - mid, 360.0);
     if (d > 180.0) d -= 360.0;
     if (d < -180.0) d += 360.0;
     *inside = rows_in && fabs(d) + half < width; /* its descendants need no test */
@@ -444,12 +448,12 @@ dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges,
     for (int64_t i = 0; i < MEMO; i++) g.memo[6 * i + 2] = -1.0; /* no face: empty */
     for (int64_t b = 0; b <= rows; b++) {
         double phi = lat_edges[north_up ? rows - b : b] * (PI / 180.0), sb, cb;
-        dggs_authalic_sincos(sin(phi), cos(phi), &sb, &cb);
+        dggs_authalic_sincos(dggs_sin(phi), dggs_cos(phi), &sb, &cb);
         qe[b] = sb;
     }
     g.qe = qe;
     g.box_west = west, g.box_east = west + dlng * (double)cols;
-    g.beta_lo = asin(qe[0]), g.beta_hi = asin(qe[rows]);
+    g.beta_lo = dggs_asin(qe[0]), g.beta_hi = dggs_asin(qe[rows]);
 
     /* depth first over the hierarchy, the cells whose caps meet the box; the target cells counted for *resume */
     uint64_t stack[6 * (DGGS_MAX_LEVEL + 2)];

@@ -18,11 +18,11 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import mpmath as mp  # the test extra: a missing mpmath fails here, never skips
+import numpy as np
 import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
-
-mp = pytest.importorskip("mpmath")
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "libdggs" / "src" / "dmath.c"
@@ -178,7 +178,6 @@ def many(tmp_path_factory):
 def test_millions_of_arguments_each(many, name):
     """Two million arguments a function: the x87 long double (64-bit significand) libm estimates each error to
     2^-10 ulp; every argument estimated above 0.9 ulp is measured again with mpmath, which decides."""
-    np = pytest.importorskip("numpy")
     rng = np.random.default_rng(3400)
     n = 2_000_000
     ld = np.longdouble
