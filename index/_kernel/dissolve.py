@@ -39,3 +39,4 @@ from dggs._core import dissolve_ring_point_bound as ring_point_bound
 from dggs._core import dissolve_ring_points as ring_points
 
 __all__ = ["boundary_descendants", "chain", "drop_covered", "outline_mask", "ring_points", "ring_point_bound"]
+from dggs._core import dissolve_multi_polygon as multi_polygon
