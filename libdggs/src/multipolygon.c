@@ -458,10 +458,14 @@ static dggs_error outline(const uint64_t *ids, int64_t n, int densify, dggs_proj
     *ll = NULL, *corner = NULL, *ends = NULL, *nrings = 0;
     int64_t nfine = 0;
     for (int64_t i = 0; i < n; i++) finest = dggs_level_of(ids[i]) > finest ? dggs_level_of(ids[i]) : finest;
+    double bound = 0.0; /* index/dissolve.py's check: l levels coarser, at most 6 * 3 ** ceil(l / 2) + 12 */
     for (int64_t i = 0; i < n; i++) {
-        nfine += dggs_level_of(ids[i]) == finest ? 1 : dggs_dissolve_descend(ids[i], finest, NULL, 0);
-        if (nfine > MAX_FINE) return DGGS_E_FAILED;
+        int l = finest - dggs_level_of(ids[i]);
+        if (l) bound += 6.0 * pow(3.0, (double)((l + 1) / 2)) + 12.0;
     }
+    if (bound > MAX_FINE) return DGGS_E_FAILED;
+    for (int64_t i = 0; i < n; i++)
+        nfine += dggs_level_of(ids[i]) == finest ? 1 : dggs_dissolve_descend(ids[i], finest, NULL, 0);
     uint64_t *fine = malloc((size_t)(nfine ? nfine : 1) * sizeof(uint64_t));
     uint64_t *ecell = malloc((size_t)(3 * nfine + 1) * sizeof(uint64_t));
     int64_t *ecol = malloc((size_t)(3 * nfine + 1) * sizeof(int64_t));
