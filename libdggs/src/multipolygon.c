@@ -362,10 +362,48 @@ static double ring_area(const double *xy, int64_t n) { /* shoelace, about the fi
     return 0.5 * s;
 }
 
-/* Whether (px, py) is inside ring xy (n points): crossing number. */
-static bool in_ring(const double *xy, int64_t n, double px, double py) {
+/* A ring's edges bucketed by latitude, for many point-in-ring tests (a hole's point against the shells): an edge
+ * is in every bucket its latitude range meets, so the edges a horizontal ray from (px, py) can cross are in py's. */
+typedef struct {
+    int64_t nb, *start, *items;
+    double y0, h;
+} ring_index;
+
+static bool index_ring(const double *xy, int64_t n, const double *box, ring_index *ix) {
+    ix->nb = n / 8 < 1 ? 1 : n / 8 > 4096 ? 4096 : n / 8;
+    ix->y0 = box[1], ix->h = (box[3] - box[1]) / (double)ix->nb;
+    if (!(ix->h > 0.0)) ix->nb = 1, ix->h = 1.0;
+    ix->start = calloc((size_t)ix->nb + 1, sizeof(int64_t));
+    if (!ix->start) return false;
+#define BUCKET(y) ((int64_t)fmin(fmax(floor(((y) - ix->y0) / ix->h), 0.0), (double)(ix->nb - 1)))
+    for (int pass = 0; pass < 2; pass++) {
+        for (int64_t i = 0, j = n - 1; i < n; j = i++) {
+            int64_t b0 = BUCKET(fmin(xy[2 * i + 1], xy[2 * j + 1])), b1 = BUCKET(fmax(xy[2 * i + 1], xy[2 * j + 1]));
+            for (int64_t b = b0; b <= b1; b++) {
+                if (pass == 0)
+                    ix->start[b + 1]++;
+                else
+                    ix->items[ix->start[b]++] = i;
+            }
+        }
+        if (pass == 0) {
+            for (int64_t b = 0; b < ix->nb; b++) ix->start[b + 1] += ix->start[b];
+            ix->items = malloc((size_t)(ix->start[ix->nb] ? ix->start[ix->nb] : 1) * sizeof(int64_t));
+            if (!ix->items) return false;
+        }
+    }
+    for (int64_t b = ix->nb; b > 0; b--) ix->start[b] = ix->start[b - 1]; /* the fill moved each start to its end */
+    ix->start[0] = 0;
+    return true;
+}
+
+/* Whether (px, py) is inside ring xy (n points): crossing number over the edges of py's bucket. */
+static bool in_ring(const double *xy, int64_t n, const ring_index *ix, double px, double py) {
     bool in = false;
-    for (int64_t i = 0, j = n - 1; i < n; j = i++) {
+    int64_t b = BUCKET(py);
+#undef BUCKET
+    for (int64_t k = ix->start[b]; k < ix->start[b + 1]; k++) {
+        int64_t i = ix->items[k], j = i ? i - 1 : n - 1;
         double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
         if ((yi > py) != (yj > py) && px < xj + (py - yj) / (yi - yj) * (xi - xj)) in = !in;
     }
@@ -402,8 +440,13 @@ static bool assign(const rings_t *r, bool frame_is_set, mp_t *mp) {
             bx[1] = fmin(bx[1], xy[2 * j + 1]), bx[3] = fmax(bx[3], xy[2 * j + 1]);
         }
     }
-    bool globe = frame_is_set;
-    for (int64_t h = 0; h < n; h++) {
+    bool globe = frame_is_set, ok = true;
+    ring_index *ix = calloc((size_t)(n ? n : 1), sizeof *ix); /* built for a shell when a hole is first tested */
+    if (!ix) {
+        free(area), free(parent);
+        return false;
+    }
+    for (int64_t h = 0; h < n && ok; h++) {
         parent[h] = -1;
         if (area[h] >= 0.0) continue;
         const double *xy = r->p.xy + 2 * r->start[h];
@@ -412,11 +455,18 @@ static bool assign(const rings_t *r, bool frame_is_set, mp_t *mp) {
         for (int64_t s = 0; s < n; s++) {
             const double *bx = box + 4 * s;
             if (area[s] <= 0.0 || area[s] >= best || px < bx[0] || px > bx[2] || py < bx[1] || py > bx[3]) continue;
-            if (in_ring(r->p.xy + 2 * r->start[s], r->start[s + 1] - r->start[s], px, py)) best = area[s], parent[h] = s;
+            const double *sxy = r->p.xy + 2 * r->start[s];
+            int64_t sn = r->start[s + 1] - r->start[s];
+            if (!ix[s].start && !index_ring(sxy, sn, bx, &ix[s])) {
+                ok = false;
+                break;
+            }
+            if (in_ring(sxy, sn, &ix[s], px, py)) best = area[s], parent[h] = s;
         }
         if (parent[h] < 0) globe = true;
     }
-    bool ok = true;
+    for (int64_t i = 0; i < n; i++) free(ix[i].start), free(ix[i].items);
+    free(ix);
     /* polygons: the frame first when the set holds it, then each shell, each with its holes */
     for (int64_t s = -1; s < n && ok; s++) {
         if (s < 0 ? !globe : area[s] <= 0.0) continue;
