@@ -24,6 +24,7 @@ from .test_duckdb_extension import CLI, ext, rows, run, spatial  # noqa: F401  (
 
 pytestmark = pytest.mark.skipif(not CLI.is_file(), reason="no duckdb CLI (pip install duckdb-cli)")
 shapely = pytest.importorskip("shapely")
+from shapely.validation import explain_validity  # noqa: E402
 
 #: Points where sets are centred: the poles, the antimeridian (both signs), an icosahedron vertex, plain places.
 CENTRES = [(90.0, 0.0), (-90.0, 0.0), (0.0, 180.0), (10.0, -180.0), (89.9, 170.0), (-89.5, -179.9), (60.0, 180.0),
@@ -79,7 +80,7 @@ def _same(got: Any, want: Any, name: str) -> None:
     parts_g = list(got.geoms)
     assert len(parts_g) == len(parts_w), name
     assert sorted(len(p.interiors) for p in parts_g) == sorted(len(p.interiors) for p in parts_w), name
-    assert got.is_valid, (name, shapely.validation.explain_validity(got))
+    assert got.is_valid, (name, explain_validity(got))
     assert all(p.exterior.is_ccw and not any(h.is_ccw for h in p.interiors) for p in parts_g), name
     if parts_w:
         assert shapely.symmetric_difference(got, want).area <= 1e-9 * want.area, name
