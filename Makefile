@@ -131,7 +131,7 @@ duckdb-extension: $(DUCKDB_EXT)
 
 test-duckdb-extension: $(DUCKDB_EXT)
 	$(DUCKDB_PY) -m pip install --quiet duckdb-cli==$(DUCKDB_CLI_VERSION)
-	$(DUCKDB_PY) -m pytest -q tests/duckdb/test_duckdb_extension.py
+	$(DUCKDB_PY) -m pytest -q tests/duckdb/test_duckdb_extension.py tests/duckdb/test_duckdb_dissolve.py
 
 # The same tests with the extension built under AddressSanitizer and UBSan, in the CLI's binary with gcc's
 # runtimes preloaded (the Python connection test is left out: it would need them in the Python process).
@@ -141,7 +141,7 @@ test-duckdb-extension-sanitize:
 	DGGS_DUCKDB_CLI="$$($(DUCKDB_PY) -c 'import duckdb_cli, os; print(os.path.join(os.path.dirname(duckdb_cli.__file__), "duckdb"))')" \
 	DGGS_DUCKDB_CLI_PRELOAD="$$(cc -print-file-name=libasan.so) $$(cc -print-file-name=libubsan.so)" \
 	DGGS_DUCKDB_EXTENSION=build/duckdb-san/dggs.duckdb_extension \
-		$(DUCKDB_PY) -m pytest -q tests/duckdb/test_duckdb_extension.py -k "not python_load"
+		$(DUCKDB_PY) -m pytest -q tests/duckdb/test_duckdb_extension.py tests/duckdb/test_duckdb_dissolve.py -k "not python_load"
 
 # The web map in a real browser: Debian's chromium and chromium-driver (installed here if missing;
 # needs root), driven by selenium against a `dggs serve` process on 127.0.0.1. apt runs as root throughout

@@ -34,8 +34,9 @@ from __future__ import annotations
 from dggs._core import dissolve_boundary_descendants as boundary_descendants
 from dggs._core import dissolve_chain as chain
 from dggs._core import dissolve_drop_covered as drop_covered
+from dggs._core import dissolve_multi_polygon as multi_polygon
 from dggs._core import dissolve_outline_mask as outline_mask
 from dggs._core import dissolve_ring_point_bound as ring_point_bound
 from dggs._core import dissolve_ring_points as ring_points
 
-__all__ = ["boundary_descendants", "chain", "drop_covered", "outline_mask", "ring_points", "ring_point_bound"]
+__all__ = ["boundary_descendants", "chain", "drop_covered", "multi_polygon", "outline_mask", "ring_points", "ring_point_bound"]

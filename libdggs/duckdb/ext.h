@@ -155,5 +155,6 @@ void register_edges(duckdb_connection con);
 void register_fill(duckdb_connection con);
 void register_levels(duckdb_connection con);
 void register_vertex(duckdb_connection con);
+void register_dissolve(duckdb_connection con);
 
 #endif

@@ -2,6 +2,7 @@
  * the geometry a (Multi)Polygon as WKB (BLOB) or WKT (VARCHAR), in (lng, lat) degrees, longitudes in -180..180.
  * A level outside 0..28 gives NULL (as the h3 extension); a geometry that is not a (Multi)Polygon, an unknown mode
  * or coordinates out of range are errors naming them. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -166,6 +167,27 @@ static int mode_of(const char *s, uint32_t n) {
     return -1;
 }
 
+/* Most ids the first buffer of a fill is sized to from the polygon's extent (128 MiB; a fill that needs more
+ * asks for it: a second descent). */
+#define MAX_FIRST_GUESS ((int64_t)1 << 24)
+
+/* The cells at `level` the polygon's lng/lat bounding box could hold, on the sphere, and a tenth more: the first
+ * buffer's size, so that a fill runs one descent, not one to count and one to fill (BENCHMARKS.md, "The DuckDB
+ * extension"). Level l has 20 * 6 * 3^(l - 1) cells (20 at level 0) of equal area. */
+static int64_t fill_guess(const poly_t *p, int level) {
+    double lat0 = 90.0, lat1 = -90.0, lng0 = 180.0, lng1 = -180.0;
+    for (size_t i = 0; i < p->n_pts; i++) {
+        lat0 = fmin(lat0, p->pts[2 * i]), lat1 = fmax(lat1, p->pts[2 * i]);
+        lng0 = fmin(lng0, p->pts[2 * i + 1]), lng1 = fmax(lng1, p->pts[2 * i + 1]);
+    }
+    if (!(lat1 >= lat0 && lng1 >= lng0)) return 4096;
+    const double rad = 3.14159265358979323846 / 180.0;
+    double share = (lng1 - lng0) * rad * (sin(lat1 * rad) - sin(lat0 * rad)) / (4.0 * 3.14159265358979323846);
+    double cells = level == 0 ? 20.0 : 120.0 * pow(3.0, (double)(level - 1));
+    double guess = 1.1 * share * cells + 4096.0;
+    return guess > (double)MAX_FIRST_GUESS ? MAX_FIRST_GUESS : (int64_t)guess;
+}
+
 /* The cells of geometry `gs` (len bytes; WKT if `wkt`, else WKB) at `level` by `mode` and `proj` into *cells (a
  * malloc'd buffer of *cap ids, grown as needed and kept for the next call; the caller frees it), their count into
  * *count: true, or false with the message into msg (naming `name`). One descent when the buffer is large enough
@@ -180,9 +202,14 @@ static bool fill(const char *name, const char *gs, uint32_t len, int wkt, int le
                  wkt ? ": '" : "", wkt ? (int)(len > 60 ? 60 : len) : 0, gs, wkt ? "'" : "");
         return false;
     }
+    int64_t guess = fill_guess(p, level);
+    if (*cells && *cap < guess) {
+        free(*cells);
+        *cells = NULL;
+    }
     for (int attempt = 0; attempt < 2; attempt++) {
         if (!*cells) {
-            *cap = 4096;
+            *cap = guess;
             *cells = (dggs_cell *)malloc((size_t)*cap * sizeof(dggs_cell));
             if (!*cells) {
                 snprintf(msg, msg_size, "%s: out of memory", name);

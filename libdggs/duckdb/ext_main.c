@@ -11,5 +11,6 @@ DUCKDB_EXTENSION_ENTRYPOINT(duckdb_connection connection, duckdb_extension_info 
     register_fill(connection);
     register_levels(connection);
     register_vertex(connection);
+    register_dissolve(connection);
     return true;
 }

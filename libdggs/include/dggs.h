@@ -396,6 +396,27 @@ dggs_error dggs_outline_points(const dggs_cell *edge_cell, const int64_t *edge_c
                                const int64_t *starts, size_t rings, dggs_projection proj, double *latlng, int64_t size,
                                uint8_t *corner, int64_t *ends, double *scratch, size_t scratch_len);
 
+/* The whole dissolve (multipolygon.c): the outline of `cells` (n ids of any levels, in any order, duplicates and
+ * cells inside others allowed) as polygons in (lng, lat) degrees, as the Python package's dggs.cells_to_polygons
+ * draws it (the union of the cells' dggs_cell_to_polygon): cut at +-180, closed over a pole the set surrounds,
+ * shells counter-clockwise and holes clockwise, rings that touch themselves cut into simple loops. `densify` is
+ * the points added along each outline edge (0..DGGS_MAX_DENSIFY), or -1 for each edge the points its cell gets
+ * from dggs_cell_to_polygon's default (dggs_cell_edge_points, area within 1e-6). Output: the polygons' rings'
+ * points end to end into lng_lat (rows of 2 doubles, not closed), each ring's point count into ring_sizes, each
+ * polygon's ring count (its shell, then its holes) into polygon_rings. No cells give no polygon; a set covering
+ * the sphere gives one: the rectangle (-180, -90) .. (180, 90). Allocates its working memory and frees it.
+ * dggs_cells_to_multi_polygon_size: the exact counts (points, rings, polygons), by doing the work.
+ * dggs_cells_to_multi_polygon: writes them, with the counts into *num_points, *num_rings, *num_polygons; where a
+ * buffer is short, writes nothing but the counts (the sizes to call again with) and returns DGGS_E_BUFFER.
+ * Errors: DGGS_E_CELL (a non-cell), DGGS_E_DOMAIN (densify), DGGS_E_PROJECTION, DGGS_E_FAILED (coarse cells
+ * beside fine ones whose outline would take over 50 million fine cells, out of memory). */
+dggs_error dggs_cells_to_multi_polygon_size(const dggs_cell *cells, size_t n, int densify, dggs_projection proj,
+                                            int64_t *points, int64_t *rings, int64_t *polygons);
+dggs_error dggs_cells_to_multi_polygon(const dggs_cell *cells, size_t n, int densify, dggs_projection proj,
+                                       double *lng_lat, int64_t points, int64_t *ring_sizes, int64_t rings,
+                                       int64_t *polygon_rings, int64_t polygons, int64_t *num_points,
+                                       int64_t *num_rings, int64_t *num_polygons);
+
 /* ---- end dissolve ---- */
 
 

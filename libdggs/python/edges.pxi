@@ -27,6 +27,11 @@ cdef extern from "dissolve.h" nogil:
                          const int64_t *starts, int64_t nstarts, double *out, int64_t rows, uint8_t *corner,
                          int64_t *ends, double *ts, int64_t ts_len)
 
+cdef extern from "dggs.h" nogil:
+    int dggs_cells_to_multi_polygon(const uint64_t *cells, size_t n, int densify, int proj, double *lng_lat,
+                                    int64_t points, int64_t *ring_sizes, int64_t rings, int64_t *polygon_rings,
+                                    int64_t polygons, int64_t *num_points, int64_t *num_rings, int64_t *num_polygons)
+
 
 # ---- edges (index/_kernel/edges.py; ivea_edges.py for the IVEA curves) ---------------------------------------
 
@@ -280,3 +285,29 @@ def ivea_dissolve_ring_points(const uint64_t[::1] cell, const int64_t[::1] col, 
                               const int64_t[::1] starts, double[:, ::1] out, corner, int64_t[::1] ends):
     """:func:`dissolve_ring_points` on the IVEA projection."""
     _dissolve_ring_points(1, cell, col, steps, starts, out, corner, ends)
+
+
+def dissolve_multi_polygon(const uint64_t[::1] ids, int densify, int proj):
+    """The outline of ``ids`` as polygons (dggs_cells_to_multi_polygon): ``(lng_lat, ring_sizes, polygon_rings)``.
+
+    ``lng_lat`` is (points, 2), the rings end to end (not closed); ``densify`` -1 for cell_to_polygon's default.
+    Returns the core's error code instead when it fails.
+    """
+    cdef Py_ssize_t n = ids.shape[0]
+    cdef uint64_t du = 0
+    cdef int64_t np_ = 1024, nr = 16, npo = 16, gp = 0, gr = 0, gpo = 0
+    cdef int err = 5
+    cdef double[:, ::1] xy
+    cdef int64_t[::1] rs, pr
+    while err == 5:
+        pts = np.empty((max(np_, 1), 2))
+        rings = np.empty(max(nr, 1), dtype=np.int64)
+        polys = np.empty(max(npo, 1), dtype=np.int64)
+        xy, rs, pr = pts, rings, polys
+        with nogil:
+            err = dggs_cells_to_multi_polygon(&ids[0] if n else &du, n, densify, proj, &xy[0, 0], xy.shape[0],
+                                              &rs[0], rs.shape[0], &pr[0], pr.shape[0], &gp, &gr, &gpo)
+        np_, nr, npo = gp, gr, gpo
+    if err:
+        return err
+    return pts[:gp], rings[:gr], polys[:gpo]
