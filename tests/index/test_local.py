@@ -220,6 +220,14 @@ def _unfolded_centroids(anchor: str, cells_: list[str]) -> np.ndarray:
 VERTEX_AND_EDGE_POINTS = special_points()[6:]  # the 12 icosahedron vertices, then the face-edge midpoints
 
 
+def _anchor(grid, point, offset, level, as_int):
+    """The anchor of a drawn example: the issue's two (point (0, 0)) or the cell at point + offset on ``grid``."""
+    if point == (0.0, 0.0):  # the two anchors of the issue
+        return "K110121" if not as_int else "E222202"
+    lat = float(np.clip(point[0] + offset[0], -90, 90))
+    return grid.latlng_to_cell(lat, point[1] + offset[1], level)
+
+
 @settings(max_examples=examples(60), deadline=None)
 @given(
     point=st.sampled_from(VERTEX_AND_EDGE_POINTS),
@@ -241,11 +249,7 @@ def test_local_ij_is_one_lattice_wherever_it_answers(point, offset, level, k, as
     within a face, so a fit to geodetic centres leaves a residual growing with the neighbourhood, 0.1-0.9 units at
     radius 5 at level 6; docs/grid.md, "Local coordinates".)
     """
-    if point == (0.0, 0.0):  # the two anchors of the issue
-        anchor = "K110121" if not as_int else "E222202"
-    else:
-        lat = float(np.clip(point[0] + offset[0], -90, 90))
-        anchor = dggs.latlng_to_cell(lat, point[1] + offset[1], level)
+    anchor = _anchor(dggs.Grid("ISEA"), point, offset, level, as_int)
     disk = dggs.grid_disk(anchor, k)
     a = dggs.str_to_int(anchor) if as_int else anchor
     answered, ij = [], []
@@ -295,11 +299,7 @@ def test_local_ij_fits_the_sphere_wherever_it_answers(point, offset, level, k, a
     import pyproj
 
     grid = dggs.Grid(projection)
-    if point == (0.0, 0.0):  # the two anchors of the issue
-        anchor = "K110121" if not as_int else "E222202"
-    else:
-        lat = float(np.clip(point[0] + offset[0], -90, 90))
-        anchor = grid.latlng_to_cell(lat, point[1] + offset[1], level)
+    anchor = _anchor(grid, point, offset, level, as_int)
     disk = dggs.grid_disk(anchor, k)
     a = dggs.str_to_int(anchor) if as_int else anchor
     answered, ij = [], []

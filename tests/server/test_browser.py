@@ -301,9 +301,9 @@ RAMP = ["#ffffb2", "#fed976", "#feb24c", "#fd8d3c", "#fc4e2a", "#e31a1c", "#b100
 CELL_OPACITY = 0.8  # app.js's cells' fill-opacity
 
 
-def pixels_at(driver: Any, points: list[tuple[float, float]]) -> np.ndarray:
-    """The RGB pixels of a screenshot at page points (x, y), (n, 3)."""
-    script = """
+#: An async script's frame: the screenshot (arguments[0], base64 PNG) decoded into `d` (RGBA bytes) and `img`, then
+#: the body given with `%`, which calls `done`; arguments[1] is the body's own (the points, or null).
+_DECODED_SCREENSHOT = """
         const [png, points, done] = arguments;
         const img = new Image();
         img.onload = () => {
@@ -312,12 +312,18 @@ def pixels_at(driver: Any, points: list[tuple[float, float]]) -> np.ndarray:
           const g = c.getContext('2d', {willReadFrequently: true});
           g.drawImage(img, 0, 0);
           const d = g.getImageData(0, 0, img.width, img.height).data;
-          done(points.map(([x, y]) => { const i = 4 * (Math.round(y) * img.width + Math.round(x));
-                                         return [d[i], d[i + 1], d[i + 2]]; }));
+          %s
         };
         img.onerror = () => done(null);
         img.src = 'data:image/png;base64,' + png;
-    """
+"""
+
+
+def pixels_at(driver: Any, points: list[tuple[float, float]]) -> np.ndarray:
+    """The RGB pixels of a screenshot at page points (x, y), (n, 3)."""
+    script = _DECODED_SCREENSHOT % """
+          done(points.map(([x, y]) => { const i = 4 * (Math.round(y) * img.width + Math.round(x));
+                                         return [d[i], d[i + 1], d[i + 2]]; }));"""
     result = driver.execute_async_script(script, driver.get_screenshot_as_base64(), points)
     assert result is not None, "the screenshot did not decode"
     return np.array(result, float).reshape(-1, 3)
@@ -746,24 +752,12 @@ def test_cells_are_drawn_from_ids_by_default(page: Any, server: str) -> None:
 
 def cell_mask(driver: Any) -> np.ndarray:
     """Which pixels of a screenshot of the page show a cell (is_cell_colour's test, made in the page), (H, W)."""
-    script = """
-        const [png, done] = arguments;
-        const img = new Image();
-        img.onload = () => {
-          const c = document.createElement('canvas');
-          c.width = img.width; c.height = img.height;
-          const g = c.getContext('2d', {willReadFrequently: true});
-          g.drawImage(img, 0, 0);
-          const d = g.getImageData(0, 0, img.width, img.height).data;
+    script = _DECODED_SCREENSHOT % """
           let bits = '';
           for (let i = 0; i < d.length; i += 4) bits += d[i] > 80 && d[i] > d[i + 2] + 30 ? '1' : '0';
-          done([img.width, img.height, bits]);
-        };
-        img.onerror = () => done(null);
-        img.src = 'data:image/png;base64,' + png;
-    """
+          done([img.width, img.height, bits]);"""
     driver.execute_script("document.activeElement.blur()")
-    got = driver.execute_async_script(script, driver.get_screenshot_as_base64())
+    got = driver.execute_async_script(script, driver.get_screenshot_as_base64(), None)
     assert got is not None, "the screenshot did not decode"
     return (np.frombuffer(got[2].encode(), np.uint8) == ord("1")).reshape(got[1], got[0])
 

@@ -248,6 +248,15 @@ export async function* cellChunks(core, ids, values, { densify, projection }) {
 
 // The layer. setCells() builds the buffers (resolving once all are on the GPU), setClasses() recolours,
 // pick() finds the cell at a point, select() outlines one.
+
+// The bound vertex buffer's layout, 12 bytes a vertex: attribute 0 the (lng, lat) float32 pair, attribute 1 the
+// cell's value (one vertex array for the fans, one for the corners' triangles, over the same buffer).
+function vertexLayout(gl) {
+  gl.enableVertexAttribArray(0);
+  gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 12, 0);
+  gl.enableVertexAttribArray(1);
+  gl.vertexAttribPointer(1, 1, gl.FLOAT, false, 12, 8);
+}
 export class CellsLayer {
   // onError(err): called once if the layer cannot draw (its shaders do not compile or link here); it draws nothing
   // after that.
@@ -329,10 +338,7 @@ export class CellsLayer {
     const vbo = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
     gl.bufferData(gl.ARRAY_BUFFER, chunk.lnglat, gl.STATIC_DRAW);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 12, 0);
-    gl.enableVertexAttribArray(1);
-    gl.vertexAttribPointer(1, 1, gl.FLOAT, false, 12, 8);
+    vertexLayout(gl);
     const ibo = gl.createBuffer();
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, chunk.index, gl.STATIC_DRAW);
@@ -343,10 +349,7 @@ export class CellsLayer {
       entry.cornerVao = gl.createVertexArray();
       gl.bindVertexArray(entry.cornerVao);
       gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
-      gl.enableVertexAttribArray(0);
-      gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 12, 0);
-      gl.enableVertexAttribArray(1);
-      gl.vertexAttribPointer(1, 1, gl.FLOAT, false, 12, 8);
+      vertexLayout(gl);
       const cbo = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, cbo);
       gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, chunk.corners, gl.STATIC_DRAW);
