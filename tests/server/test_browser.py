@@ -258,20 +258,10 @@ class Screenshot:
 
     def region(self, x0: int, y0: int, width: int, height: int) -> np.ndarray:
         """The (height, width, 3) RGB pixels of a rectangle, in page px (the pixel ratio is 1)."""
-        script = """
-            const [png, x, y, w, h, done] = arguments;
-            const img = new Image();
-            img.onload = () => {
-              const c = document.createElement('canvas');
-              c.width = img.width; c.height = img.height;
-              const g = c.getContext('2d', {willReadFrequently: true});
-              g.drawImage(img, 0, 0);
-              done([img.width, img.height, Array.from(g.getImageData(x, y, w, h).data)]);
-            };
-            img.onerror = () => done(null);
-            img.src = 'data:image/png;base64,' + png;
-        """
-        result = self.driver.execute_async_script(script, self.png, x0, y0, width, height)
+        script = _DECODED_SCREENSHOT % """
+          const [x, y, w, h] = points;
+          done([img.width, img.height, Array.from(g.getImageData(x, y, w, h).data)]);"""
+        result = self.driver.execute_async_script(script, self.png, [x0, y0, width, height])
         assert result is not None, "the screenshot did not decode"
         self.size = (result[0], result[1])
         return np.array(result[2], np.uint8).reshape(height, width, 4)[:, :, :3]
@@ -302,7 +292,7 @@ CELL_OPACITY = 0.8  # app.js's cells' fill-opacity
 
 
 #: An async script's frame: the screenshot (arguments[0], base64 PNG) decoded into `d` (RGBA bytes) and `img`, then
-#: the body given with `%`, which calls `done`; arguments[1] is the body's own (the points, or null).
+#: the body given with `%`, which calls `done` (`g` is the canvas's context); arguments[1] (`points`) is the body's own.
 _DECODED_SCREENSHOT = """
         const [png, points, done] = arguments;
         const img = new Image();
