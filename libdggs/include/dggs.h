@@ -593,7 +593,7 @@ int64_t dggs_latlng_pieces_work_words(int64_t rows, int64_t cols);
  * order, the cells depth first through the hierarchy). Resuming as dggs_raster_pieces (*resume counts cells).
  * DGGS_E_LEVEL, DGGS_E_DOMAIN (rows or cols < 1, dlng <= 0 or columns past 360, tol <= 0, latitudes not strictly
  * monotonic), DGGS_E_LATLNG, DGGS_E_BUFFER, DGGS_E_FAILED (a cell edge needing more than 4096 chords: a cell far
- * coarser than the pixels; cut such grids with dggs_raster_pieces). */
+ * coarser than the pixels; or a cell edge passing through a pole; cut such grids with dggs_raster_pieces). */
 dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges, int64_t rows, int64_t cols,
                               const uint8_t *valid, int level, double tol, dggs_pieces *out, void *work,
                               int64_t work_words, int64_t *resume, int64_t *need);

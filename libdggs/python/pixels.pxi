@@ -218,5 +218,6 @@ def pixels_latlng_pieces(double west, double dlng, lat_edges, valid, int level, 
         raise ValueError("latlng_pieces needs rows, cols >= 1, dlng > 0 (360 degrees at most in all), tol > 0 and "
                          "latitudes strictly monotonic within -90..90")
     if err:
-        raise RuntimeError("latlng_pieces: a cell edge needs more than 4096 chords (cells far coarser than pixels)")
+        raise RuntimeError("latlng_pieces: a cell edge needs more than 4096 chords (cells far coarser than pixels) or "
+                           "passes through a pole")
     return p[:out.n], c[:out.n], a[:out.n]

@@ -227,6 +227,14 @@ static int64_t cell_ring(grid_t *g, uint64_t cell, double *orient) {
     for (int e = 0; e < 3; e++) {
         if (!at_pole[e] && !at_pole[(e + 1) % 3]) g->rk[start[e]] = chords[e];
     }
+    /* A pole inside an edge (an edge point, not a corner, mapped onto it: coarse cells, whose edges pass through a
+     * pole): which way the ring runs along the pole's line is not settled by its neighbours' longitudes (half a turn
+     * apart). Not cut here: -1 sends the block to the pixel-by-pixel cut (dggs/raster/pieces.py). */
+    for (int64_t j = 0; j < n; j++) {
+        if (isnan(g->rx[j]) && !(j == start[0] && at_pole[0]) && !(j == start[1] && at_pole[1]) &&
+            !(j == start[2] && at_pole[2]))
+            return -1;
+    }
     for (int e = 2; e >= 0; e--) { /* a corner at a pole: a piece of the line q = +-1, from the longitude the ring
                                     * comes in at to the one it leaves at (its neighbours' along the edges) */
         if (!at_pole[e]) continue;

@@ -1472,6 +1472,15 @@ static void latlng(void) {
     CHECK(dggs_latlng_pieces(-1.0, 0.5, lat, ROWS, COLS, valid, 6, 1e-5, &out, work, words - 1, &resume, &need) ==
           DGGS_E_BUFFER);
     CHECK(dggs_latlng_pieces_work_words(0, COLS) == 0);
+    /* level 0: an edge runs through the pole (an edge point, not a corner, on it): refused, not read out of bounds
+     * (it was: a NaN longitude made a column index; ASan caught it), as is a 0.01-degree grid at 60N */
+    resume = 0, out.n = 0;
+    CHECK(dggs_latlng_pieces(-1.0, 0.5, lat, ROWS, COLS, valid, 0, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_FAILED);
+    const double fine[ROWS + 1] = {60.0, 59.99, 59.98, 59.97};
+    resume = 0, out.n = 0;
+    CHECK(dggs_latlng_pieces(0.0, 0.01, fine, ROWS, COLS, valid, 0, 1e-5, &out, work, words, &resume, &need) ==
+          DGGS_E_FAILED);
 }
 
 int main(void) {

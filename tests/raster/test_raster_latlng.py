@@ -19,7 +19,7 @@ from collections import defaultdict
 
 import numpy as np
 import pytest
-from hypothesis import example, given, settings
+from hypothesis import example, given, reject, settings
 from hypothesis import strategies as st
 
 import dggs
@@ -68,7 +68,11 @@ def check_against_pixel_cut(top: float, left: float, d: float, rows: int, cols: 
     top = min(90.0, max(-90.0 + rows * d, top))
     lat_edges = np.clip(top - d * np.arange(rows + 1), -90.0, 90.0)
     valid = np.ones((rows, cols), bool)
-    pixel, cell, area = latlng_pieces(left, d, lat_edges, valid, level, TOLERANCE)
+    try:
+        pixel, cell, area = latlng_pieces(left, d, lat_edges, valid, level, TOLERANCE)
+    except RuntimeError as err:  # refused (its documented limits): the raster path cuts such blocks pixel by pixel
+        assert "4096 chords" in str(err)
+        reject()
     assert (area > 0).all() and (dggs.get_level(cell) == level).all()
     k = 48
     old_pixel, old_cell, old_area, old_total = pixel_pieces(*pixel_grid(top, left, d, rows, cols, k), k, valid, level)
@@ -119,6 +123,30 @@ def test_a_global_raster_covers_every_cell_to_its_area(west):
     assert np.max(np.abs(sums / dggs.cell_area(4, "m^2") - 1)) < 1e-6
     # a pixel meets a cell at most once, even where a cell round a pole meets it from both ends of its turn
     assert np.unique(pixel.astype(np.int64) * cells.size + inv).size == pixel.size
+
+
+@pytest.mark.parametrize("top, d, level", [(90.0, 1.0, 0), (60.0, 0.01, 0), (68.0, 0.01, 4), (90.0, 0.1, 12)])
+def test_grids_the_cut_refuses_are_cut_pixel_by_pixel(tmp_path, top, d, level):
+    """Level 0 cells (an edge through a pole: the cut read a NaN longitude out of bounds and crashed) and cells far
+    coarser than the pixels near a pole (more than 4096 chords an edge): the core refuses, and raster_to_cells
+    answers through the pixel-by-pixel cut: every pixel shared out in full, and the shared areas add up to the
+    pixels' closed-form areas."""
+    from rasterio.transform import from_origin
+
+    from dggs.raster import raster_to_cells
+
+    from .helpers import write
+
+    rows, cols = 3, 4
+    lat_edges = np.clip(top - d * np.arange(rows + 1), -90.0, 90.0)
+    with pytest.raises(RuntimeError, match="4096 chords"):
+        latlng_pieces(0.0, d, lat_edges, np.ones((rows, cols), bool), level, TOLERANCE)
+    path = write(tmp_path / "r.tif", np.ones((rows, cols)), crs="EPSG:4326", transform=from_origin(0.0, top, d, d))
+    shares = raster_to_cells(path, level, mode="sum", as_str=True)  # each pixel's 1 shared out by area
+    assert abs(shares["value"].sum() / (rows * cols) - 1) < 1e-5, shares
+    areas = raster_to_cells(path, level, mode="sum", density=True, as_str=True)  # 1 a m^2: the shared areas
+    pixels = sum(band_area(lat_edges[r], lat_edges[r + 1], d) for r in range(rows)) * cols
+    assert abs(areas["value"].sum() / pixels - 1) < 1e-5, (areas["value"].sum(), pixels)
 
 
 def test_invalid_pixels_get_no_pieces_and_bad_grids_are_refused():
