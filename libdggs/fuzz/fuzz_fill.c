@@ -10,35 +10,7 @@
 #include <string.h>
 
 #include "dggs.h"
-
-#define REQUIRE(cond)         \
-    do {                      \
-        if (!(cond)) abort(); \
-    } while (0)
-
-typedef struct {
-    const uint8_t *d;
-    size_t n;
-} reader;
-
-static unsigned take(reader *r) {
-    if (!r->n) return 0;
-    r->n--;
-    return *r->d++;
-}
-
-static double coordinate(reader *r, double lo, double hi) {
-    unsigned kind = take(r);
-    if (kind == 255 && r->n >= 8) { /* a raw double */
-        double v;
-        memcpy(&v, r->d, 8);
-        r->d += 8;
-        r->n -= 8;
-        return v;
-    }
-    unsigned v = take(r) | (take(r) << 8);
-    return lo + (hi - lo) * (double)v / 65535.0;
-}
+#include "reader.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     reader r = {data, size};
@@ -50,7 +22,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     size_t k = 0;
     for (int64_t i = 0; i < rings; i++) {
         sizes[i] = 3 + (int64_t)(take(&r) % 6);
-        double clat = coordinate(&r, -90.0, 90.0), clng = coordinate(&r, -180.0, 180.0);
+        double clat = number(&r, -90.0, 90.0), clng = number(&r, -180.0, 180.0);
         double radius = 0.01 + 30.0 * (double)take(&r) / 255.0;
         for (int64_t j = 0; j < sizes[i]; j++) {
             double a = 6.283185307179586 * (double)j / (double)sizes[i] + 0.3 * (double)take(&r) / 255.0;

@@ -12,36 +12,7 @@
 #include <string.h>
 
 #include "dggs.h"
-
-#define REQUIRE(cond)         \
-    do {                      \
-        if (!(cond)) abort(); \
-    } while (0)
-
-typedef struct {
-    const uint8_t *d;
-    size_t n;
-} reader;
-
-static unsigned take(reader *r) {
-    if (!r->n) return 0;
-    r->n--;
-    return *r->d++;
-}
-
-/* A number from lo to hi (two bytes), or now and then the raw double that follows. */
-static double number(reader *r, double lo, double hi) {
-    unsigned kind = take(r);
-    if (kind == 255 && r->n >= 8) {
-        double v;
-        memcpy(&v, r->d, 8);
-        r->d += 8;
-        r->n -= 8;
-        return v;
-    }
-    unsigned v = take(r) | (take(r) << 8);
-    return lo + (hi - lo) * (double)v / 65535.0;
-}
+#include "reader.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     reader r = {data, size};
