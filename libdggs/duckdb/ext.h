@@ -138,6 +138,15 @@ void list_empty(list_out_t *l, idx_t row);
  * are cell ids, 0 if one is not (*out is then freed and NULL), -1 if malloc failed. */
 int list_ids_get(const col_t *c, id_kind kind, idx_t row, dggs_cell **out, idx_t *n);
 
+/* Geometry writers (ext_common.c) for the polygons of ext_cells.c and the dissolve of ext_dissolve.c; each
+ * returns the length written so far. Points are (lng, lat) pairs, a ring's n points not closed: the writers close
+ * it. WKB is little-endian (OGC Simple Features' well-known binary): wkb_head writes a geometry's byte order and
+ * type (3 Polygon, 6 MultiPolygon) and its count of parts (rings, or polygons); wkb_ring a ring's point count and
+ * points. wkt_ring writes "(x y, ..., x0 y0)", prefixed by ", " unless it is the first. */
+size_t wkb_head(uint8_t *b, size_t at, uint32_t type, uint32_t count);
+size_t wkb_ring(uint8_t *b, size_t at, const double *pts, size_t n);
+size_t wkt_ring(char *t, size_t at, const double *pts, size_t n, bool first);
+
 /* Registration (ext_common.c): one overload per id kind unless per_kind is 0 (then kind is `kind`). Parameter and
  * return codes: I an id, L a list of ids, E a list of ids (same kind) as output, W a list of VARCHAR, D DOUBLE,
  * B BIGINT, N INTEGER, V VARCHAR, X BLOB, G GEOMETRY (WKB, DuckDB 1.5 on: geometry_type_exists), O BOOLEAN,

@@ -189,36 +189,19 @@ static bool shape_room(shape_buf *b, int densify) {
 static size_t polygon_wkt(const double *pts, const size_t *sizes, int parts, char *text) {
     size_t len = (size_t)sprintf(text, parts == 1 ? "POLYGON (" : "MULTIPOLYGON (");
     for (int p = 0; p < parts; p++) {
-        len += (size_t)sprintf(text + len, "%s%s", p ? ", " : "", parts == 1 ? "(" : "((");
-        for (size_t i = 0; i <= sizes[p]; i++) {
-            const double *q = pts + 2 * (i % sizes[p]);
-            len += (size_t)sprintf(text + len, "%s%.17g %.17g", i ? ", " : "", q[0], q[1]);
-        }
-        len += (size_t)sprintf(text + len, parts == 1 ? ")" : "))");
+        if (parts > 1) len += (size_t)sprintf(text + len, p ? ", (" : "(");
+        len = wkt_ring(text, len, pts, sizes[p], true);
+        if (parts > 1) len += (size_t)sprintf(text + len, ")");
         pts += 2 * sizes[p];
     }
     return len + (size_t)sprintf(text + len, ")");
 }
 
-/* Little-endian WKB: a Polygon (type 3) of one ring, or a MultiPolygon (6) of such Polygons; its length. */
-static size_t put_u32(uint8_t *b, size_t at, uint32_t v) {
-    memcpy(b + at, &v, 4);
-    return at + 4;
-}
-
+/* WKB: a Polygon (type 3) of one ring, or a MultiPolygon (6) of such Polygons; its length. */
 static size_t polygon_wkb(const double *pts, const size_t *sizes, int parts, uint8_t *b) {
-    size_t len = 0;
-    if (parts > 1) {
-        b[len++] = 1;
-        len = put_u32(b, len, 6);
-        len = put_u32(b, len, (uint32_t)parts);
-    }
+    size_t len = parts > 1 ? wkb_head(b, 0, 6, (uint32_t)parts) : 0;
     for (int p = 0; p < parts; p++) {
-        b[len++] = 1;
-        len = put_u32(b, len, 3);
-        len = put_u32(b, len, 1);
-        len = put_u32(b, len, (uint32_t)sizes[p] + 1);
-        for (size_t i = 0; i <= sizes[p]; i++, len += 16) memcpy(b + len, pts + 2 * (i % sizes[p]), 16);
+        len = wkb_ring(b, wkb_head(b, len, 3, 1), pts, sizes[p]);
         pts += 2 * sizes[p];
     }
     return len;

@@ -177,3 +177,28 @@ void reg(duckdb_connection con, const char *name, const char *params, char ret, 
     duckdb_register_scalar_function_set(con, set);
     duckdb_destroy_scalar_function_set(&set);
 }
+
+static size_t put_u32(uint8_t *b, size_t at, uint32_t v) {
+    memcpy(b + at, &v, 4);
+    return at + 4;
+}
+
+size_t wkb_head(uint8_t *b, size_t at, uint32_t type, uint32_t count) {
+    b[at++] = 1; /* little-endian (NDR) */
+    return put_u32(b, put_u32(b, at, type), count);
+}
+
+size_t wkb_ring(uint8_t *b, size_t at, const double *pts, size_t n) {
+    at = put_u32(b, at, (uint32_t)n + 1);
+    for (size_t i = 0; i <= n; i++, at += 16) memcpy(b + at, pts + 2 * (i % n), 16);
+    return at;
+}
+
+size_t wkt_ring(char *t, size_t at, const double *pts, size_t n, bool first) {
+    at += (size_t)sprintf(t + at, first ? "(" : ", (");
+    for (size_t i = 0; i <= n; i++) {
+        const double *xy = pts + 2 * (i % n);
+        at += (size_t)sprintf(t + at, "%s%.17g %.17g", i ? ", " : "", xy[0], xy[1]);
+    }
+    return at + (size_t)sprintf(t + at, ")");
+}

@@ -48,12 +48,7 @@ static bool grow(mp_buf *b, int64_t np, int64_t nr, int64_t npo) {
     return true;
 }
 
-static size_t put_u32(uint8_t *b, size_t at, uint32_t v) {
-    memcpy(b + at, &v, 4);
-    return at + 4;
-}
-
-/* The MULTIPOLYGON's WKT (variant 1) or little-endian WKB (2) into b->text; its length. */
+/* The MULTIPOLYGON's WKT (variant 1) or WKB (2) into b->text; its length. */
 static size_t write_multi(const mp_buf *b, int64_t npolys, int variant) {
     const double *p = b->pts;
     const int64_t *ring = b->rings;
@@ -62,14 +57,9 @@ static size_t write_multi(const mp_buf *b, int64_t npolys, int variant) {
         if (npolys == 0) return (size_t)sprintf(t, "MULTIPOLYGON EMPTY");
         size_t len = (size_t)sprintf(t, "MULTIPOLYGON (");
         for (int64_t q = 0; q < npolys; q++) {
-            len += (size_t)sprintf(t + len, "%s(", q ? ", " : "");
+            len += (size_t)sprintf(t + len, q ? ", (" : "(");
             for (int64_t k = 0; k < b->polys[q]; k++, ring++) {
-                len += (size_t)sprintf(t + len, "%s(", k ? ", " : "");
-                for (int64_t i = 0; i <= *ring; i++) {
-                    const double *xy = p + 2 * (i % *ring);
-                    len += (size_t)sprintf(t + len, "%s%.17g %.17g", i ? ", " : "", xy[0], xy[1]);
-                }
-                len += (size_t)sprintf(t + len, ")");
+                len = wkt_ring(t, len, p, (size_t)*ring, k == 0);
                 p += 2 * *ring;
             }
             len += (size_t)sprintf(t + len, ")");
@@ -77,17 +67,11 @@ static size_t write_multi(const mp_buf *b, int64_t npolys, int variant) {
         return len + (size_t)sprintf(t + len, ")");
     }
     uint8_t *w = (uint8_t *)b->text;
-    size_t len = 0;
-    w[len++] = 1;
-    len = put_u32(w, len, 6);
-    len = put_u32(w, len, (uint32_t)npolys);
+    size_t len = wkb_head(w, 0, 6, (uint32_t)npolys);
     for (int64_t q = 0; q < npolys; q++) {
-        w[len++] = 1;
-        len = put_u32(w, len, 3);
-        len = put_u32(w, len, (uint32_t)b->polys[q]);
+        len = wkb_head(w, len, 3, (uint32_t)b->polys[q]);
         for (int64_t k = 0; k < b->polys[q]; k++, ring++) {
-            len = put_u32(w, len, (uint32_t)*ring + 1);
-            for (int64_t i = 0; i <= *ring; i++, len += 16) memcpy(w + len, p + 2 * (i % *ring), 16);
+            len = wkb_ring(w, len, p, (size_t)*ring);
             p += 2 * *ring;
         }
     }
