@@ -117,7 +117,9 @@ static void emit(plane_t *g, uint64_t cell, double orient, const uint8_t *valid,
             int64_t pixel = (g->r0 + r) * g->cols + g->c0 + c;
             if (!(area > 0.0) || !valid[pixel]) continue;
             double mu = orient * (g->px[at] + g->wx[at]), mv = orient * (g->py[at] + 0.5 * g->wa[at]);
-            put(out, pixel, cell, area, mu / area, mv / area);
+            /* the centroid lies in the pixel: a sliver of rounding's size (1e-20 of a pixel) has moments of no
+             * digits, put back inside */
+            put(out, pixel, cell, area, fmin(fmax(mu / area, 0.0), 1.0), fmin(fmax(mv / area, 0.0), 1.0));
         }
     }
 }
