@@ -69,6 +69,15 @@ static void squares_and_triangles(void) {
     CHECK(cut(&p, dx, dy, four, &c7, 1, 2, 2, all, CAP) == DGGS_OK);
     CHECK(p.out.n == 4);
     for (int64_t k = 0; k < 4; k++) CHECK(NEAR(area_of(&p, k, 7, &at), 0.5));
+    /* a triangle inside pixel (1, 1) of a 3 x 3 grid: its area (half the cross product) and centroid (the mean of
+     * its corners, less the pixel's corner), in both orientations */
+    const double ix[3] = {1.2, 1.8, 1.4}, iy[3] = {1.2, 1.3, 1.9}, jx[3] = {1.4, 1.8, 1.2}, jy[3] = {1.9, 1.3, 1.2};
+    const double half_cross = 0.5 * ((1.8 - 1.2) * (1.9 - 1.2) - (1.4 - 1.2) * (1.3 - 1.2));
+    for (int turn = 0; turn < 2; turn++) {
+        CHECK(cut(&p, turn ? jx : ix, turn ? jy : iy, three, &c7, 1, 3, 3, all, CAP) == DGGS_OK);
+        CHECK(p.out.n == 1 && p.pixel[0] == 4 && NEAR(p.area[0], half_cross));
+        CHECK(NEAR(p.cu[0], (0.2 + 0.8 + 0.4) / 3.0) && NEAR(p.cv[0], (0.2 + 0.3 + 0.9) / 3.0));
+    }
     /* no piece where a pixel has no data */
     const uint8_t some[4] = {1, 0, 1, 1};
     CHECK(cut(&p, dx, dy, four, &c7, 1, 2, 2, some, CAP) == DGGS_OK);

@@ -176,3 +176,26 @@ def test_coverage_agrees_with_exactextract_in_equal_area_crss(tmp_path):
                 seen.add((int(p), c))
                 assert abs(share.get((int(p), c), 0.0) - f) < 1e-4, (crs, int(p), dggs.int_to_str(c), f)
         assert all(v < 1e-4 for k, v in share.items() if k not in seen)
+
+
+def test_a_block_missing_a_cell_goes_to_the_pixel_cut(monkeypatch):
+    """A cell the search missed leaves pixels short: the plane cut refuses the block, block_pieces cuts it pixel by
+    pixel (the same pieces as the pixel cut's, to the bit)."""
+    import dggs.raster.plane as plane
+    from dggs.raster.pieces import block_pieces
+
+    crs, t, level = CASES["utm 33N at 54N"]
+    src, tr = SimpleNamespace(transform=t), transformer(crs)
+    block = Block(0, 0, np.zeros((1, 7, 8)), np.ones((7, 8), bool))
+    lng, lat = tr.transform(t.c + t.a * 4, t.f + t.e * 3.5)
+    middle = dggs.latlng_to_cell(lat, lng, level, as_int=True)
+    found = plane._candidates
+
+    def without_middle(*args):  # the candidates may be of a coarser level: leave out the one holding the middle
+        ids = found(*args)
+        return ids[ids != dggs.cell_to_parent(middle, int(dggs.get_level(ids[:1])[0]))]
+
+    monkeypatch.setattr(plane, "_candidates", without_middle)
+    assert plane_block_pieces(src, tr, block, level) is None
+    got, want = block_pieces(src, tr, block, level), pixel_block_pieces(src, tr, block, level)
+    assert all(np.array_equal(a, b) for a, b in zip(got[:3], want[:3], strict=True))
