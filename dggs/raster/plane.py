@@ -67,6 +67,8 @@ MOST_CHORDS = 4096
 #: How far a valid pixel's pieces may add up from the whole pixel (planar, a fraction of it) before the block is
 #: refused: a shared cell edge is one polyline on both sides, so this is rounding; a missed cell is far more.
 COVER_TOLERANCE = 1e-7
+#: Pixels from the block a ring's point may lie (the core takes 1e15; a point farther is a CRS's blow-up).
+_FARTHEST = 1e12
 #: Degree of the polynomial ``w`` is fitted by, and the lattice it is sampled on (and checked between).
 _DEGREE = 4
 _LATTICE = 9
@@ -289,7 +291,7 @@ def plane_block_pieces(src: RasterSource, transformer: Any, block: Block, level:
     if chords > MOST_CHORDS:
         return None
     col, row = _rings(transformer, t, block, ids, chords, period)
-    if not (np.isfinite(col).all() and np.isfinite(row).all()):
+    if not ((np.abs(col) < _FARTHEST).all() and (np.abs(row) < _FARTHEST).all()):  # NaN too
         return None
     n = col.shape[1]
     pixel, cell, area, cu, cv = plane_pieces(col.ravel(), row.ravel(), np.arange(ids.shape[0] + 1) * n, ids,

@@ -613,6 +613,8 @@ typedef struct {
     int64_t n;
 } dggs_plane_pieces_out;
 
+/* The largest coordinate (pixels) dggs_plane_pieces takes: products of two stay far from overflow. */
+#define DGGS_PLANE_MAX_COORD 1e15
 /* 8-byte words of scratch (`work`) dggs_plane_pieces needs for a rows x cols grid (0 for an empty grid). */
 int64_t dggs_plane_pieces_work_words(int64_t rows, int64_t cols);
 /* The pixels of a rows x cols grid each ring meets, the area they share and its centroid: ring k (of n_rings,
@@ -623,8 +625,8 @@ int64_t dggs_plane_pieces_work_words(int64_t rows, int64_t cols);
  * raster in a projected CRS, its cells' edges densified and taken into the CRS by the caller). valid: rows x cols
  * bytes (0: no pieces). The pieces go to `out` ring by ring (a ring's in pixel order). Resuming as
  * dggs_raster_pieces (*resume counts rings). Errors: DGGS_E_DOMAIN (rows or cols < 1, ring_start decreasing, a
- * point not finite), DGGS_E_BUFFER (work smaller than dggs_plane_pieces_work_words, or the pieces outgrew
- * out->cap: *need says the room needed, *resume the ring to go on from). */
+ * point not finite or past DGGS_PLANE_MAX_COORD), DGGS_E_BUFFER (work smaller than dggs_plane_pieces_work_words,
+ * or the pieces outgrew out->cap: *need says the room needed, *resume the ring to go on from). */
 dggs_error dggs_plane_pieces(const double *x, const double *y, const int64_t *ring_start, const uint64_t *cells,
                              int64_t n_rings, int64_t rows, int64_t cols, const uint8_t *valid,
                              dggs_plane_pieces_out *out, void *work, int64_t work_words, int64_t *resume,

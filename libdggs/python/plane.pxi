@@ -63,5 +63,5 @@ def pixels_plane_pieces(x, y, ring_start, cells, valid):
             g[:out.n] = a[:out.n]
         arrays = grown
     if err:
-        raise ValueError("plane_pieces needs rows, cols >= 1, ring_start increasing and finite points")
+        raise ValueError("plane_pieces needs rows, cols >= 1, ring_start increasing and finite points within 1e15")
     return tuple(a[:out.n] for a in arrays)

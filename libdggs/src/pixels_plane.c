@@ -139,7 +139,7 @@ dggs_error dggs_plane_pieces(const double *x, const double *y, const int64_t *ri
         if (ring_start[k] < 0 || ring_start[k + 1] < ring_start[k]) return DGGS_E_DOMAIN;
     }
     for (int64_t j = ring_start[0]; j < ring_start[n_rings]; j++) {
-        if (!isfinite(x[j]) || !isfinite(y[j])) return DGGS_E_DOMAIN;
+        if (!(fabs(x[j]) <= DGGS_PLANE_MAX_COORD) || !(fabs(y[j]) <= DGGS_PLANE_MAX_COORD)) return DGGS_E_DOMAIN;
     }
     double *w = (double *)work;
     plane_t g = {0};
