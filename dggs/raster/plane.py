@@ -33,7 +33,8 @@ cells:
 
 The path is refused (``None``: the caller cuts pixel by pixel) where a rule
 does not hold, or where it does not pay: cells smaller than
-:data:`MIN_CELL_PIXELS` pixels, a rotated grid, points the CRS cannot take, ``w`` not fitted
+:data:`MIN_CELL_PIXELS` pixels, a rotated grid, a geographic CRS (degrees
+of another datum than WGS84's), points the CRS cannot take, ``w`` not fitted
 within a tenth of the tolerance or bending more than the tolerance over a
 pixel, an edge wanting more than 4,096 chords, or any valid pixel whose
 pieces do not add up to it (cells the sample missed, a cell torn by the CRS's
@@ -250,6 +251,8 @@ def plane_block_pieces(src: RasterSource, transformer: Any, block: Block, level:
     t = src.transform
     rows, cols = block.shape
     if transformer is None or t.b != 0.0 or t.d != 0.0 or t.a == 0.0 or t.e == 0.0 or not block.valid.any():
+        return None
+    if transformer.source_crs is None or transformer.source_crs.is_geographic:  # degrees of another datum
         return None
     unit, period = _crs_facts(transformer)
     if period is not None and abs(t.a) * cols >= 0.5 * period:

@@ -227,3 +227,14 @@ def test_raster_to_cells_takes_the_plane_cut(tmp_path, monkeypatch):
     assert np.array_equal(mean["cell_id"], old["cell_id"])
     assert np.allclose(mean["value"], old["value"], rtol=0, atol=2e-5 * 99)
     assert np.allclose(mean["coverage"], old["coverage"], rtol=0, atol=2e-5)
+
+
+def test_rotated_and_geographic_grids_go_to_the_pixel_cut():
+    """The plane cut's rules: an axis-aligned grid in a projected CRS; others are refused (None)."""
+    block = Block(0, 0, np.zeros((1, 3, 3)), np.ones((3, 3), bool))
+    rotated = Affine(5000.0, 100.0, 480000.0, 100.0, -5000.0, 6000000.0)
+    assert plane_block_pieces(SimpleNamespace(transform=rotated), transformer("EPSG:32633"), block, 9) is None
+    nad83 = Affine(0.05, 0, -100.0, 0, -0.05, 45.0)
+    assert plane_block_pieces(SimpleNamespace(transform=nad83), transformer("EPSG:4269"), block, 9) is None
+    assert plane_block_pieces(SimpleNamespace(transform=CASES["utm 33N at 54N"][1]), transformer("EPSG:32633"),
+                              block, 9) is not None
