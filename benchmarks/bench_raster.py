@@ -20,6 +20,11 @@ written a tile at a time with rasterio into a temporary folder (no download, no 
    the default threads after a 256x256 warm-up: ``ru_maxrss`` (whole process) against issue 19's 600 MB, and
    the time.  The parent reads the worker's VmRSS / VmHWM every 2 s and kills it past ``--rss-cap`` MB (the
    machine is shared) or ``--rss-timeout`` s, reporting the peak so far.  The globe takes an hour or more.
+4. A projected raster (issue 35): ``--rows`` x ``--cols`` uint8 pixels of 1 km in UTM 32N (EPSG:32632) from 300 km
+   E 5,600 km N (~50.5N 6E), at the same two levels (~0.9 and ~72 pixels a cell), one thread (CPU):
+   ``"center"``, exact ``"mean"`` (cut cell by cell in the raster's plane where it pays, dggs.raster.plane), the
+   same ``"mean"`` cut pixel by pixel (the path before), and binning every pixel's centre (pyproj to lat/lng,
+   ``latlng_to_cell``, a groupby), interleaved as in 1.
 Prints one Markdown section: tables, targets (met / missed), load average, commit.  ``--quick``: small sizes,
 1 round (run_all's smoke test)."""
 
@@ -112,6 +117,93 @@ def pixel_centres(path: str, level: int) -> Any:
     lng = t.c + t.a * (np.arange(cols) + 0.5)
     cells = dggs.latlng_to_cell(np.repeat(lat, cols), np.tile(lng, rows), level, as_int=True)
     return pd.Series(band.ravel(), dtype=np.float64).groupby(np.asarray(cells)).mean()
+
+
+PROJ_CRS, PROJ_PIXEL, PROJ_WEST, PROJ_NORTH = "EPSG:32632", 1000.0, 300_000.0, 5_600_000.0
+PROJ_CASES = ("dggs center", "dggs mean", "dggs mean, pixel by pixel", "pixel centres")
+
+
+def write_projected(path: Path, height: int, width: int) -> None:
+    """A uint8 UTM 32N GeoTIFF of 1 km pixels (deflate, 512x512 tiles): a smooth field plus noise in its pixels."""
+    import rasterio
+    from rasterio.transform import from_origin
+
+    profile = dict(driver="GTiff", height=height, width=width, count=1, dtype="uint8", crs=PROJ_CRS, nodata=0,
+                   transform=from_origin(PROJ_WEST, PROJ_NORTH, PROJ_PIXEL, PROJ_PIXEL), tiled=True,
+                   blockxsize=512, blockysize=512, compress="deflate")
+    r, col = np.mgrid[0:height, 0:width]
+    f = 120 + 60 * np.sin(col / 41.0) * np.cos(r / 53.0) + np.random.default_rng(35).normal(0.0, 8.0, (height, width))
+    with rasterio.open(path, "w", **profile) as ds:
+        ds.write(np.clip(f, 1, 254).astype(np.uint8), 1)
+
+
+def projected_centres(path: str, level: int) -> Any:
+    """Binning every pixel's centre of a projected raster: pyproj to lat/lng, ``latlng_to_cell``, a groupby mean."""
+    import pandas as pd
+    import pyproj
+
+    import dggs
+
+    band, t = read_band(path)
+    rows, cols = band.shape
+    to = pyproj.Transformer.from_crs(PROJ_CRS, "EPSG:4326", always_xy=True)
+    lng, lat = to.transform(np.tile(t.c + t.a * (np.arange(cols) + 0.5), rows),
+                            np.repeat(t.f + t.e * (np.arange(rows) + 0.5), cols))
+    cells = dggs.latlng_to_cell(lat, lng, level, as_int=True)
+    return pd.Series(band.ravel(), dtype=np.float64).groupby(np.asarray(cells)).mean()
+
+
+def worker_projected(path: str, sizes: dict[str, Any]) -> dict[str, Any]:
+    import dggs.raster.pieces as pieces
+    from dggs.raster import raster_to_cells
+
+    def pixel_by_pixel(lv: int) -> Any:  # the path before issue 35's plane cut: every block cut pixel by pixel
+        keep = pieces.plane_block_pieces
+        pieces.plane_block_pieces = lambda *a: None
+        try:
+            return raster_to_cells(path, lv, mode="mean")
+        finally:
+            pieces.plane_block_pieces = keep
+
+    c.TABLE_BUDGET[0] = sizes["table_budget"]
+    load0, out = loadavg(), {}
+    for scale in ("fine", "coarse"):
+        lv = sizes[scale]
+        for mode in ("center", "mean"):  # first calls on a small window
+            raster_to_cells(path, lv, mode=mode, window=(0, 0, 64, 64))
+        cases = {"dggs center": (lambda lv=lv: raster_to_cells(path, lv, mode="center"), len),
+                 "dggs mean": (lambda lv=lv: raster_to_cells(path, lv, mode="mean"), len),
+                 "dggs mean, pixel by pixel": (lambda lv=lv: pixel_by_pixel(lv), len),
+                 "pixel centres": (lambda lv=lv: projected_centres(path, lv), len)}
+        out[scale] = {"level": lv, "times": c.interleaved(cases, sizes["rounds"], sizes["budget"])}
+    return {"projected": out, "load": [load0, loadavg()], "notes": NOTES}
+
+
+def render_projected(res: dict[str, Any], sizes: dict[str, Any]) -> list[str]:
+    import dggs
+
+    px = sizes["rows"] * sizes["cols"]
+    (l0, *_), (l1, *_) = res["load"]
+    w = [f"#### A projected raster (issue 35): {sizes['rows']:,} x {sizes['cols']:,} pixels of 1 km in UTM 32N "
+         f"({PROJ_CRS}), one thread\n",
+         f"1-thread CPU per pixel, medians of {sizes['rounds']} interleaved rounds; 1-minute load average {l0:.2f} to "
+         f"{l1:.2f}. The yardstick is the slower of `\"center\"` and binning every pixel's centre.\n",
+         "| level | pixels a cell | `\"center\"` | pixel centres | exact `\"mean\"` | `\"mean\"` pixel by pixel "
+         "(before) | mean / yardstick (<= 3) | speed-up |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for scale in ("fine", "coarse"):
+        t = res["projected"].get(scale)
+        if not t:
+            continue
+        ns = {k: per(t["times"].get(k), "cpu", px) for k in PROJ_CASES}
+        yard = max(ns["dggs center"] or 0.0, ns["pixel centres"] or 0.0)
+        ratio = ns["dggs mean"] / yard if ns["dggs mean"] and yard else None
+        before = ns["dggs mean, pixel by pixel"]
+        gain = before / ns["dggs mean"] if ns["dggs mean"] and before else None
+        verdict = "-" if ratio is None else ("met" if ratio <= 3 else "**missed**")
+        w.append(f"| {t['level']} | {dggs.cell_area(t['level']) / PROJ_PIXEL**2:.3g} | {fmt_ns(ns['dggs center'])} | "
+                 f"{fmt_ns(ns['pixel centres'])} | {fmt_ns(ns['dggs mean'])} | "
+                 f"{fmt_ns(ns['dggs mean, pixel by pixel'])} | {c.fmt_ratio(ratio)}: {verdict} | {c.fmt_ratio(gain)} |")
+    return w + [""]
 
 
 def worker_tables(path: str, sizes: dict[str, Any]) -> dict[str, Any]:
@@ -279,8 +371,6 @@ def cost(res: dict[str, Any], part: str, mode: str, scale: str, case: str, px: i
 
 
 def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
-    import h3
-
     import dggs
 
     px, rows, cols = sizes["rows"] * sizes["cols"], sizes["rows"], sizes["cols"]
@@ -300,6 +390,8 @@ def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
     for scale, what in (("fine", "Cells about the size of the pixels"), ("coarse", "Cells ~100x the pixels")):
         t = res["tables"].get(scale, {})
         if t:
+            import h3
+
             lv, r = t["level"], t["res"]
             w.append(f"#### {what}: dggs level {lv} ({dggs.cell_area(lv) / 1e6:.3g} km2), h3 res {r} "
                      f"({h3.average_hexagon_area(r, 'km^2'):.3g} km2)\n\n| case | output cells | 1 thread: CPU per "
@@ -342,6 +434,8 @@ def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
                      "a pixel).")
         w.append(f"Writing the raster took {rss['write']:.0f} s; 1-minute load average {rss['load'][0][0]:.2f} to "
                  f"{rss['load'][-1][0]:.2f}.\n")
+    if res.get("projected"):
+        w.extend(render_projected(res["projected"], sizes))
     w.append("#### Targets (issue 19)\n\nRatios per pixel from the tables above: 1-thread CPU (judged) and "
              "default-threads wall.\n\n| target | scale | ratio (1-thread CPU) | ratio (default wall) | met |")
     w.append("|---|---|---:|---:|---|")
@@ -372,13 +466,16 @@ def render(res: dict[str, Any], sizes: dict[str, Any]) -> str:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes, 1 round (a smoke test)")
-    ap.add_argument("--skip", default="", help="comma-separated parts to skip: tables,cli,rss")
+    ap.add_argument("--skip", default="", help="comma-separated parts to skip: tables,projected,cli,rss")
     for key, val in FULL.items():
         ap.add_argument("--" + key.replace("_", "-"), type=type(val), default=None,
                         help=f"default {val} ({QUICK[key]} with --quick)")
-    for flag in ("--tables-worker", "--rss-worker", "--sizes", "--level"):  # internal: the workers
+    for flag in ("--tables-worker", "--rss-worker", "--projected-worker", "--sizes", "--level"):  # internal
         ap.add_argument(flag, help=argparse.SUPPRESS)
     args = ap.parse_args()
+    if args.projected_worker:
+        print(json.dumps(worker_projected(args.projected_worker, json.loads(args.sizes))))
+        return
     if args.tables_worker or args.rss_worker:
         w = worker_tables(args.tables_worker, json.loads(args.sizes)) if args.tables_worker else None
         print(json.dumps(w or worker_rss(args.rss_worker, int(args.level))))
@@ -404,6 +501,17 @@ def main() -> None:
                 res["tables"].setdefault("load", {})[mode] = got["load"]
                 for scale, t in got["tables"].items():
                     res["tables"].setdefault(scale, {"level": t["level"], "res": t["res"]})[mode] = t["times"]
+        if "projected" not in skip:
+            print("bench_raster: a projected raster, one thread", file=sys.stderr, flush=True)
+            projected = Path(tmp) / "utm.tif"
+            write_projected(projected, sizes["rows"], sizes["cols"])
+            try:
+                got = c.run_json([str(HERE), "--projected-worker", str(projected), "--sizes", json.dumps(sizes)],
+                               thread_env(True), 4 * 3600)
+                NOTES.extend(f"(projected) {n}" for n in got["notes"])
+                res["projected"] = got
+            except Exception as exc:
+                note(f"the projected worker failed ({type(exc).__name__}: {str(exc)[:300]}).")
         if "cli" not in skip:
             print("bench_raster: command lines", file=sys.stderr, flush=True)
             res["cli"] = cli_table(path, sizes, Path(tmp))

@@ -25,6 +25,7 @@ from dggs.raster.grid import (
     split_factor,
     tile_chord_errors,
 )
+from dggs.raster.plane import plane_block_pieces
 from dggs.raster.source import Block, RasterSource
 
 __all__ = ["TILE", "MOST_POINTS", "block_pieces", "pixel_block_pieces", "latlng_grid", "grid_window", "scale"]
@@ -128,8 +129,10 @@ def block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) 
     order, and a pixel may have several in a cell).  A lat/lng raster's
     blocks are cut cell by cell against the pixel grid
     (:func:`dggs.index._pixels.latlng_pieces`: a cell's pieces together),
-    any other's pixel by pixel along the cells' edges (each pixel's pieces
-    together, in pixel order).
+    a projected raster's cell by cell in its own plane where the rules of
+    :mod:`dggs.raster.plane` hold (a cell's pieces together), any other's
+    pixel by pixel along the cells' edges (each pixel's pieces together, in
+    pixel order).
     """
     grid = latlng_grid(src, transformer, block)
     if grid is not None:
@@ -138,6 +141,8 @@ def block_pieces(src: RasterSource, transformer: Any, block: Block, level: int) 
             return pixel, cell, area, False
         except RuntimeError:  # cells far coarser than the pixels: their edges want too many points; cut pixels
             pass
+    elif (found := plane_block_pieces(src, transformer, block, level)) is not None:
+        return found
     return pixel_block_pieces(src, transformer, block, level)
 
 

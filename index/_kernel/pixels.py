@@ -31,9 +31,10 @@ from dggs._core import PIXELS_FACE_AREA, PIXELS_MAX_RADIUS
 from dggs._core import pixels_chord_errors as chord_errors
 from dggs._core import pixels_grid_pieces as grid_pieces
 from dggs._core import pixels_latlng_pieces as latlng_pieces
+from dggs._core import pixels_plane_pieces as plane_pieces
 from dggs._core import pixels_region as region
 
-__all__ = ["FACE_AREA", "MAX_RADIUS", "chord_errors", "grid_pieces", "latlng_pieces", "region"]
+__all__ = ["FACE_AREA", "MAX_RADIUS", "chord_errors", "grid_pieces", "latlng_pieces", "plane_pieces", "region"]
 
 #: Planar area of a face triangle in the unit-sphere face frame (a twentieth of the sphere's 4 pi).
 FACE_AREA: float = PIXELS_FACE_AREA

@@ -602,6 +602,36 @@ dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges,
  * smooth. DGGS_E_LATLNG (a point not finite or a latitude outside -90..90). */
 dggs_error dggs_pixel_chord_error(const double *lat, const double *lng, double *out);
 
+/* Pieces of pixels in a raster's own plane (pixels_plane.c): pixel (r C + c), cell, area in pixel units (a whole
+ * pixel is 1) and the piece's centroid in its pixel's own coordinates (cu, cv in 0..1: column and row offsets from
+ * the pixel's corner at (c, r)). The caller's arrays, `cap` each; n pieces written. */
+typedef struct {
+    int64_t *pixel;
+    uint64_t *cell;
+    double *area, *cu, *cv;
+    int64_t cap;
+    int64_t n;
+} dggs_plane_pieces_out;
+
+/* The largest coordinate (pixels) dggs_plane_pieces takes: products of two stay far from overflow. */
+#define DGGS_PLANE_MAX_COORD 1e15
+/* 8-byte words of scratch (`work`) dggs_plane_pieces needs for a rows x cols grid (0 for an empty grid). */
+int64_t dggs_plane_pieces_work_words(int64_t rows, int64_t cols);
+/* The pixels of a rows x cols grid each ring meets, the area they share and its centroid: ring k (of n_rings,
+ * cells[k] its cell) is the polygon (x, y)[ring_start[k] .. ring_start[k + 1]) (closed implicitly, either
+ * orientation, straight chords) in pixel coordinates: x the column, y the row (pixel (r, c) is [c, c + 1) x
+ * [r, r + 1)). Each ring is cut against the grid's rows and columns by Green's theorem in strips, so a pixel wholly
+ * inside a ring is one piece of area 1 and rings that share their edges share each pixel's area exactly (a
+ * raster in a projected CRS, its cells' edges densified and taken into the CRS by the caller). valid: rows x cols
+ * bytes (0: no pieces). The pieces go to `out` ring by ring (a ring's in pixel order). Resuming as
+ * dggs_raster_pieces (*resume counts rings). Errors: DGGS_E_DOMAIN (rows or cols < 1, ring_start decreasing, a
+ * point not finite or past DGGS_PLANE_MAX_COORD), DGGS_E_BUFFER (work smaller than dggs_plane_pieces_work_words,
+ * or the pieces outgrew out->cap: *need says the room needed, *resume the ring to go on from). */
+dggs_error dggs_plane_pieces(const double *x, const double *y, const int64_t *ring_start, const uint64_t *cells,
+                             int64_t n_rings, int64_t rows, int64_t cols, const uint8_t *valid,
+                             dggs_plane_pieces_out *out, void *work, int64_t work_words, int64_t *resume,
+                             int64_t *need);
+
 /* ---- end pixels ---- */
 
 
