@@ -1430,7 +1430,7 @@ static double snyder_q(double lat) {
 
 static void latlng(void) {
     enum { ROWS = 3, COLS = 4, CAP = 256 };
-    static double work[3 * (3 * 4096 + 16) + 2 * (ROWS + 2) * COLS + ROWS + 1 + 6 * 8192];
+    static double work[3 * (3 * 4096 + 16) + 2 * (ROWS + 2) * COLS + ROWS + 1 + 6 * 2048];
     static int64_t pixel[CAP];
     static uint64_t cell[CAP];
     static double area[CAP];
@@ -1492,7 +1492,7 @@ static uint64_t fnv1a(uint64_t h, const void *bytes, size_t n) {
 }
 
 /* dggs_latlng_pieces' pieces (pixel, cell and the area's bits, in order) against frozen outputs of commit 4b831ac,
- * before the cut was made faster (triangles from the parent's, a larger memo of mapped points, inline min/max),
+ * before the cut was made faster (triangles from the parent's, inline min/max),
  * which must change no bit: cells the pixels' size (level 15 over 0.01 degrees, the benchmark's case), ~20 pixels
  * a cell, round the north pole, across the antimeridian, and a south-up grid. */
 static void latlng_frozen(void) {
@@ -1509,7 +1509,7 @@ static void latlng_frozen(void) {
         {-60.0, 30.0, 0.02, 10, 10, 14, 1, 492, 0x8206cf31bf2d5836u},
     };
     enum { MOST = 40 * 60, CAP = 16 * MOST };
-    static double work[3 * (3 * 4096 + 16) + 2 * (40 + 2) * 60 + 40 + 1 + 6 * 8192];
+    static double work[3 * (3 * 4096 + 16) + 2 * (40 + 2) * 60 + 40 + 1 + 6 * 2048];
     static int64_t pixel[CAP];
     static uint64_t cell[CAP];
     static double area[CAP];
