@@ -52,7 +52,14 @@ typedef struct {
     double *memo; /* MEMO entries of 6: a face-plane point's x, y, face, and its lng, q, pole (see mapped) */
 } grid_t;
 
-/* Entries of the memo of mapped points (a power of 2). */
+/* The lesser and greater of two numbers that are never NaN: libm's fmin and fmax are calls under the core's
+ * floating-point flags (-fno-finite-math-only), a few percent of the cut where cells are the pixels' size. */
+static inline double min2(double a, double b) { return b < a ? b : a; }
+static inline double max2(double a, double b) { return b > a ? b : a; }
+
+/* Entries of the memo of mapped points (a power of 2; 96 KiB). Over a block of pixel-size cells 2048 leave 8% of the
+ * points mapped twice (neighbours across a coarse cell's edge are far apart depth first) and 8192 3%, but 8192 ran
+ * 3% slower: its look-ups (17 a cell) miss the cache. */
 #define MEMO 2048
 
 /* The band (0..rows - 1) holding q, -1 below the grid, rows above it (near `guess` first, then a binary search). */
@@ -111,11 +118,10 @@ static void mapped(grid_t *g, int face, double x, double y, double *lng, double 
 /* acos from the core's own atan2 and an exact sqrt (dmath.h: the same bits on every platform). */
 static double pixels_acos(double x) { return dggs_atan2(sqrt((1.0 - x) * (1.0 + x)), x); }
 
-/* Does the cap round `cell` (its corners' widest angle from its centre, widened by a fifth for its curved edges)
+/* Does the cap round the cell of triangle t on `face` (its corners' widest angle from its centre, widened by a fifth for its curved edges)
  * meet the block's box? *inside: does the box hold it whole? */
-static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
-    double t[6], c[3], p[3];
-    int face = dggs_triangle(cell, t);
+static bool cap_meets(const grid_t *g, int face, const double t[6], bool *inside) {
+    double c[3], p[3];
     dggs_snyder_inverse_unit(FRAMES, face, (t[0] + t[2] + t[4]) / 3.0, (t[1] + t[3] + t[5]) / 3.0, c);
     double least = 1.0;
     for (int j = 0; j < 3; j++) {
@@ -129,7 +135,7 @@ static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
     if (beta + rho < g->beta_lo || beta - rho > g->beta_hi) return false;
     bool rows_in = beta - rho > g->beta_lo && beta + rho < g->beta_hi;
     if (fabs(beta) + rho >= 0.5 * PI) return true;
-    double half = dggs_asin(fmin(1.0, dggs_sin(rho) / dggs_cos(beta))) * (180.0 / PI);
+    double half = dggs_asin(min2(1.0, dggs_sin(rho) / dggs_cos(beta))) * (180.0 / PI);
     if (g->box_east - g->box_west >= 360.0) {
         *inside = rows_in;
         return true;
@@ -144,13 +150,13 @@ static bool cap_meets(const grid_t *g, uint64_t cell, bool *inside) {
 
 /* The least row height among the bands q0..q1 (in either order) meets, or 0 where they miss the grid. */
 static double least_height(grid_t *g, double q0, double q1) {
-    int64_t b0 = band_of(g, fmin(q0, q1), g->hint), b1 = band_of(g, fmax(q0, q1), b0);
+    int64_t b0 = band_of(g, min2(q0, q1), g->hint), b1 = band_of(g, max2(q0, q1), b0);
     g->hint = b0;
     if (b1 < 0 || b0 >= g->rows) return 0.0;
     if (b0 < 0) b0 = 0;
     if (b1 >= g->rows) b1 = g->rows - 1;
     double h = INFINITY;
-    for (int64_t b = b0; b <= b1; b++) h = fmin(h, g->qe[b + 1] - g->qe[b]);
+    for (int64_t b = b0; b <= b1; b++) h = min2(h, g->qe[b + 1] - g->qe[b]);
     return h;
 }
 
@@ -179,7 +185,7 @@ static int64_t edge_points(grid_t *g, int face, double ax, double ay, double bx,
             if (pole) g->rx[n + j] = NAN;
         }
         double qlo = bq, qhi = bq; /* the rows the points meet (an edge bulges past its ends: poleward) */
-        for (int64_t j = 0; j < k; j++) qlo = fmin(qlo, g->ry[n + j]), qhi = fmax(qhi, g->ry[n + j]);
+        for (int64_t j = 0; j < k; j++) qlo = min2(qlo, g->ry[n + j]), qhi = max2(qhi, g->ry[n + j]);
         double h = least_height(g, qlo, qhi);
         if (!(h > 0.0)) return k; /* the edge misses the grid's rows: its chords add to no pixel */
         double worst = 0.0;
@@ -189,7 +195,7 @@ static int64_t edge_points(grid_t *g, int face, double ax, double ay, double bx,
             if (!isfinite(l0) || !isfinite(l1) || !isfinite(l2)) continue; /* a pole: its pieces have no width */
             l0 = unwrap_near(l0, l1), l2 = unwrap_near(l2, l1);
             double du = (l1 - 0.5 * (l0 + l2)) / g->dlng, dv = (q1 - 0.5 * (q0 + q2)) / h;
-            worst = fmax(worst, du * du + dv * dv);
+            worst = max2(worst, du * du + dv * dv);
         }
         double need = 1.5 * 0.25 * sqrt(worst) / g->tol; /* the chords' error now, in units of tol */
         if (need <= 1.0) return k;
@@ -201,12 +207,10 @@ static int64_t edge_points(grid_t *g, int face, double ax, double ay, double bx,
     }
 }
 
-/* The cell's ring in (column, q), unwrapped, closed through a pole where it winds round one; its count, or -1.
+/* The ring of the cell of triangle t on `face` (dggs_triangle) in (column, q), unwrapped, closed through a pole where it winds round one; its count, or -1.
  * rk[j] is the chord count of the edge starting at point j (0 elsewhere, and on edges from or to a pole, whose
  * points near it are not evenly spread in the map: no parabolic segments there). */
-static int64_t cell_ring(grid_t *g, uint64_t cell, double *orient) {
-    double t[6];
-    int face = dggs_triangle(cell, t);
+static int64_t cell_ring(grid_t *g, int face, const double t[6], double *orient) {
     int64_t n = 0;
     int64_t start[3], chords[3];
     bool at_pole[3] = {false, false, false};
@@ -281,7 +285,7 @@ static inline void add_piece(grid_t *g, int64_t c0, int64_t nc, int64_t b0, doub
     int64_t at = (b - b0) * nc + (c - c0);
     if (b < g->rows) {
         double lo = g->qe[b], hi = g->qe[b + 1];
-        double ym = 0.5 * (fmin(fmax(ya, lo), hi) + fmin(fmax(yb, lo), hi));
+        double ym = 0.5 * (min2(max2(ya, lo), hi) + min2(max2(yb, lo), hi));
         g->part[at] -= dx * (ym - lo);
     }
     g->wide[at] -= dx;
@@ -390,15 +394,15 @@ static void emit(grid_t *g, uint64_t cell, double orient, int64_t c0, int64_t c1
     }
 }
 
-/* One cell of the level: its pieces in the block's pixels. 0, or -1 for an edge needing too many chords. */
-static int cell_pieces(grid_t *g, uint64_t cell, dggs_pieces *out) {
+/* One cell of the level (its triangle t on `face`): its pieces in the block's pixels. 0, or -1 for an edge needing too many chords. */
+static int cell_pieces(grid_t *g, uint64_t cell, int face, const double t[6], dggs_pieces *out) {
     double orient;
-    int64_t n = cell_ring(g, cell, &orient);
+    int64_t n = cell_ring(g, face, t, &orient);
     if (n < 0) return -1;
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
     for (int64_t j = 0; j < n; j++) {
-        xlo = fmin(xlo, g->rx[j]), xhi = fmax(xhi, g->rx[j]);
-        ylo = fmin(ylo, g->ry[j]), yhi = fmax(yhi, g->ry[j]);
+        xlo = min2(xlo, g->rx[j]), xhi = max2(xhi, g->rx[j]);
+        ylo = min2(ylo, g->ry[j]), yhi = max2(yhi, g->ry[j]);
     }
     if (yhi <= g->qe[0] || ylo >= g->qe[g->rows]) return 0;
     int64_t b0 = band_of(g, ylo, g->hint), b1 = band_of(g, yhi, b0);
@@ -412,7 +416,7 @@ static int cell_pieces(grid_t *g, uint64_t cell, dggs_pieces *out) {
     if (!(xlo + first < (double)g->cols)) return 0;
     int64_t c0 = g->cols, c1 = -1;
     for (double s = first; xlo + s < (double)g->cols; s += period) {
-        int64_t lo = (int64_t)floor(fmax(xlo + s, 0.0)), hi = (int64_t)floor(fmin(xhi + s, (double)g->cols - 0.5));
+        int64_t lo = (int64_t)floor(max2(xlo + s, 0.0)), hi = (int64_t)floor(min2(xhi + s, (double)g->cols - 0.5));
         if (lo < c0) c0 = lo;
         if (hi > c1) c1 = hi;
     }
@@ -463,26 +467,45 @@ dggs_error dggs_latlng_pieces(double west, double dlng, const double *lat_edges,
     g.box_west = west, g.box_east = west + dlng * (double)cols;
     g.beta_lo = dggs_asin(qe[0]), g.beta_hi = dggs_asin(qe[rows]);
 
-    /* depth first over the hierarchy, the cells whose caps meet the box; the target cells counted for *resume */
-    uint64_t stack[6 * (DGGS_MAX_LEVEL + 2)];
-    int levels[6 * (DGGS_MAX_LEVEL + 2)];
-    bool held[6 * (DGGS_MAX_LEVEL + 2)]; /* inside a cell the box holds whole: no test */
+    /* depth first over the hierarchy, the cells whose caps meet the box; the target cells counted for *resume.
+     * Each cell's triangle is its parent's child (dggs_child_corners), the steps dggs_triangle takes from the
+     * face: the same bits, without walking every level again for every cell. */
+    enum { DEPTH = 6 * (DGGS_MAX_LEVEL + 2) };
+    uint64_t stack[DEPTH];
+    int levels[DEPTH];
+    bool held[DEPTH]; /* inside a cell the box holds whole: no test */
+    double tri[DEPTH][6];
     int64_t top = 0, seen = 0;
-    for (int f = DGGS_NUM_FACES - 1; f >= 0; f--) stack[top] = dggs_base_cell(f), levels[top] = 0, held[top++] = false;
+    for (int f = DGGS_NUM_FACES - 1; f >= 0; f--) {
+        stack[top] = dggs_base_cell(f), levels[top] = 0, held[top] = false;
+        dggs_triangle(stack[top], tri[top]);
+        top++;
+    }
     while (top > 0) {
         uint64_t cell = stack[--top];
         int lv = levels[top];
         bool inside = held[top];
+        int face = dggs_face_of(cell);
+        double t[6];
+        memcpy(t, tri[top], sizeof t);
         if (lv < level) {
-            if (!inside && !cap_meets(&g, cell, &inside)) continue;
+            if (!inside && !cap_meets(&g, face, t, &inside)) continue;
             int kids = lv == 0 ? 6 : 3;
-            for (int d = kids - 1; d >= 0; d--)
-                stack[top] = dggs_clip_child(cell, lv, d), levels[top] = lv + 1, held[top++] = inside;
+            for (int d = kids - 1; d >= 0; d--) {
+                stack[top] = dggs_clip_child(cell, lv, d), levels[top] = lv + 1, held[top] = inside;
+                if (lv == 0) {
+                    dggs_triangle(stack[top], tri[top]);
+                } else {
+                    memcpy(tri[top], t, sizeof t);
+                    dggs_child_corners(tri[top], d);
+                }
+                top++;
+            }
             continue;
         }
         if (seen++ < *resume) continue;
         int64_t n0 = out->n;
-        if (cell_pieces(&g, cell, out)) return DGGS_E_FAILED;
+        if (cell_pieces(&g, cell, face, t, out)) return DGGS_E_FAILED;
         if (out->n > out->cap) {
             *need = out->n;
             out->n = n0;
