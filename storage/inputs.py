@@ -243,8 +243,10 @@ def ingest_points(
         # table in key order (no pending table, no sort in SQLite); computed after the source is known
         # to be incomplete, the same way on a resume.
         locate = grid_locate(store.projection)
-        order = readers_arrays.cell_order(lat_a, lng_a, level, make_transformer(options.crs), locate) if ordered else None
-        return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order)
+        if not ordered:
+            return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip)
+        order, located = readers_arrays.ordered_cells(lat_a, lng_a, level, make_transformer(options.crs), locate)
+        return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order, located)
 
     return run_ingest(
         store,

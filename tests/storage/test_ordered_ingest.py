@@ -117,3 +117,46 @@ def test_a_bad_coordinate_fails_before_any_row_is_stored(tmp_path):
         lat[3::5] = 50.0
         result = store.ingest_points(lat, lng, 8, batch_size=5, source="s")
         assert result.rows_resumed == 0 and store.count() == 50
+
+
+@given(coords, st.sampled_from([0, 9, 17, 28]), st.sampled_from(["ISEA", "IVEA"]), st.integers(1, 9))
+@example([(90.0, 0.0), (-90.0, 180.0), (math.nan, 0.0), (91.0, 1.0), (0.0, -180.0)], 28, "ISEA", 2)
+@example([(26.565051177077986, 36.0), (0.0, 180.0), (45.0, 1e300)], 17, "IVEA", 1)
+def test_an_ordered_ingest_bins_each_point_once_and_stores_its_own_cell(points, level, projection, batch_size):
+    """The ids ``cell_order`` binned are the ones stored (no second binning per batch), bad rows skipped."""
+    import warnings
+
+    from dggs.storage import projection as grid_projection
+
+    located: list[int] = []
+    real = grid_projection.grid_locate
+
+    def counting(name):
+        locate = real(name)
+
+        def counted(lat, lng, lvl, **kwargs):
+            located.append(int(np.size(lat)))
+            return locate(lat, lng, lvl, **kwargs)
+
+        return counted
+
+    lat = np.array([p[0] for p in points], dtype=float)
+    lng = np.array([p[1] for p in points], dtype=float)
+    ok = np.isfinite(lat) & np.isfinite(lng) & (np.abs(lat) <= 90) & (np.abs(lng) <= 180)
+    grid = dggs.Grid(projection)
+    want = sorted((grid.latlng_to_cell(float(y), float(x), level), i + 1)  # each point binned alone
+                  for i, (y, x) in enumerate(zip(lat, lng, strict=True)) if ok[i])
+    import dggs.storage.ingest as ingest
+    import dggs.storage.inputs as inputs
+
+    saved = inputs.grid_locate, ingest.grid_locate
+    inputs.grid_locate = ingest.grid_locate = counting  # the order's binning and the batches'
+    try:
+        with CellStore(":memory:", projection=projection) as store, warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            store.ingest_points(lat, lng, level, {"v": np.arange(len(lat))}, on_error="skip", batch_size=batch_size)
+            got = sorted(store.conn.execute("SELECT cell, row FROM points").fetchall())
+    finally:
+        inputs.grid_locate, ingest.grid_locate = saved
+    assert got == want
+    assert sum(located) == int(ok.sum())  # once each: in cell_order, none again in the batches
