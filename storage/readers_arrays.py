@@ -123,12 +123,13 @@ def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, l
 
 
 def ordered_cells(
-    lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, locate: Any = None
+    lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, locate: Any = None, ids: Any = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The permutation that puts the points in cell id order, and their integer ids in that order.
 
     The ids (uint64) are 0 where a point cannot be binned; :func:`array_batches` hands them to each
     batch (``RawBatch.located``), so that the points are binned once, not again by ``prepare``.
+    ``ids``: the points' ids given by the caller (binned before, checked): then none is binned here.
 
     Only speed depends on it: rows inserted in key order walk the clustered
     table once instead of sorting in SQLite (three times slower than numpy's
@@ -147,7 +148,10 @@ def ordered_cells(
         ok &= (np.abs(y) <= 90) & (np.abs(x) <= 180)
     good = np.flatnonzero(ok)
     locate = dggs.latlng_to_cell if locate is None else locate  # the store's grid's
-    keys = np.asarray(locate(y[good], x[good], level, as_int=True), dtype=np.uint64)
+    if ids is not None:
+        keys = np.asarray(ids, dtype=np.uint64)[good]
+    else:
+        keys = np.asarray(locate(y[good], x[good], level, as_int=True), dtype=np.uint64)
     # An id of level L leaves its low 2 * (28 - L) bits zero: with the position in them, a plain sort
     # (8x faster than argsort) gives the stable order.
     free = 2 * (dggs.MAX_LEVEL - level)

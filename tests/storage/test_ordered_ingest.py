@@ -160,3 +160,65 @@ def test_an_ordered_ingest_bins_each_point_once_and_stores_its_own_cell(points, 
         inputs.grid_locate, ingest.grid_locate = saved
     assert got == want
     assert sum(located) == int(ok.sum())  # once each: in cell_order, none again in the batches
+
+
+@pytest.mark.parametrize("as_int", [False, True])
+@pytest.mark.parametrize("n", [1, 500])
+def test_cells_binned_before_are_stored_as_binning_again_would_store_them(tmp_path, as_int, n):
+    """``ingest_dataframe(cells=...)`` stores the rows an ingest binning the points stores, binning none."""
+    import warnings
+
+    import pandas as pd
+
+    import dggs.storage.ingest as ingest
+    import dggs.storage.inputs as inputs
+
+    rng = np.random.default_rng(n)
+    lat = np.concatenate([[90.0, -90.0, 0.0, math.nan], rng.uniform(-90, 90, n)])[:max(n, 4)]
+    lng = np.concatenate([[0.0, 180.0, -180.0, 0.0], rng.uniform(-180, 180, n)])[:max(n, 4)]
+    if n == 1:
+        lat, lng = lat[:1], lng[:1]
+    ok = np.isfinite(lat)
+    cells = np.empty(len(lat), dtype=object)
+    cells[ok] = dggs.latlng_to_cell(lat[ok], lng[ok], 12, as_int=as_int)
+    cells[~ok] = dggs.latlng_to_cell(0.0, 0.0, 12, as_int=as_int)  # a valid id beside a bad point: still bad
+    df = pd.DataFrame({"lat": lat, "lng": lng, "v": np.arange(len(lat)), "cell": cells})
+    stored = {}
+    for name, given in (("binned", None), ("given", "cell")):
+        saved = inputs.grid_locate, ingest.grid_locate
+        if given is not None:  # binning anything would fail the test
+            def refuse(projection):
+                def locate(*args, **kwargs):
+                    raise AssertionError("a point was binned again")
+
+                return locate
+
+            inputs.grid_locate = ingest.grid_locate = refuse
+        try:
+            with CellStore(tmp_path / f"{name}.db") as store, warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                store.keep_rollups([8])
+                store.ingest_dataframe(df, values=["v"], level=12, cells=given, on_error="skip")
+                stored[name] = (store.conn.execute("SELECT * FROM points ORDER BY cell, row").fetchall(),
+                                store.conn.execute("SELECT * FROM rollups ORDER BY level, cell").fetchall(),
+                                store.columns)
+        finally:
+            inputs.grid_locate, ingest.grid_locate = saved
+    assert stored["given"] == stored["binned"]
+    assert len(stored["given"][0]) == int(ok.sum())
+
+
+def test_given_cells_are_checked_before_anything_is_stored(tmp_path):
+    import pandas as pd
+
+    df = pd.DataFrame({"lat": [1.0, 2.0], "lng": [3.0, 4.0]})
+    with CellStore(tmp_path / "c.db") as store:
+        with pytest.raises(dggs.InvalidCellError, match="'Z9'"):
+            store.ingest_dataframe(df.assign(cell=["C40", "Z9"]), level=1, cells="cell")
+        with pytest.raises(dggs.LevelMismatchError, match=r"'C401' \(row 2\) is at level 3, not the ingest's level 2"):
+            store.ingest_dataframe(df.assign(cell=["C40", "C401"]), level=2, cells="cell")
+        with pytest.raises(dggs.DggsValueError, match="no column"):
+            store.ingest_dataframe(df, level=2, cells="cell")
+        with pytest.raises(dggs.DggsValueError, match="cells has 1 values but lat has 2"):
+            store.ingest_points(df["lat"], df["lng"], 2, cells=["C40"])
+        assert store.count() == 0 and store.sources() == []
