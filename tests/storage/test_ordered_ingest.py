@@ -184,9 +184,9 @@ def test_cells_binned_before_are_stored_as_binning_again_would_store_them(tmp_pa
     cells[~ok] = dggs.latlng_to_cell(0.0, 0.0, 12, as_int=as_int)  # a valid id beside a bad point: still bad
     df = pd.DataFrame({"lat": lat, "lng": lng, "v": np.arange(len(lat)), "cell": cells})
     stored = {}
-    for name, given in (("binned", None), ("given", "cell")):
+    for name, column in (("binned", None), ("given", "cell")):
         saved = inputs.grid_locate, ingest.grid_locate
-        if given is not None:  # binning anything would fail the test
+        if column is not None:  # binning anything would fail the test
             def refuse(projection):
                 def locate(*args, **kwargs):
                     raise AssertionError("a point was binned again")
@@ -198,7 +198,7 @@ def test_cells_binned_before_are_stored_as_binning_again_would_store_them(tmp_pa
             with CellStore(tmp_path / f"{name}.db") as store, warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 store.keep_rollups([8])
-                store.ingest_dataframe(df, values=["v"], level=12, cells=given, on_error="skip")
+                store.ingest_dataframe(df, values=["v"], level=12, cells=column, on_error="skip")
                 stored[name] = (store.conn.execute("SELECT * FROM points ORDER BY cell, row").fetchall(),
                                 store.conn.execute("SELECT * FROM rollups ORDER BY level, cell").fetchall(),
                                 store.columns)

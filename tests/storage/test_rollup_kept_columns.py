@@ -9,7 +9,6 @@ tuple path is not taken for them (it is the one left for REAL columns).
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 from dggs.storage import CellStore, rollup_serve
