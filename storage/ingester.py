@@ -319,21 +319,15 @@ class Ingester:
         crs, batch_size, on_error, replace, progress
             As in :meth:`ingest_csv` (default batch 100,000 rows).
         cells : array_like, optional
-            The points' cells at ``level`` (str or int ids), binned already on the store's grid
-            (:func:`dggs.latlng_to_cell` of these points, as an analyst keeps them): stored as given,
-            not binned again.  Each must be a valid id of ``level``; that it holds its point is the
-            caller's word (as :meth:`DggsAccessor.sjoin_cells`'s ``cells``).  The points are still
-            checked (a bad coordinate is a bad row) and stored.
+            The points' cells at ``level`` (str or int ids, valid, binned before on the store's grid, as
+            ``sjoin_cells(cells=)`` takes them): stored as given, not binned again (tests/storage/test_ordered_ingest.py).
 
         Raises
         ------
         BadRowError, LevelError, LevelMismatchError
-            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level;
-            LevelMismatchError also for a given cell of another level (naming it and its row).
-        InvalidCellError
-            A given cell that is not a valid id (naming it).
-        DggsValueError
-            If an array is not flat or its length differs from ``lat``'s.
+            As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
+        InvalidCellError, LevelMismatchError, DggsValueError
+            A given cell not valid or not of ``level`` (naming it); an array not flat or not as long as ``lat``.
 
         Examples
         --------
@@ -343,11 +337,6 @@ class Ingester:
         ...                             values={"temp": np.array([21.5, 19.0])})
         ...     store.columns, store.count()
         ({'temp': 'REAL'}, 2)
-        >>> lat, lng = np.array([10.0, 20.0]), np.array([30.0, 40.0])
-        >>> with CellStore() as store:  # cells binned before: not binned again
-        ...     _ = store.ingest_points(lat, lng, 4, cells=dggs.latlng_to_cell(lat, lng, 4, as_int=True))
-        ...     store.count(dggs.latlng_to_cell(10.0, 30.0, 4))
-        1
         """
         options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
         return inputs.ingest_points(self._store, lat, lng, level, values, types, options, merge_rows=self.merge_rows,
@@ -373,8 +362,7 @@ class Ingester:
     ) -> IngestResult:
         """Bin the rows of a pandas DataFrame (``values=None``: every other column).
 
-        Keyword arguments are those of :meth:`ingest_points`; ``cells`` names the column of the rows'
-        cells at ``level``, binned before (not stored as a value, not binned again).
+        Keyword arguments are those of :meth:`ingest_points`; ``cells`` names a column of cells binned before.
 
         Raises
         ------
