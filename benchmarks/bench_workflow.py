@@ -17,7 +17,9 @@ The H3 side is what an analyst writes with h3ronpy, pandas and geopandas:
 ``change_resolution``, ``wkb_to_cells`` of the countries exploded and merged,
 ``cells_to_wkb_polygons`` written with geopandas.  The dggs side is what its
 docs show: ``latlng_to_cell``, a store keeping the roll-ups of levels 10 and 8
-(``keep_rollups``) filled by ``ingest_dataframe``, ``aggregate``,
+(``keep_rollups``) filled by ``ingest_dataframe`` with the cells binned before
+(``cells=``, as the H3 side stores its own), ``aggregate`` as a table made a
+DataFrame (both sides' roll-ups are pandas DataFrames),
 ``sjoin_cells`` through the binned cells, ``CellStore.export``.
 """
 
@@ -98,13 +100,17 @@ def run_dggs(n: int, folder: Path) -> dict[str, Any]:
 
     def store_rows() -> None:
         store.keep_rollups([10, 8])  # the levels the job rolls up to, kept by the ingest (as H3's side indexes)
-        store.ingest_dataframe(df, level=17, values=["pop"])
+        store.ingest_dataframe(df, level=17, values=["pop"], cells="cell")  # the cells binned above, as H3's
 
     _timed(log, "store", store_rows)
 
     def roll_up() -> Any:
-        _timed(parts, "roll up: level 10 (its kept partials)", lambda: store.aggregate(10, "pop", ("count", "sum")))
-        _timed(parts, "roll up: level 8 (its kept partials)", lambda: store.aggregate(8, "pop", ("count", "sum")))
+        # DataFrames, as the H3 side's groupby gives (a table read as columns, then pandas': no dict a cell)
+        def frame(level: int) -> Any:
+            return store.aggregate(level, "pop", ("count", "sum"), as_table=True).to_pandas()
+
+        _timed(parts, "roll up: level 10 (its kept partials)", lambda: frame(10))
+        _timed(parts, "roll up: level 8 (its kept partials)", lambda: frame(8))
 
     _timed(log, "roll up", roll_up)
     joined = _timed(log, "join to countries", lambda: df.dggs.sjoin_cells(shapes, 10, cells="cell"))

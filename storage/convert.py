@@ -44,6 +44,8 @@ class Prepared:
     with_parts: bool = False
     #: the batch's roll-up partials (:class:`dggs.storage.rollup_keep.BatchPartials`), where roll-ups are kept
     partials: Any = None
+    #: the rows' cells as integer ids (uint64), where the batch came binned already (``RawBatch.located``)
+    ids: Any = None
 
     def __len__(self) -> int:
         """The number of rows."""
@@ -316,13 +318,17 @@ def prepare(
     keep = np.flatnonzero(good)
     all_good = len(keep) == n
     known = np.asarray(batch.cells, dtype=object) if batch.cells is not None else None
+    located = batch.located if known is None else None  # binned already (ordered arrays): not binned again
     if all_good and known is None:  # the common case: every row good, no cell given
-        cells: Any = locate(lat, lng, level) if n else np.empty(0, dtype=object)
+        if located is not None:
+            cells: Any = dggs.int_to_str(located) if n else np.empty(0, dtype=object)
+        else:
+            cells = locate(lat, lng, level) if n else np.empty(0, dtype=object)
     else:
         cells = np.empty(n, dtype=object)
         todo = keep if known is None else keep[known[keep] == ""]
         if len(todo):
-            cells[todo] = locate(lat[todo], lng[todo], level)
+            cells[todo] = locate(lat[todo], lng[todo], level) if located is None else dggs.int_to_str(located[todo])
         if known is not None:
             given = keep[known[keep] != ""]
             cells[given] = known[given]
@@ -361,7 +367,8 @@ def prepare(
                 "index": i,
             }
         )
-    return Prepared(values=flat, width=width, rejects=rejects, with_parts=with_parts)
+    ids = None if located is None else np.asarray(located if all_good else located[keep], dtype=np.uint64)
+    return Prepared(values=flat, width=width, rejects=rejects, with_parts=with_parts, ids=ids)
 
 
 def jsonable(value: Any) -> Any:

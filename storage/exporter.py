@@ -19,6 +19,7 @@ import dggs
 from . import queries, rollup_query
 from .atomic import atomic_write, refuse_store
 from .connection import Connection, guarded
+from .errors import StorageError
 from .progress import Bar, Progress
 from .rollup_memo import state
 
@@ -47,6 +48,27 @@ class Exporter:
             self._store, level, column, stats, cell=None, order_by=None, descending=True, limit=None
         )
         return rows
+
+    def _columns(self, level: int, column: str | None, stats: Sequence[str]) -> tuple[Any, Any]:
+        """The roll-up as columns: the ids (pyarrow strings) and the stats (a pyarrow Table), no dict per cell.
+
+        Typed as the dicts' lists would be typed by ``pa.array``, so the files keep their schema: a column
+        holding only NULLs (or none at all) is of pyarrow's null type.  A roll-up whose values are not of
+        its column's type (raw SQL writes) comes as dicts, as before.
+        """
+        import pyarrow as pa
+
+        try:
+            table = rollup_query.aggregate(self._store, level, column, stats, cell=None, order_by=None,
+                                           descending=True, limit=None, as_table=True)
+        except StorageError:
+            rows = self._rollup(level, column, stats)
+            return [row["cell"] for row in rows], queries.stat_columns(rows, stats)
+        props = table.drop_columns(["cell"])
+        for at, name in enumerate(props.column_names):
+            if props.column(name).null_count == props.num_rows:
+                props = props.set_column(at, name, pa.nulls(props.num_rows))
+        return table.column("cell"), props
 
     @guarded
     def to_geojson(
@@ -143,20 +165,30 @@ class Exporter:
         ...     table.column_names, table.column("sum").to_pylist()
         (['cell', 'cell_id', 'count', 'sum', 'bbox', 'geometry'], [7.0])
         """
+        return self._arrow(level, queries.export_stats(column, stats), column, densify, tolerance, rows)
+
+    def _arrow(self, level: int, stats: Sequence[str], column: str | None, densify: int | None, tolerance: Any,
+               rows: list[dict[str, Any]] | None = None, bar: Bar | None = None) -> Any:
+        """The work of :meth:`to_arrow` (``stats`` checked); ``bar`` told when the roll-up is done."""
         from dggs.arrow import cells_to_table
 
-        stats = queries.export_stats(column, stats)
         # An analyst exports one roll-up in several formats: the last table is remembered while the file
-        # is unchanged (the roll-up memo's file state), so the second format builds no polygons again.
+        # is unchanged (the roll-up memo's file state), so the second format neither rolls up nor draws again.
         conn, version, changes = state(self._store.conn)
         key = (level, column, tuple(stats), densify, tolerance)
         last = self._last_table
         if last is not None and last[0] == (*key, conn, version, changes):
+            if bar is not None:
+                bar.update(1)
             return last[1]
         if rows is None:
-            rows = self._rollup(level, column, stats)
-        cells = [row["cell"] for row in rows]
-        table = cells_to_table(cells, queries.stat_columns(rows, stats), densify, tolerance=tolerance)
+            cells, props = self._columns(level, column, stats)
+        else:
+            cells, props = [row["cell"] for row in rows], queries.stat_columns(rows, stats)
+        if bar is not None:
+            bar.update(1)
+            bar.stage(f"exporting: drawing {len(cells):,} cells")
+        table = cells_to_table(cells, props, densify, tolerance=tolerance)
         if self._store.projection != "ISEA":  # drawn with the grid the cells were binned on
             table = _grid_geometry(table, self._store.projection, densify, tolerance)
         # as the memo keeps it: others' commits as of before the roll-up, this connection's own changes
@@ -223,10 +255,10 @@ class Exporter:
         refuse_store(path, self.path)
         with Bar(progress, total=3, unit="steps", desc="exporting: rolling up") as bar, bar.heartbeat():
             stats = queries.export_stats(column, stats)
-            rows = self._rollup(level, column, stats)
-            bar.update(1)
-            bar.stage(f"exporting: drawing {len(rows):,} cells")
             if fmt == "geojson":
+                rows = self._rollup(level, column, stats)
+                bar.update(1)
+                bar.stage(f"exporting: drawing {len(rows):,} cells")
                 collection = self._draw_geojson(rows, densify, tolerance)
                 bar.update(1)
                 bar.stage("exporting: writing")
@@ -236,7 +268,7 @@ class Exporter:
                 return len(rows)
             from dggs.arrow import write_cells
 
-            table = self.to_arrow(level, column, stats, densify, tolerance=tolerance, rows=rows)
+            table = self._arrow(level, stats, column, densify, tolerance, bar=bar)  # as columns, no dict a cell
             bar.update(1)
             bar.stage("exporting: writing")
             write_cells(table, path, fmt)

@@ -299,6 +299,7 @@ class Ingester:
         on_error: str = "fail",
         replace: bool = False,
         progress: Progress | None = None,
+        cells: Any = None,
     ) -> IngestResult:
         """Bin points given as arrays (numpy, lists): the fastest way in.
 
@@ -317,13 +318,16 @@ class Ingester:
             Name that makes the ingest resumable (see :meth:`ingest_records`).
         crs, batch_size, on_error, replace, progress
             As in :meth:`ingest_csv` (default batch 100,000 rows).
+        cells : array_like, optional
+            The points' cells at ``level`` (str or int ids, valid, binned before on the store's grid, as
+            ``sjoin_cells(cells=)`` takes them): stored as given, not binned again (tests/storage/test_ordered_ingest.py).
 
         Raises
         ------
         BadRowError, LevelError, LevelMismatchError
             As :meth:`ingest_csv`: a bad row with ``on_error="fail"``, a bad ``level`` or another stored level.
-        DggsValueError
-            If an array is not flat or its length differs from ``lat``'s.
+        InvalidCellError, LevelMismatchError, DggsValueError
+            A given cell not valid or not of ``level`` (naming it); an array not flat or not as long as ``lat``.
 
         Examples
         --------
@@ -335,7 +339,8 @@ class Ingester:
         ({'temp': 'REAL'}, 2)
         """
         options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
-        return inputs.ingest_points(self._store, lat, lng, level, values, types, options, merge_rows=self.merge_rows)
+        return inputs.ingest_points(self._store, lat, lng, level, values, types, options, merge_rows=self.merge_rows,
+                                    cells=cells)
 
     @guarded
     def ingest_dataframe(
@@ -353,10 +358,11 @@ class Ingester:
         on_error: str = "fail",
         replace: bool = False,
         progress: Progress | None = None,
+        cells: str | None = None,
     ) -> IngestResult:
         """Bin the rows of a pandas DataFrame (``values=None``: every other column).
 
-        Keyword arguments are those of :meth:`ingest_points`.
+        Keyword arguments are those of :meth:`ingest_points`; ``cells`` names a column of cells binned before.
 
         Raises
         ------
@@ -374,7 +380,7 @@ class Ingester:
         """
         options = IngestOptions(batch_size, on_error, replace, crs, progress, source)
         return inputs.ingest_dataframe(
-            self._store, df, lat, lng, values, level, types, options, merge_rows=self.merge_rows
+            self._store, df, lat, lng, values, level, types, options, merge_rows=self.merge_rows, cells=cells
         )
 
     @guarded

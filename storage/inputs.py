@@ -217,6 +217,7 @@ def ingest_points(
     options: IngestOptions,
     *,
     merge_rows: int,
+    cells: Any = None,
 ) -> IngestResult:
     """Ingest coordinate and value arrays (the work of :meth:`dggs.storage.CellStore.ingest_points`).
 
@@ -224,11 +225,14 @@ def ingest_points(
     ------
     DggsValueError
         If the arrays are not one-dimensional or differ in length.
+    InvalidCellError, LevelMismatchError
+        A given cell that is not a valid id, or not of ``level`` (naming it and its row).
     """
     level = store.resolve_level(level)
     values = dict(values or {})
     value_spec(list(values))
     lat_a, lng_a, cols = readers_arrays.check_arrays(lat, lng, values)  # shapes, before registering
+    given = None if cells is None else _given_ids(cells, len(lat_a), level)
     declared: dict[str, Any] = {}
     for name, col in cols.items():
         implied = dtype_type(values[name]) or dtype_type(col)  # a pandas Int64 column with NA comes as objects
@@ -243,8 +247,11 @@ def ingest_points(
         # table in key order (no pending table, no sort in SQLite); computed after the source is known
         # to be incomplete, the same way on a resume.
         locate = grid_locate(store.projection)
-        order = readers_arrays.cell_order(lat_a, lng_a, level, make_transformer(options.crs), locate) if ordered else None
-        return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order)
+        if not ordered:
+            return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, located=given)
+        order, located = readers_arrays.ordered_cells(lat_a, lng_a, level, make_transformer(options.crs), locate,
+                                                      given)
+        return readers_arrays.array_batches(lat_a, lng_a, cols, batch_size, skip, order, located)
 
     return run_ingest(
         store,
@@ -273,22 +280,23 @@ def ingest_dataframe(
     options: IngestOptions,
     *,
     merge_rows: int,
+    cells: str | None = None,
 ) -> IngestResult:
     """Ingest the rows of a DataFrame (the work of :meth:`dggs.storage.CellStore.ingest_dataframe`).
 
     Raises
     ------
     DggsValueError
-        If the ``lat`` or ``lng`` column is missing.
+        If the ``lat``, ``lng`` or ``cells`` column is missing.
     """
-    missing = [c for c in (lat, lng) if c not in df.columns]
+    missing = [c for c in (lat, lng, *([] if cells is None else [cells])) if c not in df.columns]
     if missing:
         raise DggsValueError(
             f"DataFrame has no column(s) {', '.join(map(repr, missing))}; "
             f"its columns are {', '.join(map(repr, map(str, df.columns)))}"
         )
     if values is None:
-        values = [str(c) for c in df.columns if c not in (lat, lng)]
+        values = [str(c) for c in df.columns if c not in (lat, lng, cells)]
     names, declared = value_spec(values)
     declared = {**declared, **dict(types or {})}
     return ingest_points(
@@ -300,4 +308,36 @@ def ingest_dataframe(
         declared,
         options,
         merge_rows=merge_rows,
+        cells=None if cells is None else df[cells],
     )
+
+
+def _given_ids(cells: Any, n: int, level: int) -> Any:
+    """The points' given cells as integer ids (uint64), each checked to be a valid id of ``level``.
+
+    Raises
+    ------
+    DggsValueError
+        If there is not one cell a point.
+    InvalidCellError
+        Naming the first id that is not valid.
+    LevelMismatchError
+        Naming the first id of another level than ``level``, and its row.
+    """
+    import numpy as np
+
+    import dggs
+    from dggs.errors import LevelMismatchError
+
+    column = readers_arrays.as_column(cells)
+    if column.ndim != 1 or column.shape[0] != n:
+        raise DggsValueError(f"cells has {column.size} values but lat has {n}: give one cell a point")
+    ids = np.asarray(dggs.str_to_int(column), dtype=np.uint64) if n else np.zeros(0, dtype=np.uint64)
+    levels = np.asarray(dggs.get_level(ids)) if n else np.zeros(0, dtype=np.int64)
+    wrong = np.flatnonzero(levels != level)
+    if wrong.size:
+        at = int(wrong[0])
+        raise LevelMismatchError(
+            f"cell {column[at]!r} (row {at + 1}) is at level {int(levels[at])}, not the ingest's level {level}"
+        )
+    return ids

@@ -72,7 +72,7 @@ class Producer:
             self._types.update(new)
             types = {name: self._types[name] for name in batch.values}
             prepared = prepare(batch, level, types, transformer, locate)
-            prepared.partials = batch_partials(prepared.values, prepared.width, types, self._rollups)
+            prepared.partials = batch_partials(prepared.values, prepared.width, types, self._rollups, prepared.ids)
             yield batch, prepared, types, new
 
     def _run(self) -> None:

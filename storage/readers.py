@@ -54,6 +54,10 @@ class RawBatch:
     parts : list or None
         Index of each entry within its record (points of a MultiPoint,
         cells of a polygon); None means all 0.
+    located : numpy uint64 array or None
+        Integer ids of the entries' cells at the ingest's level, binned already from these coordinates
+        in the same way (:func:`~dggs.storage.readers_arrays.cell_order` sorts by them), meaningful where
+        the coordinates are good: :func:`~dggs.storage.convert.prepare` bins none again.
     record : callable
         ``record(i)`` gives entry ``i`` as a dict, for the rejects table.
     """
@@ -69,6 +73,7 @@ class RawBatch:
     bad: dict[int, tuple[str | None, Any, str]] = field(default_factory=dict)
     cells: Sequence[str] | None = None
     parts: Sequence[int] | None = None
+    located: Any = None
 
     def __len__(self) -> int:
         return len(self.rows)

@@ -18,7 +18,7 @@ from dggs.errors import DggsValueError
 from .crs import transform_points
 from .readers import RawBatch, _skip
 
-__all__ = ["records_batches", "array_batches", "check_arrays", "cell_order", "orderable"]
+__all__ = ["records_batches", "array_batches", "check_arrays", "cell_order", "ordered_cells", "orderable"]
 
 
 def _dict_at(items: Sequence[Mapping[str, Any]], i: int) -> dict[str, Any]:
@@ -117,6 +117,20 @@ def orderable(lat: np.ndarray, lng: np.ndarray) -> bool:
 def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, locate: Any = None) -> np.ndarray:
     """The permutation that puts the points in cell id order (the arrays must be :func:`orderable`).
 
+    :func:`ordered_cells` gives the ids too.
+    """
+    return ordered_cells(lat, lng, level, transformer, locate)[0]
+
+
+def ordered_cells(
+    lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, locate: Any = None, ids: Any = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The permutation that puts the points in cell id order, and their integer ids in that order.
+
+    The ids (uint64) are 0 where a point cannot be binned; :func:`array_batches` hands them to each
+    batch (``RawBatch.located``), so that the points are binned once, not again by ``prepare``.
+    ``ids``: the points' ids given by the caller (binned before, checked): then none is binned here.
+
     Only speed depends on it: rows inserted in key order walk the clustered
     table once instead of sorting in SQLite (three times slower than numpy's
     sort).  Points that cannot be binned go first; ties keep input order.
@@ -134,7 +148,10 @@ def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, l
         ok &= (np.abs(y) <= 90) & (np.abs(x) <= 180)
     good = np.flatnonzero(ok)
     locate = dggs.latlng_to_cell if locate is None else locate  # the store's grid's
-    keys = np.asarray(locate(y[good], x[good], level, as_int=True), dtype=np.uint64)
+    if ids is not None:
+        keys = np.asarray(ids, dtype=np.uint64)[good]
+    else:
+        keys = np.asarray(locate(y[good], x[good], level, as_int=True), dtype=np.uint64)
     # An id of level L leaves its low 2 * (28 - L) bits zero: with the position in them, a plain sort
     # (8x faster than argsort) gives the stable order.
     free = 2 * (dggs.MAX_LEVEL - level)
@@ -142,11 +159,14 @@ def cell_order(lat: np.ndarray, lng: np.ndarray, level: int, transformer: Any, l
     if len(good) <= (1 << free) and not (keys & low).any():
         packed = np.sort(keys | np.arange(len(good), dtype=np.uint64))
         ranked = good[(packed & low).astype(np.intp)]
+        sorted_keys = packed & ~low
     else:
-        ranked = good[np.argsort(keys, kind="stable")]
+        by_key = np.argsort(keys, kind="stable")
+        ranked, sorted_keys = good[by_key], keys[by_key]
     # The points that cannot be binned first: with on_error="fail" the first batch fails and nothing is
     # stored, so that fixing them (which would change the order) and ingesting again resumes from row 0.
-    return np.concatenate([np.flatnonzero(~ok), ranked])
+    bad = np.flatnonzero(~ok)
+    return np.concatenate([bad, ranked]), np.concatenate([np.zeros(len(bad), dtype=np.uint64), sorted_keys])
 
 
 def array_batches(
@@ -156,8 +176,11 @@ def array_batches(
     batch_size: int,
     skip: int = 0,
     order: np.ndarray | None = None,
+    located: np.ndarray | None = None,
 ) -> Iterator[RawBatch]:
     """Slice equal-length arrays (numpy, lists, pandas columns) into batches, in ``order`` if given.
+
+    ``located``: the points' ids in that order (:func:`ordered_cells`), handed to each batch.
 
     Raises
     ------
@@ -187,4 +210,5 @@ def array_batches(
             values=batch_cols,
             text=False,
             record=record,
+            located=None if located is None else located[start:stop],
         )

@@ -44,6 +44,7 @@ import numpy as np
 
 from dggs.errors import StorageError
 
+from .dict_rows import dict_maker
 from .schema import quote
 
 __all__ = ["Rolled", "rolled_from_rows", "roll_up", "order", "head"]
@@ -89,8 +90,8 @@ class Rolled:
             keys = ("cell", *self.stats)
             return list(map(dict, map(zip, itertools.repeat(keys), self.tuples)))  # faster than dict(zip())
         cols = self.lists()
-        keys = tuple(cols)
-        return list(map(dict, map(zip, itertools.repeat(keys), zip(*cols.values(), strict=True))))
+        made: list[dict[str, Any]] = dict_maker(tuple(cols))(*cols.values())
+        return made
 
     def table(self, types: dict[str, Any]) -> Any:
         """A pyarrow Table: ``cell`` (string), then each stat typed by ``types`` (pyarrow types)."""

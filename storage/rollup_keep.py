@@ -250,9 +250,12 @@ class BatchPartials:
 
 
 def batch_partials(
-    values: list[Any], width: int, types: Mapping[str, str], levels: tuple[int, ...]
+    values: list[Any], width: int, types: Mapping[str, str], levels: tuple[int, ...], ids: Any = None
 ) -> BatchPartials | None:
-    """The partials of one prepared batch (flat rows of ``width``, value columns last, in ``types`` order)."""
+    """The partials of one prepared batch (flat rows of ``width``, value columns last, in ``types`` order).
+
+    ``ids``: the rows' cells as integer ids, where known (``Prepared.ids``): the string ids are not parsed.
+    """
     if not levels:
         return None
     columns = tuple(numeric(types))
@@ -261,7 +264,8 @@ def batch_partials(
         return out
     offset = width - len(types)
     where = {name: offset + k for k, name in enumerate(types)}
-    ids = np.asarray(dggs.str_to_int(np.asarray(values[0::width])), dtype=np.uint64)
+    if ids is None:
+        ids = np.asarray(dggs.str_to_int(np.asarray(values[0::width])), dtype=np.uint64)
     order = None
     if ids.shape[0] > 1 and not bool(np.all(ids[1:] >= ids[:-1])):  # ordered ingests come sorted already
         order = np.argsort(ids, kind="stable")

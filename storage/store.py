@@ -378,20 +378,22 @@ class CellStore:
         self, lat: Any, lng: Any, level: int | None = None, values: Mapping[str, Any] | None = None, *,
         types: Mapping[str, Any] | None = None, source: str | None = None, crs: Any = None,
         batch_size: int = 100_000, on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+        cells: Any = None,
     ) -> IngestResult:
         return self._ingester.ingest_points(lat, lng, level, values, types=types, source=source, crs=crs,
                                             batch_size=batch_size, on_error=on_error, replace=replace,
-                                            progress=progress)
+                                            progress=progress, cells=cells)
 
     @_documented_by(Ingester.ingest_dataframe)
     def ingest_dataframe(  # noqa: D102
         self, df: Any, lat: str = "lat", lng: str = "lng", values: Values | None = None, level: int | None = None,
         *, types: Mapping[str, Any] | None = None, source: str | None = None, crs: Any = None,
         batch_size: int = 100_000, on_error: str = "fail", replace: bool = False, progress: IngestProgress | None = None,
+        cells: str | None = None,
     ) -> IngestResult:
         return self._ingester.ingest_dataframe(df, lat, lng, values, level, types=types, source=source, crs=crs,
                                                batch_size=batch_size, on_error=on_error, replace=replace,
-                                               progress=progress)
+                                               progress=progress, cells=cells)
 
     @_documented_by(Ingester.merge)
     def merge(self) -> None:  # noqa: D102

@@ -117,3 +117,108 @@ def test_a_bad_coordinate_fails_before_any_row_is_stored(tmp_path):
         lat[3::5] = 50.0
         result = store.ingest_points(lat, lng, 8, batch_size=5, source="s")
         assert result.rows_resumed == 0 and store.count() == 50
+
+
+@given(coords, st.sampled_from([0, 9, 17, 28]), st.sampled_from(["ISEA", "IVEA"]), st.integers(1, 9))
+@example([(90.0, 0.0), (-90.0, 180.0), (math.nan, 0.0), (91.0, 1.0), (0.0, -180.0)], 28, "ISEA", 2)
+@example([(26.565051177077986, 36.0), (0.0, 180.0), (45.0, 1e300)], 17, "IVEA", 1)
+def test_an_ordered_ingest_bins_each_point_once_and_stores_its_own_cell(points, level, projection, batch_size):
+    """The ids ``cell_order`` binned are the ones stored (no second binning per batch), bad rows skipped."""
+    import warnings
+
+    from dggs.storage import projection as grid_projection
+
+    located: list[int] = []
+    real = grid_projection.grid_locate
+
+    def counting(name):
+        locate = real(name)
+
+        def counted(lat, lng, lvl, **kwargs):
+            located.append(int(np.size(lat)))
+            return locate(lat, lng, lvl, **kwargs)
+
+        return counted
+
+    lat = np.array([p[0] for p in points], dtype=float)
+    lng = np.array([p[1] for p in points], dtype=float)
+    ok = np.isfinite(lat) & np.isfinite(lng) & (np.abs(lat) <= 90) & (np.abs(lng) <= 180)
+    grid = dggs.Grid(projection)
+    want = sorted((grid.latlng_to_cell(float(y), float(x), level), i + 1)  # each point binned alone
+                  for i, (y, x) in enumerate(zip(lat, lng, strict=True)) if ok[i])
+    import dggs.storage.ingest as ingest
+    import dggs.storage.inputs as inputs
+
+    saved = inputs.grid_locate, ingest.grid_locate
+    inputs.grid_locate = ingest.grid_locate = counting  # the order's binning and the batches'
+    try:
+        with CellStore(":memory:", projection=projection) as store, warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            store.ingest_points(lat, lng, level, {"v": np.arange(len(lat))}, on_error="skip", batch_size=batch_size)
+            got = sorted(store.conn.execute("SELECT cell, row FROM points").fetchall())
+    finally:
+        inputs.grid_locate, ingest.grid_locate = saved
+    assert got == want
+    assert sum(located) == int(ok.sum())  # once each: in cell_order, none again in the batches
+
+
+@pytest.mark.parametrize("as_int", [False, True])
+@pytest.mark.parametrize("n", [1, 500])
+def test_cells_binned_before_are_stored_as_binning_again_would_store_them(tmp_path, as_int, n):
+    """``ingest_dataframe(cells=...)`` stores the rows an ingest binning the points stores, binning none."""
+    import warnings
+
+    import pandas as pd
+
+    import dggs.storage.ingest as ingest
+    import dggs.storage.inputs as inputs
+
+    rng = np.random.default_rng(n)
+    lat = np.concatenate([[90.0, -90.0, 0.0, math.nan], rng.uniform(-90, 90, n)])[:max(n, 4)]
+    lng = np.concatenate([[0.0, 180.0, -180.0, 0.0], rng.uniform(-180, 180, n)])[:max(n, 4)]
+    if n == 1:
+        lat, lng = lat[:1], lng[:1]
+    ok = np.isfinite(lat)
+    cells = np.empty(len(lat), dtype=object)
+    cells[ok] = dggs.latlng_to_cell(lat[ok], lng[ok], 12, as_int=as_int)
+    cells[~ok] = dggs.latlng_to_cell(0.0, 0.0, 12, as_int=as_int)  # a valid id beside a bad point: still bad
+    df = pd.DataFrame({"lat": lat, "lng": lng, "v": np.arange(len(lat)), "cell": cells})
+    stored = {}
+    for name, column in (("binned", None), ("given", "cell")):
+        saved = inputs.grid_locate, ingest.grid_locate
+        if column is not None:  # binning anything would fail the test
+            def refuse(projection):
+                def locate(*args, **kwargs):
+                    raise AssertionError("a point was binned again")
+
+                return locate
+
+            inputs.grid_locate = ingest.grid_locate = refuse
+        try:
+            with CellStore(tmp_path / f"{name}.db") as store, warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                store.keep_rollups([8])
+                store.ingest_dataframe(df, values=["v"], level=12, cells=column, on_error="skip")
+                stored[name] = (store.conn.execute("SELECT * FROM points ORDER BY cell, row").fetchall(),
+                                store.conn.execute("SELECT * FROM rollups ORDER BY level, cell").fetchall(),
+                                store.columns)
+        finally:
+            inputs.grid_locate, ingest.grid_locate = saved
+    assert stored["given"] == stored["binned"]
+    assert len(stored["given"][0]) == int(ok.sum())
+
+
+def test_given_cells_are_checked_before_anything_is_stored(tmp_path):
+    import pandas as pd
+
+    df = pd.DataFrame({"lat": [1.0, 2.0], "lng": [3.0, 4.0]})
+    with CellStore(tmp_path / "c.db") as store:
+        with pytest.raises(dggs.InvalidCellError, match="'Z9'"):
+            store.ingest_dataframe(df.assign(cell=["C40", "Z9"]), level=1, cells="cell")
+        with pytest.raises(dggs.LevelMismatchError, match=r"'C401' \(row 2\) is at level 3, not the ingest's level 2"):
+            store.ingest_dataframe(df.assign(cell=["C40", "C401"]), level=2, cells="cell")
+        with pytest.raises(dggs.DggsValueError, match="no column"):
+            store.ingest_dataframe(df, level=2, cells="cell")
+        with pytest.raises(dggs.DggsValueError, match="cells has 1 values but lat has 2"):
+            store.ingest_points(df["lat"], df["lng"], 2, cells=["C40"])
+        assert store.count() == 0 and store.sources() == []
