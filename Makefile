@@ -125,7 +125,7 @@ DUCKDB_CLI_VERSION ?= 1.5.6
 DUCKDB_VERSION ?= $(DUCKDB_CLI_VERSION)
 $(DUCKDB_EXT): $(wildcard libdggs/duckdb/*.c libdggs/duckdb/*.h libdggs/src/*.c libdggs/src/*.h) \
 		libdggs/include/dggs.h libdggs/duckdb/build.py
-	$(DUCKDB_PY) libdggs/duckdb/build.py --duckdb-version $(DUCKDB_VERSION) --out $(DUCKDB_EXT)
+	$(DUCKDB_PY) libdggs/duckdb/build.py --werror --duckdb-version $(DUCKDB_VERSION) --out $(DUCKDB_EXT)
 
 duckdb-extension: $(DUCKDB_EXT)
 
@@ -136,7 +136,7 @@ test-duckdb-extension: $(DUCKDB_EXT)
 # The same tests with the extension built under AddressSanitizer and UBSan, in the CLI's binary with gcc's
 # runtimes preloaded (the Python connection test is left out: it would need them in the Python process).
 test-duckdb-extension-sanitize:
-	$(DUCKDB_PY) libdggs/duckdb/build.py --sanitize --duckdb-version $(DUCKDB_VERSION) --out build/duckdb-san/dggs.duckdb_extension
+	$(DUCKDB_PY) libdggs/duckdb/build.py --werror --sanitize --duckdb-version $(DUCKDB_VERSION) --out build/duckdb-san/dggs.duckdb_extension
 	$(DUCKDB_PY) -m pip install --quiet duckdb-cli==$(DUCKDB_CLI_VERSION)
 	DGGS_DUCKDB_CLI="$$($(DUCKDB_PY) -c 'import duckdb_cli, os; print(os.path.join(os.path.dirname(duckdb_cli.__file__), "duckdb"))')" \
 	DGGS_DUCKDB_CLI_PRELOAD="$$(cc -print-file-name=libasan.so) $$(cc -print-file-name=libubsan.so)" \

@@ -31,6 +31,8 @@ DEFAULT_DUCKDB = "1.5.6"
 EXTENSION_VERSION = "0.1.0"
 FLAGS = ["-std=c11", "-O2", "-fPIC", "-shared", "-fvisibility=hidden",
          "-ffp-contract=off", "-fno-fast-math", "-fno-finite-math-only"]  # fmt: skip
+# The core's own warnings (libdggs/CMakeLists.txt); DuckDB's headers are -isystem, so only our code is checked.
+WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion"]
 
 
 def headers(version: str, sdk: Path) -> Path:
@@ -96,7 +98,7 @@ def footer(platform_name: str, api_version: str, extension_version: str, abi: st
 SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer", "-g"]
 
 
-def build(version: str, out: Path, cc: str, sanitize: bool = False) -> Path:
+def build(version: str, out: Path, cc: str, sanitize: bool = False, werror: bool = False) -> Path:
     include = headers(version, ROOT / "build" / "duckdb-sdk")
     out.parent.mkdir(parents=True, exist_ok=True)
     library = Path(tempfile.mkdtemp(prefix="dggs-duckdb-")) / "dggs.so"  # not left beside the output (a wheel's dggs/)
@@ -106,8 +108,8 @@ def build(version: str, out: Path, cc: str, sanitize: bool = False) -> Path:
                f"-DDUCKDB_EXTENSION_API_VERSION_MINOR={minor}", f"-DDUCKDB_EXTENSION_API_VERSION_PATCH={patch}"]  # fmt: skip
     if platform.machine() in ("i386", "i686", "x86"):
         defines += ["-msse2", "-mfpmath=sse"]
-    includes = [f"-I{include}", f"-I{ROOT / 'libdggs' / 'include'}", f"-I{ROOT / 'libdggs' / 'src'}"]
-    flags = FLAGS + (SANITIZE if sanitize else [])
+    includes = [f"-isystem{include}", f"-I{ROOT / 'libdggs' / 'include'}", f"-I{ROOT / 'libdggs' / 'src'}"]
+    flags = FLAGS + WARNINGS + (["-Werror"] if werror else []) + (SANITIZE if sanitize else [])
     subprocess.run([cc, *flags, *defines, *includes, *sources, "-o", str(library), "-lm"], check=True)
     tmp = out.with_suffix(".tmp")
     shutil.copyfile(library, tmp)
@@ -125,8 +127,9 @@ def main() -> None:
     parser.add_argument("--cc", default=os.environ.get("CC", "cc"))
     parser.add_argument("--sanitize", action="store_true",
                         help="AddressSanitizer and UBSan (run the CLI binary with LD_PRELOAD of the compiler's libasan)")
+    parser.add_argument("--werror", action="store_true", help="fail on any warning (make's builds and CI)")
     args = parser.parse_args()
-    print(build(args.duckdb_version, args.out, args.cc, args.sanitize))
+    print(build(args.duckdb_version, args.out, args.cc, args.sanitize, args.werror))
 
 
 if __name__ == "__main__":

@@ -502,7 +502,7 @@ static dggs_error fill_cells(const double *lat_lng, const int64_t *ring_sizes, i
     dggs_fill_state *s = malloc(sizeof *s);
     if (!s) return DGGS_E_FAILED;
     err = run_descent(proj, p, level, mode, s, ids, keep);
-    *n = s->n;
+    *n = err == DGGS_OK ? s->n : 0; /* s is unset where a first malloc failed */
     free(s);
     if (err != DGGS_OK || !test) return err;
     int densify = dggs_fill_densify[level];
