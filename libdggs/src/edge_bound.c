@@ -84,13 +84,22 @@ static double edge_piece(const double a[3], const double b[3], const double m[3]
  * without the round trip through (lat, lng) that dggs_geodetic_to_unit would undo (it costs more than the
  * inverse). p holds 3 (densify + 1) rows. */
 static void edge_units(dggs_projection proj, uint64_t cell, int densify, double (*p)[3]) {
-    double t[6];
-    int face = dggs_corners(cell, t), step = densify + 1;
+    double t[6], x[DGGS_INVERSE_LANES], y[DGGS_INVERSE_LANES];
+    int face = dggs_corners(cell, t), step = densify + 1, m = 0, start = 0;
     for (int i = 0; i < 3; i++) {
         double x0 = t[2 * i], y0 = t[2 * i + 1], x1 = t[(2 * i + 2) % 6], y1 = t[(2 * i + 3) % 6];
         double dx = (x1 - x0) / step, dy = (y1 - y0) / step;
-        for (int j = 0; j < step; j++) dggs_proj_inverse(proj, face, x0 + j * dx, y0 + j * dy, p[i * step + j]);
+        for (int j = 0; j < step; j++) {
+            x[m] = x0 + j * dx;
+            y[m++] = y0 + j * dy;
+            if (m == DGGS_INVERSE_LANES) { /* several at once: their chains overlap (dggs_proj_inverse_many) */
+                dggs_proj_inverse_many(proj, face, m, x, y, p + start);
+                start += m;
+                m = 0;
+            }
+        }
     }
+    if (m > 0) dggs_proj_inverse_many(proj, face, m, x, y, p + start);
 }
 
 void dggs_edge_bounds_of(dggs_projection proj, uint64_t cell, double bulge_m[3], double length_m[3]) {
