@@ -282,25 +282,19 @@ _RAGGED_CHUNK = 8192
 def ragged_geometries(ids: np.ndarray, tolerance: Any = EXACT, max_points: int | None = None, ivea: bool = False) -> np.ndarray:
     """Shapely geometries of valid ids, each with the points per edge ``tolerance`` needs, in one ragged build.
 
-    The core counts each cell's points per edge and, in the same pass, writes its closed (lng, lat) ring from
-    the count's own points where they suffice (:func:`dggs.index._kernel.edge_bound.edge_rings_count`: 0, 1 or
-    3 points an edge, most cells); a second pass lays every ring end to end in one flat buffer and flags those
-    at a pole or across the antimeridian (``edge_rings_write``).  ``shapely.from_ragged_array`` makes the
-    polygons in one call, whatever each cell's count; the flagged rings are then replaced by their exact
-    geometries, one by one.  Cells go through in chunks of :data:`_RAGGED_CHUNK`; ``max_points`` is checked
-    on the points of all chunks so far before each chunk's buffer is allocated.
+    The core counts each cell's points per edge and writes its (lng, lat) ring in one pass (from the count's own
+    points at 0, 1 or 3 an edge: :func:`dggs.index._kernel.edge_bound.edge_rings_count`), then lays the rings end
+    to end and flags those at a pole or across the antimeridian (``edge_rings_write``), which are replaced by
+    their exact geometries one by one.  In chunks; ``max_points`` checked before each chunk's buffer.
     """
     from ._kernel import edge_bound
     from ._kernel import ivea_points as ki
 
     n = ids.shape[0]
     check_point_count(0, 0, max_points)  # a bad max_points is named before any work
-    if n == 0:
-        return np.empty(0, dtype=object)
     ids = np.ascontiguousarray(ids, dtype=np.uint64)
     metres, area = check_tolerance(tolerance)
-    proj = 1 if ivea else 0
-    kernel = ki if ivea else kp
+    proj, kernel = (1, ki) if ivea else (0, kp)
     out = np.empty(n, dtype=object)
     scratch = np.empty((min(n, _RAGGED_CHUNK) * edge_bound.EDGE_RING_ROWS, 2))
     total = 0
@@ -315,9 +309,7 @@ def ragged_geometries(ids: np.ndarray, tolerance: Any = EXACT, max_points: int |
         except TooManyCellsError:  # named with the points of every cell, as a check before any work would
             check_point_count(1, int((3 * (edge_points(ids, tolerance, ivea) + 1) + 1).sum()), max_points)
             raise
-        offsets = np.empty(m + 1, dtype=np.int64)
-        coords = np.empty((rows, 2))
-        special = np.empty(m, dtype=np.uint8)
+        offsets, coords, special = np.empty(m + 1, dtype=np.int64), np.empty((rows, 2)), np.empty(m, dtype=np.uint8)
         edge_bound.edge_rings_write(proj, part, counts, scratch, offsets, coords, special)
         out[lo : lo + m] = shapely.from_ragged_array(shapely.GeometryType.POLYGON, coords, (offsets, np.arange(m + 1)))
         for i in np.flatnonzero(special).tolist():
