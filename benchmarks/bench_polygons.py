@@ -76,30 +76,44 @@ def main(n: int = 40_000) -> None:
 
 
 def parts(ours: np.ndarray, theirs: np.ndarray, tolerance: float = 10.0, rounds: int = 5) -> None:
-    """The default polygons' time a cell in parts (the count, the rings, shapely's build) beside H3's whole."""
+    """The default polygons' time a cell in parts (index/_shapes.py ragged_geometries' steps) beside H3's whole."""
     import pyarrow as pa
     import shapely
     from h3ronpy.vector import cells_to_wkb_polygons
 
     import dggs
-    from dggs.index._densify import edge_points
     from dggs.index._kernel import edge_bound
+    from dggs.index._kernel import points as kp
+    from dggs.index._shapes import ring_to_geometry
 
     n = ours.size
-    counts = edge_points(ours, tolerance)
-    offsets = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(3 * (counts + 1) + 1, out=offsets[1:])
-    coords = np.empty((int(offsets[-1]), 2))
+    counts = np.empty(n, dtype=np.int32)
+    scratch = np.empty((n * edge_bound.EDGE_RING_ROWS, 2))
+    rows = edge_bound.edge_rings_count(0, ours, tolerance, 0.0, counts, scratch)
+    offsets = np.empty(n + 1, dtype=np.int64)
+    coords = np.empty((rows, 2))
+    special = np.empty(n, dtype=np.uint8)
+    edge_bound.edge_rings_write(0, ours, counts, scratch, offsets, coords, special)
+    poles = np.flatnonzero(special).tolist()
+
+    def exact_rings() -> None:
+        for i in poles:
+            buf = np.empty((3 * (int(counts[i]) + 1) + kp.SPECIAL_EXTRA, 2))
+            m = kp.special_ring(ours[i], int(counts[i]), buf)
+            ring_to_geometry(buf[:m, 0], buf[:m, 1])
+
     cases = {
         "h3ronpy WKB + shapely.from_wkb (res 6)": (lambda: shapely.from_wkb(
             pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False)), theirs.size),
         f"dggs.cell_to_polygon(tolerance={tolerance:g}) (level 10)": (
             lambda: dggs.cell_to_polygon(ours, tolerance=tolerance), n),
-        "  the count (the core's edge bound: 12 inverse projections a cell)": (lambda: edge_points(ours, tolerance), n),
-        "  the rings (the core, one flat buffer)": (
-            lambda: edge_bound.ragged_rings(0, ours, counts.astype(np.int32), offsets, coords), n),
+        "  pass one: the count (12 inverse projections a cell) and, from its points, the ring (0, 1 or 3 an edge)": (
+            lambda: edge_bound.edge_rings_count(0, ours, tolerance, 0.0, counts, scratch), n),
+        "  pass two: the rings end to end (the other counts' drawn), the pole/antimeridian flags": (
+            lambda: edge_bound.edge_rings_write(0, ours, counts, scratch, offsets, coords, special), n),
         "  shapely.from_ragged_array": (lambda: shapely.from_ragged_array(
             shapely.GeometryType.POLYGON, coords, (offsets, np.arange(n + 1))), n),
+        f"  the {len(poles)} cells at a pole or across the antimeridian (exact rings, one by one)": (exact_rings, n),
     }
     best = dict.fromkeys(cases, float("inf"))
     for f, _ in cases.values():
@@ -113,6 +127,9 @@ def parts(ours: np.ndarray, theirs: np.ndarray, tolerance: float = 10.0, rounds:
     print("| case | per cell |\n|---|---:|")
     for name, (_, count) in cases.items():
         print(f"| {name} | {1e6 * best[name] / count:.2f} us |")
+    counts_seen = np.bincount(counts)
+    print(f"\npoints an edge at level 10, {tolerance:g} m: " + ", ".join(
+        f"{k}: {100 * c / n:.1f} %" for k, c in enumerate(counts_seen.tolist()) if c))
 
 
 if __name__ == "__main__":

@@ -657,6 +657,16 @@ dggs_error dggs_cell_edge_bounds(dggs_cell cell, dggs_projection proj, double bu
 dggs_error dggs_cell_edge_points(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
                                  int *points);
 
+/* dggs_cell_edge_points and the boundary it asks for, in one call: the points per edge into *points, and the
+ * boundary dggs_cell_to_boundary(cell, *points) draws as a closed ring of (lng, lat) degree pairs (lng first, the
+ * first point repeated at the end: 3 (*points + 1) + 1 points, at most 3 (DGGS_EDGE_POINTS_MAX + 1) + 1) into
+ * `lng_lat`, room for `size` points. The same numbers as those two calls, bit for bit, for less work: where the
+ * count is 0, 1 or 3 every point of the ring is one the count has projected already. Errors as
+ * dggs_cell_edge_points's, and DGGS_E_BUFFER if `size` is under the ring's points (*points is set then, nothing
+ * else written: ask again with room for 3 (*points + 1) + 1). */
+dggs_error dggs_cell_edge_ring(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
+                               double *lng_lat, size_t size, int *points);
+
 /* ---- end points per edge ---- */
 
 #ifdef __cplusplus

@@ -19,38 +19,11 @@
  * pi/2's pieces, pi, atan(1/2), atan(3/2) and the words of 2/pi are computed with mpmath at 2000 bits
  * (libdggs/tools/dmath_constants.py prints them). sqrt, fabs, ldexp, frexp and copysign are exact by IEEE 754. */
 #include "dmath.h"
+#include "dmath_inline.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
-
-/* ------------------------------------------------------------------------------------------------------------
- * Error-free transformations (Knuth's TwoSum, Dekker's FastTwoSum, Veltkamp's split and Dekker's product)
- * ------------------------------------------------------------------------------------------------------------ */
-
-static inline void two_sum(double a, double b, double *s, double *e) {
-    double t = a + b;
-    double bb = t - a;
-    *e = (a - (t - bb)) + (b - bb);
-    *s = t;
-}
-
-/* |a| >= |b| (or a == 0). */
-static inline void fast_two_sum(double a, double b, double *s, double *e) {
-    double t = a + b;
-    *e = b - (t - a);
-    *s = t;
-}
-
-/* a * b = p + e exactly, for |a|, |b| < 2^995 and products well above the subnormals. */
-static inline void two_prod(double a, double b, double *p, double *e) {
-    double ca = 134217729.0 * a, cb = 134217729.0 * b; /* 2^27 + 1 */
-    double ah = ca - (ca - a), al = a - ah;
-    double bh = cb - (cb - b), bl = b - bh;
-    double q = a * b;
-    *e = ((ah * bh - q) + ah * bl + al * bh) + al * bl;
-    *p = q;
-}
 
 static inline uint64_t bits_of(double x) {
     uint64_t u;
@@ -94,30 +67,6 @@ static const uint32_t TWO_OVER_PI[40] = {
 /* ------------------------------------------------------------------------------------------------------------
  * sin and cos
  * ------------------------------------------------------------------------------------------------------------ */
-
-/* sin(x + y) for |x| <= pi/4, |y| <= ulp(x) / 2: x + x^3 (S1 + x^2 P(x^2)), y entering as y (1 - x^2 / 2). */
-static inline double kernel_sin(double x, double y) {
-    static const double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
-                        S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
-                        S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
-    double z = x * x;
-    double v = z * x;
-    double r = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
-    return x - ((z * (0.5 * y - v * r) - y) - v * S1);
-}
-
-/* cos(x + y) for |x| <= pi/4: 1 - x^2/2 + x^4 Q(x^2) - x y, the rounding of 1 - x^2/2 carried along. */
-static inline double kernel_cos(double x, double y) {
-    static const double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
-                        C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
-                        C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
-    double z = x * x;
-    double w = z * z;
-    double r = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
-    double hz = 0.5 * z;
-    double one_minus_hz = 1.0 - hz;
-    return one_minus_hz + (((1.0 - one_minus_hz) - hz) + (z * r - x * y));
-}
 
 /* 32 bits of 2/pi from bit position p (position j weighs 2^-j; positions < 1 are zero). */
 static uint32_t two_over_pi_bits(int p) {
@@ -177,9 +126,9 @@ static unsigned reduce_large(double x, double *y0, double *y1) {
     double f_hi = ldexp((double)(w2 >> 11), -51 - shift);
     double f_lo = ldexp((double)(((w2 & 0x7ffu) << 53) | (w1 >> 11)), -115 - shift);
     double p, pe;
-    two_prod(f_hi, PIO2_HI, &p, &pe);
+    dmath_two_prod(f_hi, PIO2_HI, &p, &pe);
     pe += f_hi * PIO2_LO + f_lo * PIO2_HI;
-    fast_two_sum(p, pe, y0, y1);
+    dmath_fast_two_sum(p, pe, y0, y1);
     if (negative) {
         *y0 = -*y0;
         *y1 = -*y1;
@@ -204,54 +153,50 @@ static unsigned reduce(double x, double *y0, double *y1) {
         *y1 = (a - hi) - w;
     } else { /* near a multiple of pi/2: two more 33-bit pieces, exact products, double-double sums */
         double s, e, s2, e2;
-        two_sum(a, -(fn * P2), &s, &e);
-        two_sum(s, -(fn * P3), &s2, &e2);
-        fast_two_sum(s2, (e + e2) - fn * P3T, y0, y1);
+        dmath_two_sum(a, -(fn * P2), &s, &e);
+        dmath_two_sum(s, -(fn * P3), &s2, &e2);
+        dmath_fast_two_sum(s2, (e + e2) - fn * P3T, y0, y1);
     }
     return (unsigned)(int64_t)fn & 3u;
 }
 
 double dggs_sin(double x) {
     double ax = fabs(x);
-    if (ax <= PIO4) return ax < 0x1p-26 ? x : kernel_sin(x, 0.0);
+    if (ax <= PIO4) return ax < 0x1p-26 ? x : dmath_kernel_sin(x, 0.0);
     if (!(ax < INFINITY)) return x - x; /* nan for inf and nan */
     double y0, y1;
     switch (reduce(x, &y0, &y1)) {
-    case 0: return kernel_sin(y0, y1);
-    case 1: return kernel_cos(y0, y1);
-    case 2: return -kernel_sin(y0, y1);
-    default: return -kernel_cos(y0, y1);
+    case 0: return dmath_kernel_sin(y0, y1);
+    case 1: return dmath_kernel_cos(y0, y1);
+    case 2: return -dmath_kernel_sin(y0, y1);
+    default: return -dmath_kernel_cos(y0, y1);
     }
 }
 
 double dggs_cos(double x) {
     double ax = fabs(x);
-    if (ax <= PIO4) return ax < 0x1p-27 ? 1.0 : kernel_cos(x, 0.0);
+    if (ax <= PIO4) return ax < 0x1p-27 ? 1.0 : dmath_kernel_cos(x, 0.0);
     if (!(ax < INFINITY)) return x - x;
     double y0, y1;
     switch (reduce(x, &y0, &y1)) {
-    case 0: return kernel_cos(y0, y1);
-    case 1: return -kernel_sin(y0, y1);
-    case 2: return -kernel_cos(y0, y1);
-    default: return kernel_sin(y0, y1);
+    case 0: return dmath_kernel_cos(y0, y1);
+    case 1: return -dmath_kernel_sin(y0, y1);
+    case 2: return -dmath_kernel_cos(y0, y1);
+    default: return dmath_kernel_sin(y0, y1);
     }
 }
 
 /* sin and cos of one argument, one reduction: the bits of dggs_sin(x) and dggs_cos(x). */
 void dggs_sincos(double x, double *s, double *c) {
     double ax = fabs(x);
-    if (ax <= PIO4) {
-        *s = ax < 0x1p-26 ? x : kernel_sin(x, 0.0);
-        *c = ax < 0x1p-27 ? 1.0 : kernel_cos(x, 0.0);
-        return;
-    }
+    if (dmath_sincos_pio4(x, s, c)) return;
     if (!(ax < INFINITY)) {
         *s = *c = x - x;
         return;
     }
     double y0, y1;
     unsigned n = reduce(x, &y0, &y1);
-    double sn = kernel_sin(y0, y1), cs = kernel_cos(y0, y1);
+    double sn = dmath_kernel_sin(y0, y1), cs = dmath_kernel_cos(y0, y1);
     switch (n) {
     case 0: *s = sn; *c = cs; break;
     case 1: *s = cs; *c = -sn; break;
@@ -285,7 +230,7 @@ static void atan_yx(double y, double x, double *hi, double *lo) {
         id = -1;
         t = y / x;
         double p, pe;
-        two_prod(t, x, &p, &pe);
+        dmath_two_prod(t, x, &p, &pe);
         tail = ((y - p) - pe) / (x + t * y); /* (y - t x) / x / (1 + t^2); y - p exact (Sterbenz) */
     } else if (y < 0.6875 * x) {
         id = 0;
@@ -296,7 +241,7 @@ static void atan_yx(double y, double x, double *hi, double *lo) {
     } else if (y < 2.4375 * x) {
         id = 2;
         double h, l;
-        fast_two_sum(x, 0.5 * x, &h, &l); /* 1.5 x = h + l exactly; y - h exact (Sterbenz) */
+        dmath_fast_two_sum(x, 0.5 * x, &h, &l); /* 1.5 x = h + l exactly; y - h exact (Sterbenz) */
         t = ((y - h) - l) / (x + 1.5 * y);
     } else {
         id = 3;
@@ -307,12 +252,12 @@ static void atan_yx(double y, double x, double *hi, double *lo) {
     double s1 = z * (AT[0] + w * (AT[2] + w * (AT[4] + w * (AT[6] + w * (AT[8] + w * AT[10])))));
     double s2 = w * (AT[1] + w * (AT[3] + w * (AT[5] + w * (AT[7] + w * AT[9]))));
     if (id < 0) {
-        fast_two_sum(t, tail - t * (s1 + s2), hi, lo);
+        dmath_fast_two_sum(t, tail - t * (s1 + s2), hi, lo);
         return;
     }
     double s, e;
-    two_sum(HEAD[id], t, &s, &e);
-    fast_two_sum(s, e + (TAIL[id] - t * (s1 + s2)), hi, lo);
+    dmath_two_sum(HEAD[id], t, &s, &e);
+    dmath_fast_two_sum(s, e + (TAIL[id] - t * (s1 + s2)), hi, lo);
 }
 
 double dggs_atan2(double y, double x) {
@@ -345,7 +290,7 @@ double dggs_atan2(double y, double x) {
         atan_yx(ay, ax, &hi, &lo);
         if (x < 0) {
             double s, e;
-            two_sum(PI_HI, -hi, &s, &e);
+            dmath_two_sum(PI_HI, -hi, &s, &e);
             r = s + (e + (PI_LO - lo));
         } else {
             r = hi + lo;
@@ -358,36 +303,7 @@ double dggs_atan2(double y, double x) {
  * hypot
  * ------------------------------------------------------------------------------------------------------------ */
 
-double dggs_hypot(double x, double y) {
-    double ax = fabs(x), ay = fabs(y);
-    if (isinf(ax) || isinf(ay)) return INFINITY;
-    if (isnan(ax) || isnan(ay)) return ax + ay;
-    if (ay > ax) {
-        double t = ax;
-        ax = ay;
-        ay = t;
-    }
-    if (ay == 0.0 || ay * 0x1p54 < ax) return ax; /* sqrt(ax^2 + ay^2) < ax (1 + 2^-109) */
-    double scale = 1.0;                           /* a power of two: squares neither overflow nor go subnormal */
-    if (ax > 0x1p500) {
-        scale = 0x1p600;
-        ax *= 0x1p-600;
-        ay *= 0x1p-600;
-    } else if (ay < 0x1p-450) {
-        scale = 0x1p-600;
-        ax *= 0x1p600;
-        ay *= 0x1p600;
-    }
-    double xx, xe, yy, ye, s, se;
-    two_prod(ax, ax, &xx, &xe);
-    two_prod(ay, ay, &yy, &ye);
-    two_sum(xx, yy, &s, &se);
-    double sl = se + (xe + ye);
-    double h = sqrt(s), hh, he;
-    two_prod(h, h, &hh, &he);
-    h += (((s - hh) - he) + sl) / (2.0 * h); /* Newton on h^2 = s + sl; s - hh is exact */
-    return h * scale;
-}
+double dggs_hypot(double x, double y) { return dmath_hypot(x, y); }
 
 /* ------------------------------------------------------------------------------------------------------------
  * asin

@@ -19,6 +19,7 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <string.h>
 
 #include "bits.h"
 #include "dmath.h"
@@ -83,13 +84,22 @@ static double edge_piece(const double a[3], const double b[3], const double m[3]
  * without the round trip through (lat, lng) that dggs_geodetic_to_unit would undo (it costs more than the
  * inverse). p holds 3 (densify + 1) rows. */
 static void edge_units(dggs_projection proj, uint64_t cell, int densify, double (*p)[3]) {
-    double t[6];
-    int face = dggs_corners(cell, t), step = densify + 1;
+    double t[6], x[DGGS_INVERSE_LANES], y[DGGS_INVERSE_LANES];
+    int face = dggs_corners(cell, t), step = densify + 1, m = 0, start = 0;
     for (int i = 0; i < 3; i++) {
         double x0 = t[2 * i], y0 = t[2 * i + 1], x1 = t[(2 * i + 2) % 6], y1 = t[(2 * i + 3) % 6];
         double dx = (x1 - x0) / step, dy = (y1 - y0) / step;
-        for (int j = 0; j < step; j++) dggs_proj_inverse(proj, face, x0 + j * dx, y0 + j * dy, p[i * step + j]);
+        for (int j = 0; j < step; j++) {
+            x[m] = x0 + j * dx;
+            y[m++] = y0 + j * dy;
+            if (m == DGGS_INVERSE_LANES) { /* several at once: their chains overlap (dggs_proj_inverse_many) */
+                dggs_proj_inverse_many(proj, face, m, x, y, p + start);
+                start += m;
+                m = 0;
+            }
+        }
     }
+    if (m > 0) dggs_proj_inverse_many(proj, face, m, x, y, p + start);
 }
 
 void dggs_edge_bounds_of(dggs_projection proj, uint64_t cell, double bulge_m[3], double length_m[3]) {
@@ -127,25 +137,41 @@ static int edge_ladder(int d) {
 /* Whether the edges bend evenly enough for the 1 / (d + 1)^2 law: the bulges at a quarter and three quarters of
  * each edge within DGGS_EVEN of 3/4 of the midpoint's (a parabola's; a circle's arc to within its sagitta), the
  * midpoint bulges into b[3] and the lengths into l[3]. Where the projection bends unevenly (by the icosahedron's
- * vertices, across the sectors of Snyder's construction) they are not, and edge_points_meet decides instead. */
-static bool edge_even(dggs_projection proj, uint64_t cell, double b[3], double l[3]) {
-    double p[12][3]; /* corner, quarter, half, three quarters; three edges */
-    edge_units(proj, cell, 3, p);
+ * vertices, across the sectors of Snyder's construction) they are not, and edge_points_meet decides instead.
+ * p holds the boundary's 12 unit vectors (edge_units with densify 3: corner, quarter, half, three quarters of each
+ * edge). Each edge's great circle and length are computed once for its three bulges (edge_raw's arithmetic, the
+ * same numbers). */
+static bool edge_even(const double (*p)[3], double b[3], double l[3]) {
+    const double r = DGGS_AUTHALIC_RADIUS;
     bool even = true;
     for (int i = 0; i < 3; i++) {
         const double *a = p[4 * i], *z = p[(4 * i + 4) % 12];
-        double unused, q1 = edge_raw(a, z, p[4 * i + 1], &unused), q3 = edge_raw(a, z, p[4 * i + 3], &unused);
-        double half = edge_raw(a, z, p[4 * i + 2], &unused);
-        b[i] = edge_piece(a, z, p[4 * i + 2], &l[i]);
+        double n[3] = {a[1] * z[2] - a[2] * z[1], a[2] * z[0] - a[0] * z[2], a[0] * z[1] - a[1] * z[0]};
+        double nn = sqrt(edge_dot(n, n));
+        double d[3] = {z[0] - a[0], z[1] - a[1], z[2] - a[2]};
+        double chord = sqrt(edge_dot(d, d));
+        double len = 2.0 * r * dggs_asin(chord > 2.0 ? 1.0 : chord / 2.0);
+        double raw[3]; /* the quarter, half and three-quarter points' bulges, edge_raw's */
+        for (int k = 0; k < 3; k++) {
+            double off = nn > 0.0 ? fabs(edge_dot(p[4 * i + 1 + k], n)) / nn : 0.0;
+            raw[k] = r * dggs_asin(off > 1.0 ? 1.0 : off);
+        }
+        double q1 = raw[0], half = raw[1], q3 = raw[2];
+        /* edge_piece's bound of the half-point piece */
+        l[i] = len * (1.0 + DGGS_LENGTH_RATIO);
+        b[i] = (1.0 + DGGS_BULGE_RATIO) * half + DGGS_BULGE_FLOOR * len * len / DGGS_AUTHALIC_RADIUS;
         double slack = DGGS_EVEN * half + DGGS_EVEN_FLOOR;
         if (fabs(q1 - 0.75 * half) > slack || fabs(q3 - 0.75 * half) > slack) even = false;
     }
     return even;
 }
 
-int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance) {
+/* dggs_edge_points_of on the boundary's 12 unit vectors p (edge_units with densify 3), which it fills. */
+static int edge_points_from(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance,
+                            double (*p)[3]) {
     double b[3], l[3];
-    bool even = edge_even(proj, cell, b, l);
+    edge_units(proj, cell, 3, p);
+    bool even = edge_even((const double(*)[3])p, b, l);
     int out = 0;
     if (tolerance_m > 0.0) {
         double worst = fmax(b[0], fmax(b[1], b[2]));
@@ -168,10 +194,58 @@ int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m,
     return out;
 }
 
+int dggs_edge_points_of(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance) {
+    double p[12][3];
+    return edge_points_from(proj, cell, tolerance_m, area_tolerance, p);
+}
+
+/* Row k of the closed (lng, lat) ring, from the unit vector q: dggs_edge_points' conversion. */
+static void edge_ring_row(const double q[3], double *ring, int k) {
+    double lat, lng;
+    dggs_unit_to_geodetic(q[0], q[1], q[2], &lat, &lng);
+    ring[2 * k] = lng;
+    ring[2 * k + 1] = lat;
+}
+
+int dggs_edge_ring_of(dggs_projection proj, uint64_t cell, double tolerance_m, double area_tolerance, double *ring,
+                      bool *drawn) {
+    double p[12][3];
+    int d = edge_points_from(proj, cell, tolerance_m, area_tolerance, p);
+    /* dggs_one_boundary's point j of an edge with step d + 1 is x0 + j (x1 - x0) / (d + 1); with d + 1 = 1, 2 or 4
+     * that is, bit for bit, point 4 j / (d + 1) of the count's step 4 (dividing by 2 or 4 and multiplying by 2 are
+     * exact), so the count's unit vectors are the ring's. */
+    bool reused = d == 0 || d == 1 || d == 3;
+    if (drawn) *drawn = reused;
+    if (!reused) return d;
+    int stride = 4 / (d + 1), rows = 3 * (d + 1);
+    for (int k = 0; k < rows; k++) edge_ring_row(p[k * stride], ring, k);
+    ring[2 * rows] = ring[0]; /* closed */
+    ring[2 * rows + 1] = ring[1];
+    return d;
+}
+
 dggs_error dggs_cell_edge_bounds(dggs_cell cell, dggs_projection proj, double bulge_m[3], double length_m[3]) {
     if (!dggs_is_valid(cell)) return DGGS_E_CELL;
     if (proj != DGGS_ISEA && proj != DGGS_IVEA) return DGGS_E_PROJECTION;
     dggs_edge_bounds_of(proj, cell, bulge_m, length_m);
+    return DGGS_OK;
+}
+
+dggs_error dggs_cell_edge_ring(dggs_cell cell, dggs_projection proj, double tolerance_m, double area_tolerance,
+                               double *lng_lat, size_t size, int *points) {
+    int d;
+    dggs_error e = dggs_cell_edge_points(cell, proj, tolerance_m, area_tolerance, &d);
+    if (e != DGGS_OK) return e;
+    *points = d;
+    size_t need = (size_t)dggs_boundary_rows(d, 1);
+    if (size < need) return DGGS_E_BUFFER;
+    double ring[2 * DGGS_EDGE_RING_REUSED];
+    bool drawn;
+    dggs_edge_ring_of(proj, cell, tolerance_m, area_tolerance, ring, &drawn);
+    if (drawn)
+        memcpy(lng_lat, ring, need * 2 * sizeof(double));
+    else
+        dggs_one_boundary(proj, cell, d, lng_lat, 1);
     return DGGS_OK;
 }
 

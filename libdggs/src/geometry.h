@@ -36,6 +36,12 @@ void dggs_snyder_face_forward(const double *frames, int face, double px, double 
 int dggs_snyder_forward_unit(const double *centres, const double *frames, double px, double py, double pz, double *x,
                              double *y);
 void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y, double p[3]);
+/* Most points dggs_snyder_inverse_units takes at once (a cell's boundary for the points per edge: 12). */
+#define DGGS_INVERSE_LANES 12
+/* dggs_snyder_inverse_unit of n <= DGGS_INVERSE_LANES points (x[j], y[j]) of one face into p[j], bit for bit, faster
+ * (their chains overlap). */
+void dggs_snyder_inverse_units(const double *frames, int face, int n, const double *x, const double *y,
+                               double (*p)[3]);
 /* IVEA's, the same signatures (dggs/geometry/ivea.py). */
 void dggs_ivea_face_forward(const double *frames, int face, double px, double py, double pz, double *x, double *y);
 int dggs_ivea_forward_unit(const double *centres, const double *frames, double px, double py, double pz, double *x,
@@ -50,6 +56,8 @@ void dggs_ivea_natural_inverse(double x, double y, double p[3]);
 int dggs_proj_forward(dggs_projection proj, double px, double py, double pz, double *x, double *y);
 void dggs_proj_face_forward(dggs_projection proj, int face, double px, double py, double pz, double *x, double *y);
 void dggs_proj_inverse(dggs_projection proj, int face, double x, double y, double p[3]);
+/* dggs_proj_inverse of n points of one face, p[j] from (x[j], y[j]): the same bits, several at once on ISEA. */
+void dggs_proj_inverse_many(dggs_projection proj, int face, int n, const double *x, const double *y, double (*p)[3]);
 
 /* Planar azimuth // 60 degrees by half-planes; the centre gives 0. */
 int dggs_level1_digit(double x, double y);

@@ -126,12 +126,20 @@ void dggs_edge_points(dggs_projection proj, double *out, int start, int face, do
     double dx = (x1 - x0) / step;
     double dy = (y1 - y0) / step;
     int a = lnglat ? 1 : 0, b = lnglat ? 0 : 1;
-    for (int j = 0; j < step; j++) {
-        double p[3], lat, lng;
-        dggs_proj_inverse(proj, face, x0 + j * dx, y0 + j * dy, p);
-        dggs_unit_to_geodetic(p[0], p[1], p[2], &lat, &lng);
-        out[2 * (start + j) + a] = lat;
-        out[2 * (start + j) + b] = lng;
+    for (int j0 = 0; j0 < step; j0 += DGGS_INVERSE_LANES) { /* several at once (dggs_proj_inverse_many) */
+        int n = step - j0 < DGGS_INVERSE_LANES ? step - j0 : DGGS_INVERSE_LANES;
+        double x[DGGS_INVERSE_LANES], y[DGGS_INVERSE_LANES], p[DGGS_INVERSE_LANES][3];
+        for (int k = 0; k < n; k++) {
+            x[k] = x0 + (j0 + k) * dx;
+            y[k] = y0 + (j0 + k) * dy;
+        }
+        dggs_proj_inverse_many(proj, face, n, x, y, p);
+        for (int k = 0; k < n; k++) {
+            double lat, lng;
+            dggs_unit_to_geodetic(p[k][0], p[k][1], p[k][2], &lat, &lng);
+            out[2 * (start + j0 + k) + a] = lat;
+            out[2 * (start + j0 + k) + b] = lng;
+        }
     }
 }
 

@@ -5,6 +5,14 @@
 
 #include "points.h"
 
+bool dggs_ring_is_special(const double *lng_lat, int64_t rows) {
+    for (int64_t i = 0; i < rows; i++) {
+        if (fabs(lng_lat[2 * i + 1]) > 89.0) return true;
+        if (i + 1 < rows && fabs(lng_lat[2 * i + 2] - lng_lat[2 * i]) > 90.0) return true;
+    }
+    return false;
+}
+
 int64_t dggs_cell_ring_room(int densify) { return 2 * (3 * (int64_t)(densify + 1) + DGGS_SPECIAL_EXTRA) + 8; }
 
 int64_t dggs_cell_ring(dggs_projection proj, uint64_t cell, int densify, double *ring, double *tmp,
@@ -12,11 +20,7 @@ int64_t dggs_cell_ring(dggs_projection proj, uint64_t cell, int densify, double 
     int64_t rows = dggs_boundary_rows(densify, 1);
     if (rows < 2) return 0; /* cannot happen: 3 (densify + 1) + 1 rows */
     dggs_one_boundary(proj, cell, densify, tmp, 1);
-    bool special = false;
-    for (int64_t i = 0; i < rows && !special; i++) {
-        if (fabs(tmp[2 * i + 1]) > 89.0) special = true;
-        if (i + 1 < rows && fabs(tmp[2 * i + 2] - tmp[2 * i]) > 90.0) special = true;
-    }
+    bool special = dggs_ring_is_special(tmp, rows);
     if (special_out) *special_out = special;
     if (!special) {
         memcpy(ring, tmp, (size_t)(rows - 1) * 2 * sizeof(double));

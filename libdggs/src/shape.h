@@ -20,6 +20,11 @@ static inline double dggs_pymod(double a, double b) {
     return r;
 }
 
+/* Whether a closed (lng, lat) ring of `rows` points (its first repeated last) crosses the antimeridian or comes
+ * within a degree of a pole (_shapes.special_rings): a step of over 90 degrees of longitude between consecutive
+ * points, or a latitude over 89 degrees. Such cells take the exact ring (dggs_cell_ring, ring_to_geometry). */
+bool dggs_ring_is_special(const double *lng_lat, int64_t rows);
+
 /* The room (in points) of dggs_cell_ring's output: `ring` and `tmp` each need 4 dggs_cell_ring_room(densify)
  * doubles. */
 int64_t dggs_cell_ring_room(int densify);

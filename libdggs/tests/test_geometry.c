@@ -1,12 +1,14 @@
 /* The geometry floor (geometry.c, ivea.c): invariants and round trips, and outputs frozen from the numba kernel
  * (dggs/geometry/kernel.py, ivea.py) by tools/freeze_geometry.py, compared bit for bit. */
 #include <math.h>
+#include <string.h>
 
 #include "check.h"
 #include "dggs.h"
 #include "frozen_geometry.h"
 #include "geometry.h"
 #include "tables.h"
+#include "testutil.h"
 
 static double angle(const double a[3], const double b[3]) {
     double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
@@ -136,9 +138,42 @@ static void frozen(void) {
     }
 }
 
+/* dggs_snyder_inverse_units (several points at once, dmath's hypot and sin/cos inlined) gives
+ * dggs_snyder_inverse_unit's bits on every point: random points of the face and far beyond it, the centre, tiny
+ * and subnormal radii, and batches of every size 1..12. */
+static void inverse_units(void) {
+    const double *frames = &dggs_isea_frames[0][0][0];
+    uint64_t state = 35;
+    double x[DGGS_INVERSE_LANES], y[DGGS_INVERSE_LANES], p[DGGS_INVERSE_LANES][3], q[3];
+    const double fixed[][2] = {{0.0, 0.0}, {1e-300, 0.0}, {0.0, -4e-320}, {3e-310, 2e-310}, {-1e-200, 1e-200},
+                               {0.5, 0.3}, {-0.7, -0.9}, {2.0, -1.5}, {0.0, 0.9}, {-0.0, -0.9}, {1e-17, 1.0}};
+    int bad = 0;
+    for (int round = 0; round < 20000; round++) {
+        int n = 1 + round % DGGS_INVERSE_LANES, face = round % 20;
+        for (int j = 0; j < n; j++) {
+            uint64_t r = splitmix64(&state);
+            if (r % 7 == 0) {
+                size_t k = (size_t)(r >> 8) % (sizeof fixed / sizeof fixed[0]);
+                x[j] = fixed[k][0], y[j] = fixed[k][1];
+            } else {
+                double scale = r % 5 == 0 ? 3.0 : 0.8; /* beyond the face now and then */
+                x[j] = scale * ((double)(splitmix64(&state) >> 11) * 0x1p-53 * 2.0 - 1.0);
+                y[j] = scale * ((double)(splitmix64(&state) >> 11) * 0x1p-53 * 2.0 - 1.0);
+            }
+        }
+        dggs_snyder_inverse_units(frames, face, n, x, y, p);
+        for (int j = 0; j < n; j++) {
+            dggs_snyder_inverse_unit(frames, face, x[j], y[j], q);
+            bad += memcmp(p[j], q, sizeof q) != 0;
+        }
+    }
+    CHECK(bad == 0);
+}
+
 int main(void) {
     frozen();
     invariants();
     public_api();
+    inverse_units();
     CHECK_DONE();
 }

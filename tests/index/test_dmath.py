@@ -310,3 +310,5 @@ def test_constants_are_mpmaths():
         words = [int(w, 16) for w in re.findall(r"0x([0-9a-f]{8})u", text.split("TWO_OVER_PI[40] = {")[1])[:40]]
         assert mp.mpf(sum(w * mp.mpf(2) ** (-32 * (k + 1)) for k, w in enumerate(words))) - 2 / mp.pi < 0
         assert 2 / mp.pi - sum(w * mp.mpf(2) ** (-32 * (k + 1)) for k, w in enumerate(words)) < mp.mpf(2) ** -1280
+    inline = (SOURCE.parent / "dmath_inline.h").read_text()  # the inlined small-angle sin and cos's bound
+    assert float.fromhex(re.search(r"#define DMATH_PIO4 (0x[0-9a-fp.+-]+)", inline)[1]) == defined["PIO4"]
