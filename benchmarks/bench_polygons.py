@@ -45,13 +45,16 @@ def main(n: int = 40_000) -> None:
     ours = np.unique(np.asarray(dggs.latlng_to_cell(lat, lng, 10, as_int=True), dtype=np.uint64))[:n]
     theirs = np.unique(np.asarray(coordinates_to_cells(lat, lng, 6)))[:n]
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-    print(f"commit {commit}, load average {os.getloadavg()}, {ours.size} level-10 cells, {theirs.size} H3 res-6 cells")
+    print("### bench_polygons.py: polygons for export against H3 (issue 35 item 2)\n")
+    print(f"Commit {commit}, load average {os.getloadavg()}, {ours.size} level-10 cells against {theirs.size} H3 res-6 "
+          "cells; best of 3 CPU times on one thread, cases interleaved; ratio = H3's time a cell / ours (>= 1x: ours "
+          "at least as fast).\n")
     h3_time = cpu(lambda: shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False)))
     for tol in (10.0, 1.0, "exact"):
         t = cpu(lambda tol=tol: dggs.cell_to_polygon(ours, tolerance=tol))
         h3_time = min(h3_time, cpu(lambda: shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False))))
         coords = np.mean([len(p.exterior.coords) for p in dggs.cell_to_polygon(ours[:5000], tolerance=tol) if p.geom_type == "Polygon"])
-        print(f"cell_to_polygon tolerance={tol!r}: {1e6 * t / ours.size:.2f} us a cell, {coords:.1f} coordinates a ring; "
+        print(f"- cell_to_polygon tolerance={tol!r}: {1e6 * t / ours.size:.2f} us a cell, {coords:.1f} coordinates a ring; "
               f"h3ronpy WKB + from_wkb {1e6 * h3_time / theirs.size:.2f} us a cell; ratio (H3 / ours) {h3_time / theirs.size / (t / ours.size):.2f}x")
     with tempfile.TemporaryDirectory() as tmp:
         hpoly = shapely.from_wkb(pa.array(cells_to_wkb_polygons(pa.array(theirs))).to_numpy(zero_copy_only=False))
@@ -64,14 +67,14 @@ def main(n: int = 40_000) -> None:
         with open(f"{tmp}/h3.geojson", "w") as fh:
             json.dump(h3_json, fh)
         hp, hj = os.path.getsize(f"{tmp}/h3.parquet"), os.path.getsize(f"{tmp}/h3.geojson")
-        print(f"H3: GeoParquet {hp / 1e6:.2f} MB, GeoJSON {hj / 1e6:.2f} MB")
+        print(f"- H3: GeoParquet {hp / 1e6:.2f} MB, GeoJSON {hj / 1e6:.2f} MB")
         for tol in (10.0, 1.0, "exact"):
             t = cells_to_table(ours, tolerance=tol).select(["cell", "geometry"])
             pq.write_table(t, f"{tmp}/o.parquet", compression="zstd")
             with open(f"{tmp}/o.geojson", "w") as fh:
                 json.dump(dggs.cells_to_geojson(ours, tolerance=tol), fh)
             op, oj = os.path.getsize(f"{tmp}/o.parquet"), os.path.getsize(f"{tmp}/o.geojson")
-            print(f"ours tolerance={tol!r}: GeoParquet {op / 1e6:.2f} MB ({op / hp:.2f}x H3's), GeoJSON {oj / 1e6:.2f} MB ({oj / hj:.2f}x)")
+            print(f"- ours tolerance={tol!r}: GeoParquet {op / 1e6:.2f} MB ({op / hp:.2f}x H3's), GeoJSON {oj / 1e6:.2f} MB ({oj / hj:.2f}x)")
     parts(ours, theirs)
 
 
@@ -128,7 +131,7 @@ def parts(ours: np.ndarray, theirs: np.ndarray, tolerance: float = 10.0, rounds:
     for name, (_, count) in cases.items():
         print(f"| {name} | {1e6 * best[name] / count:.2f} us |")
     counts_seen = np.bincount(counts)
-    print(f"\npoints an edge at level 10, {tolerance:g} m: " + ", ".join(
+    print(f"\nPoints an edge at level 10, {tolerance:g} m: " + ", ".join(
         f"{k}: {100 * c / n:.1f} %" for k, c in enumerate(counts_seen.tolist()) if c))
 
 

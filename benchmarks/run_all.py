@@ -1,7 +1,7 @@
 """Run every benchmark and write BENCHMARKS.md at the repository root.
 
-Runs ``bench_core.py``, ``bench_kernel.py``, ``bench_snyder.py``, ``bench_storage.py``, ``bench_ingest.py``, ``bench_serve.py`` and
-``bench_workflow.py`` (each
+Runs every ``bench_*.py`` listed in ``runs`` below but the DuckDB extension's (it needs
+the extension built: ``benchmarks/bench_duckdb_extension.py``) and the small ad hoc ones (each
 skipped with a note if it is missing or fails) as subprocesses with this
 interpreter, collects the markdown each prints, and writes BENCHMARKS.md: the
 machine, the command, the date, the code state (commit, dirty or clean), the
@@ -10,7 +10,7 @@ load average at the start and the end, each benchmark's tables, and the
 
 Run::
 
-    make bench                                    # the real run (~4-7 minutes on 2 cores, longer under load)
+    make bench                                    # the real run (about an hour on 2 cores, longer under load)
     .venv-bench/bin/python benchmarks/run_all.py --quick --output /tmp/BENCHMARKS.md   # smoke test (~1 minute)
 """
 
@@ -32,7 +32,7 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 TIMEOUT = {"bench_core.py": 1200, "bench_point_stages.py": 300, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_ingest.py": 400, "bench_serve.py": 300,
-           "bench_workflow.py": 900, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
+           "bench_workflow.py": 900, "bench_polygons.py": 600, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
            "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600, "bench_vertex.py": 300,
            "bench_dissolve.py": 900, "bench_scale.py": 2400,
            "bench_ivea.py": 600, "bench_projection_verbs.py": 600, "bench_handwritten_server.py": 600}  # seconds (bench_raster: the 1.8 GB globe's memory run)
@@ -90,6 +90,7 @@ def main() -> None:
             ("bench_ingest.py", ["--rows", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
             ("bench_serve.py", ["--clients", "4", "--seconds", "5"] if args.quick else [], thread_env(False)),
             ("bench_workflow.py", ["--points", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
+            ("bench_polygons.py", ["4000"] if args.quick else ["40000"], thread_env(True)),  # issue 35's polygon target
             ("bench_raster.py", ["--quick"] if args.quick else [], thread_env(False)),
             ("bench_profile.py", ["--quick"] if args.quick else [], thread_env(True)),
             ("bench_paths.py", ["--quick"] if args.quick else [], thread_env(False)),
