@@ -230,7 +230,7 @@ typecheck-js:
 $(BENCH_STAMP): pyproject.toml benchmarks/requirements.txt
 	$(PYTHON) -m venv $(BENCH_VENV)
 	$(BENCH_PY) -m pip install --quiet --upgrade pip
-	$(BENCH_PY) -m pip install --quiet -e '.[test,serve,raster]' -r benchmarks/requirements.txt
+	$(BENCH_PY) -m pip install --quiet -e '.[test,serve,raster,xarray]' -r benchmarks/requirements.txt
 	touch $(BENCH_STAMP)
 
 bench: $(BENCH_STAMP)

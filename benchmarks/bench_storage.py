@@ -10,9 +10,7 @@ Run::
     .venv/bin/python benchmarks/bench_storage.py            # 1,000,000 points
     .venv/bin/python benchmarks/bench_storage.py --rows 100000 --level 10
 
-The ratio against the hand-written CSV parser that pyarrow replaced is
-measured in one run by ``bench_ingest.py``.  The "CSV reader
-alone" row times :func:`dggs.storage.readers_csv.csv_batches` without a store
+The "CSV reader alone" row times :func:`dggs.storage.readers_csv.csv_batches` without a store
 (pyarrow parse, record and line accounting, numeric conversion).
 """
 

@@ -31,7 +31,7 @@ from _common import ONE_THREAD, code_state, describe_code, loadavg, machine, thr
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-TIMEOUT = {"bench_core.py": 1200, "bench_point_stages.py": 300, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_ingest.py": 400, "bench_serve.py": 300,
+TIMEOUT = {"bench_core.py": 1200, "bench_point_stages.py": 300, "bench_kernel.py": 900, "bench_snyder.py": 300, "bench_storage.py": 300, "bench_rollups.py": 600, "bench_serve.py": 300,
            "bench_workflow.py": 900, "bench_polygons.py": 600, "bench_raster.py": 6 * 3600, "bench_profile.py": 600,
            "bench_handwritten.py": 900, "bench_edges.py": 600, "bench_paths.py": 600, "bench_vertex.py": 300,
            "bench_dissolve.py": 900, "bench_scale.py": 2400,
@@ -87,7 +87,6 @@ def main() -> None:
             ("bench_snyder.py", ["--points", "100000"] if args.quick else [], thread_env(True)),
             ("bench_storage.py", ["--rows", "100000"] if args.quick else [], thread_env(False)),
             ("bench_rollups.py", ["--rows", "100000", "--rounds", "1"] if args.quick else [], thread_env(True)),
-            ("bench_ingest.py", ["--rows", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
             ("bench_serve.py", ["--clients", "4", "--seconds", "5"] if args.quick else [], thread_env(False)),
             ("bench_workflow.py", ["--points", "100000", "--rounds", "1"] if args.quick else [], thread_env(False)),
             ("bench_polygons.py", ["4000"] if args.quick else ["40000"], thread_env(True)),  # issue 35's polygon target
