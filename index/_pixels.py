@@ -28,7 +28,7 @@ from dggs.geometry.authalic import WGS84
 from ._checks import check_level
 from ._kernel import pixels as kpx
 
-__all__ = ["pixel_pieces", "latlng_pieces", "chord_errors", "edge_points", "MAX_PIXEL_DEGREES", "M2_PER_UNIT"]
+__all__ = ["pixel_pieces", "latlng_pieces", "plane_pieces", "chord_errors", "edge_points", "MAX_PIXEL_DEGREES", "M2_PER_UNIT"]
 
 #: Square metres of the ellipsoid per unit of planar area in a face frame.
 M2_PER_UNIT = WGS84.area / 20.0 / kpx.FACE_AREA
@@ -129,6 +129,32 @@ def latlng_pieces(
     pixel, cell, area = kpx.latlng_pieces(float(west), float(dlng), np.asarray(lat_edges, np.float64),
                                           np.asarray(valid, np.bool_), level, float(tol))
     return pixel, cell, area * M2_PER_STERADIAN
+
+
+def plane_pieces(
+    x: np.ndarray, y: np.ndarray, ring_start: np.ndarray, cells: np.ndarray, valid: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Cells' rings, in a raster's pixel coordinates, cut against its rows and columns (libdggs/src/pixels_plane.c).
+
+    Ring ``i`` of ``cells[i]`` is ``x, y[ring_start[i]:ring_start[i + 1]]`` (column and row, not closed); a
+    projected raster's plane path (:mod:`dggs.raster.plane`) takes each cell's densified ring there.
+
+    Returns
+    -------
+    pixel, cell, area, cu, cv
+        Per piece (a cell's pieces together): its pixel (row-major in ``valid``), its cell, its area in pixel
+        units and its centroid within the pixel.
+
+    Examples
+    --------
+    >>> pixel, cell, area, cu, cv = plane_pieces(np.array([0.0, 2.0, 0.0]), np.array([0.0, 0.0, 2.0]),
+    ...                                          np.array([0, 3]), np.array([7], np.uint64), np.ones((2, 2), bool))
+    >>> pixel.tolist(), area.tolist()
+    ([0, 1, 2], [1.0, 0.5, 0.5])
+    """
+    arrays = [np.ascontiguousarray(a, dtype=np.float64) for a in (x, y)]
+    return kpx.plane_pieces(arrays[0], arrays[1], np.ascontiguousarray(ring_start, dtype=np.int64),
+                            np.ascontiguousarray(cells, dtype=np.uint64), np.ascontiguousarray(valid, dtype=np.bool_))
 
 
 def chord_errors(lat: np.ndarray, lng: np.ndarray) -> np.ndarray:

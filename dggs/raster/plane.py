@@ -49,11 +49,11 @@ from typing import Any
 import numpy as np
 
 from dggs.index._bbox_fill import _descendants
-from dggs.index._kernel.pixels import plane_pieces
+from dggs.index._pixels import plane_pieces
 from dggs.index._shapes import boundaries
-from dggs.index.grid import _neighbours
+from dggs.index.grid import edge_neighbors
 from dggs.index.measure import cell_area
-from dggs.index.points import _locate
+from dggs.index.points import latlng_to_cell
 from dggs.raster.grid import TOLERANCE
 from dggs.raster.source import Block, RasterSource
 
@@ -208,9 +208,9 @@ def _candidates(transformer: Any, t: Any, block: Block, level: int, cell_px: flo
     lng, lat = _to_wgs84(transformer, t.c + t.a * (block.col + cc), t.f + t.e * (block.row + rr))
     if not (np.isfinite(lng).all() and np.isfinite(lat).all() and (np.abs(lat) <= 90.0).all()):
         return None
-    ids = np.unique(_locate(lat, lng, level))
+    ids = np.unique(latlng_to_cell(lat, lng, level, as_int=True))
     for _ in range(2):  # two edge steps: round a vertex the line of the block's edge passes near
-        ids = np.unique(np.concatenate([ids, _neighbours(ids).ravel()]))
+        ids = np.unique(np.concatenate([ids, edge_neighbors(ids).ravel()]))
     return ids
 
 
