@@ -28,12 +28,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         lat[i] = (take(&r) == 9) ? lat[i - 1] : fmax(-90.0, fmin(90.0, next)); /* now and then not monotonic */
     }
     uint8_t valid[16];
-    unsigned mask = take(&r) | (take(&r) << 8);
-    for (int64_t i = 0; i < rows * cols; i++) valid[i] = (mask >> i) & 1 ? 0 : 1;
+    valid_mask(&r, valid, rows * cols, 2);
     int64_t words = dggs_latlng_pieces_work_words(rows, cols);
-    REQUIRE(words > 0);
-    double *work = malloc((size_t)words * sizeof *work);
-    REQUIRE(work != NULL);
+    double *work = work_buffer(words);
     int64_t cap = 8;
     dggs_pieces out = {malloc((size_t)cap * sizeof(int64_t)), malloc((size_t)cap * sizeof(dggs_cell)),
                        malloc((size_t)cap * sizeof(double)), cap, 0};

@@ -32,12 +32,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         start[k + 1] = n;
     }
     uint8_t valid[36];
-    unsigned mask = take(&r) | (take(&r) << 8) | (take(&r) << 16);
-    for (int64_t i = 0; i < rows * cols; i++) valid[i] = (mask >> (i % 24)) & 1 ? 0 : 1;
+    valid_mask(&r, valid, rows * cols, 3);
     int64_t words = dggs_plane_pieces_work_words(rows, cols);
-    REQUIRE(words > 0);
-    double *work = malloc((size_t)words * sizeof *work);
-    REQUIRE(work != NULL);
+    double *work = work_buffer(words);
     int64_t cap = 2;
     dggs_plane_pieces_out out = {malloc((size_t)cap * sizeof(int64_t)), malloc((size_t)cap * sizeof(uint64_t)),
                                  malloc((size_t)cap * sizeof(double)), malloc((size_t)cap * sizeof(double)),

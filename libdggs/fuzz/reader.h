@@ -38,4 +38,20 @@ static inline double number(reader *r, double lo, double hi) {
     return lo + (hi - lo) * (double)v / 65535.0;
 }
 
+/* The pixels' valid flags from `bytes` bytes of input (at most 4): pixel i is left out where bit i % (8 * bytes) is
+ * set. */
+static inline void valid_mask(reader *r, uint8_t *valid, int64_t n, int bytes) {
+    unsigned mask = 0;
+    for (int b = 0; b < bytes; b++) mask |= take(r) << (8 * b);
+    for (int64_t i = 0; i < n; i++) valid[i] = (mask >> (unsigned)(i % (8 * bytes))) & 1 ? 0 : 1;
+}
+
+/* The scratch buffer of `words` doubles a raster cut asks for (its *_work_words). */
+static inline double *work_buffer(int64_t words) {
+    REQUIRE(words > 0);
+    double *work = malloc((size_t)words * sizeof *work);
+    REQUIRE(work != NULL);
+    return work;
+}
+
 #endif
