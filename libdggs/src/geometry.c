@@ -142,53 +142,12 @@ int dggs_snyder_forward_unit(const double *centres, const double *frames, double
     return face;
 }
 
-/* kernel.inverse_unit: face-frame (x, y) -> unit vector, by the exact closed form (Snyder 1992 eqs. 6-8 solved
- * for Az; thesis ch. 4). sin(G - A/2), sin(G - A) from sin(A/2), cos(A/2) by the angle-sum rules. */
-void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y, double p[3]) {
-    double rho = dggs_hypot(x, y);
-    int k = dggs_sector_of(x, y);
-    double rc = dggs_rot_cos[k], rs = dggs_rot_sin[k];
-    double sin_a, cos_a;
-    if (rho > DGGS_TINY) {
-        double inv_rho = 1.0 / rho;
-        sin_a = (x * rc - y * rs) * inv_rho;
-        cos_a = (y * rc + x * rs) * inv_rho;
-    } else if (rho > 0.0) { /* subnormal or tiny: 1 / rho would overflow; the direction from scaled copies */
-        double sx = x * DGGS_UNTINY, sy = y * DGGS_UNTINY;
-        double inv_rho = 1.0 / dggs_hypot(sx, sy);
-        sin_a = (sx * rc - sy * rs) * inv_rho;
-        cos_a = (sy * rc + sx * rs) * inv_rho;
-    } else {
-        sin_a = 0.0;
-        cos_a = 1.0;
-    }
-    double area = DGGS_RT2 * sin_a / (2.0 * (cos_a + DGGS_COT_THETA * sin_a)); /* eq. 8 inverted */
-    double sh, ch;
-    dggs_sincos(0.5 * area, &sh, &ch);
-    double sin_g_half = DGGS_SIN_G * ch - DGGS_COS_G * sh;                                  /* sin(G - A/2) */
-    double sin_g_full = DGGS_SIN_G * (ch * ch - sh * sh) - DGGS_COS_G * (2.0 * sh * ch);   /* sin(G - A) */
-    double num = 2.0 * sin_g_half * sh;
-    double den = sin_g_full - DGGS_SIN_G * DGGS_COS_SMALL_G;
-    double r = sqrt(num * num + den * den);
-    double sin_az = num / r, cos_az = den / r;
-    double u = cos_az + sin_az * DGGS_COT_THETA; /* eq. 9 */
-    double sin_half_q = sqrt(0.5 * (1.0 - u / sqrt(DGGS_TAN_G2 + u * u)));
-    double d_prime = DGGS_D_PRIME_NUM / (cos_a + sin_a * DGGS_COT_THETA); /* eq. 10 */
-    double s = py_min(rho / d_prime * sin_half_q, 1.0);                  /* sin(z/2), eqs. 11-12 inverted */
-    double cos_z = 1.0 - 2.0 * s * s;
-    double sin_z = 2.0 * s * sqrt(1.0 - s * s);
-    double ct = (cos_az * rc - sin_az * rs) * sin_z; /* Az + 120 k */
-    double st = (sin_az * rc + cos_az * rs) * sin_z;
-    const double *f = frames + 9 * face;
-    p[0] = cos_z * f[0] + ct * f[3] + st * f[6];
-    p[1] = cos_z * f[1] + ct * f[4] + st * f[7];
-    p[2] = cos_z * f[2] + ct * f[5] + st * f[8];
-}
-
-/* dggs_snyder_inverse_unit of n <= DGGS_INVERSE_LANES points of one face, stage by stage: each stage runs over
- * all points before the next, with dmath's hypot and small-angle sin and cos inlined, so that the points' chains
- * of divisions and square roots (latency-bound, about 100 ns a point called one by one) overlap in the CPU. The
- * same operations on each point as dggs_snyder_inverse_unit, in the same order: the same bits. */
+/* kernel.inverse_unit of n <= DGGS_INVERSE_LANES points of one face: face-frame (x, y) -> unit vector, by the
+ * exact closed form (Snyder 1992 eqs. 6-8 solved for Az; thesis ch. 4); sin(G - A/2), sin(G - A) from sin(A/2),
+ * cos(A/2) by the angle-sum rules. Stage by stage: each stage runs over all points before the next, with dmath's
+ * hypot and small-angle sin and cos inlined, so that the points' chains of divisions and square roots
+ * (latency-bound, about 100 ns a point one by one) overlap in the CPU; each point's operations are the same
+ * whatever n, so its bits do not depend on its neighbours. */
 void dggs_snyder_inverse_units(const double *frames, int face, int n, const double *x, const double *y,
                                double (*p)[3]) {
     double rho[DGGS_INVERSE_LANES], rc[DGGS_INVERSE_LANES], rs[DGGS_INVERSE_LANES];
@@ -206,7 +165,7 @@ void dggs_snyder_inverse_units(const double *frames, int face, int n, const doub
             double inv_rho = 1.0 / rho[j];
             sin_a[j] = (x[j] * rc[j] - y[j] * rs[j]) * inv_rho;
             cos_a[j] = (y[j] * rc[j] + x[j] * rs[j]) * inv_rho;
-        } else if (rho[j] > 0.0) {
+        } else if (rho[j] > 0.0) { /* subnormal or tiny: 1 / rho would overflow; the direction from scaled copies */
             double sx = x[j] * DGGS_UNTINY, sy = y[j] * DGGS_UNTINY;
             double inv_rho = 1.0 / dggs_hypot(sx, sy);
             sin_a[j] = (sx * rc[j] - sy * rs[j]) * inv_rho;
@@ -222,7 +181,8 @@ void dggs_snyder_inverse_units(const double *frames, int face, int n, const doub
         if (!dmath_sincos_pio4(0.5 * area, &sh[j], &ch[j])) dggs_sincos(0.5 * area, &sh[j], &ch[j]);
     }
     for (int j = 0; j < n; j++) {
-        double sin_g_half = DGGS_SIN_G * ch[j] - DGGS_COS_G * sh[j];
+        double sin_g_half = DGGS_SIN_G * ch[j] - DGGS_COS_G * sh[j]; /* sin(G - A/2) */
+        /* sin(G - A) */
         double sin_g_full = DGGS_SIN_G * (ch[j] * ch[j] - sh[j] * sh[j]) - DGGS_COS_G * (2.0 * sh[j] * ch[j]);
         double num = 2.0 * sin_g_half * sh[j];
         double den = sin_g_full - DGGS_SIN_G * DGGS_COS_SMALL_G;
@@ -236,7 +196,7 @@ void dggs_snyder_inverse_units(const double *frames, int face, int n, const doub
     }
     for (int j = 0; j < n; j++) {
         double d_prime = DGGS_D_PRIME_NUM / (cos_a[j] + sin_a[j] * DGGS_COT_THETA); /* eq. 10 */
-        s[j] = py_min(rho[j] / d_prime * sin_half_q[j], 1.0);
+        s[j] = py_min(rho[j] / d_prime * sin_half_q[j], 1.0); /* sin(z/2), eqs. 11-12 inverted */
     }
     const double *f = frames + 9 * face;
     for (int j = 0; j < n; j++) {
@@ -248,6 +208,11 @@ void dggs_snyder_inverse_units(const double *frames, int face, int n, const doub
         p[j][1] = cos_z * f[1] + ct * f[4] + st * f[7];
         p[j][2] = cos_z * f[2] + ct * f[5] + st * f[8];
     }
+}
+
+/* One point: the batch of one (the same operations, the same bits). */
+void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y, double p[3]) {
+    dggs_snyder_inverse_units(frames, face, 1, &x, &y, (double (*)[3])p);
 }
 
 /* ------------------------------------------------------------------------------------------------------------
@@ -273,9 +238,10 @@ void dggs_proj_inverse_many(dggs_projection proj, int face, int n, const double 
         for (int j = 0; j < n; j++) dggs_ivea_inverse_unit(&dggs_isea_frames[0][0][0], face, x[j], y[j], p[j]);
         return;
     }
-    for (int j = 0; j < n; j += DGGS_INVERSE_LANES)
-        dggs_snyder_inverse_units(&dggs_isea_frames[0][0][0], face, n - j < DGGS_INVERSE_LANES ? n - j : DGGS_INVERSE_LANES,
-                                  x + j, y + j, p + j);
+    for (int j = 0; j < n; j += DGGS_INVERSE_LANES) {
+        int lanes = n - j < DGGS_INVERSE_LANES ? n - j : DGGS_INVERSE_LANES;
+        dggs_snyder_inverse_units(&dggs_isea_frames[0][0][0], face, lanes, x + j, y + j, p + j);
+    }
 }
 
 void dggs_proj_inverse(dggs_projection proj, int face, double x, double y, double p[3]) {

@@ -38,8 +38,8 @@ int dggs_snyder_forward_unit(const double *centres, const double *frames, double
 void dggs_snyder_inverse_unit(const double *frames, int face, double x, double y, double p[3]);
 /* Most points dggs_snyder_inverse_units takes at once (a cell's boundary for the points per edge: 12). */
 #define DGGS_INVERSE_LANES 12
-/* dggs_snyder_inverse_unit of n <= DGGS_INVERSE_LANES points (x[j], y[j]) of one face into p[j], bit for bit, faster
- * (their chains overlap). */
+/* dggs_snyder_inverse_unit of n <= DGGS_INVERSE_LANES points (x[j], y[j]) of one face into p[j], faster (their chains
+ * overlap); dggs_snyder_inverse_unit is this with n = 1. */
 void dggs_snyder_inverse_units(const double *frames, int face, int n, const double *x, const double *y,
                                double (*p)[3]);
 /* IVEA's, the same signatures (dggs/geometry/ivea.py). */

@@ -138,9 +138,9 @@ static void frozen(void) {
     }
 }
 
-/* dggs_snyder_inverse_units (several points at once, dmath's hypot and sin/cos inlined) gives
- * dggs_snyder_inverse_unit's bits on every point: random points of the face and far beyond it, the centre, tiny
- * and subnormal radii, and batches of every size 1..12. */
+/* dggs_snyder_inverse_units (several points at once) gives each point the bits it gets alone
+ * (dggs_snyder_inverse_unit, the batch of one; its bits against the numba kernel's are the kernel digests'): random
+ * points of the face and far beyond it, the centre, tiny and subnormal radii, and batches of every size 1..12. */
 static void inverse_units(void) {
     const double *frames = &dggs_isea_frames[0][0][0];
     uint64_t state = 35;
